@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Full co-simulation of one block: stiff, golden and 1,000,000 random vectors, 30% stalls.
+# Usage: scripts/cosim_full.sh BLOCK [COUNT]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+block=${1:?usage: scripts/cosim_full.sh BLOCK [COUNT]}
+count=${2:-1000000}
+tu=build/default/tools/texunit/texunit
+[ -x "$tu" ] || { cmake --preset default >/dev/null && cmake --build --preset default --target texunit; }
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+for set in golden stiff random; do
+  "$tu" vectors --block "$block" --set "$set" --count "$count" --seed 2026 --out "$dir/$set.vec"
+  "$tu" cosim --block "$block" --vectors "$dir/$set.vec" --stall-prob 0.3 --json
+done

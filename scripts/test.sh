@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# The whole test suite: release build (C model, RTL co-simulation, benchmarks) and the
+# AddressSanitizer + UBSan build of the C-model tests.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+jobs=$(nproc)
+cmake --preset default >/dev/null
+cmake --build --preset default -j "$jobs"
+ctest --preset default -j "$jobs"
+cmake --preset asan >/dev/null
+cmake --build --preset asan -j "$jobs"
+ctest --preset asan -j "$jobs"

@@ -1,0 +1,121 @@
+#include "cosim.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace tu::cosim {
+
+RtlBlock rtl_reciprocal();  // reciprocal_rtl.cpp
+
+const RtlBlock& find_rtl(const std::string& name) {
+  static const std::vector<RtlBlock> rtl = {rtl_reciprocal()};
+  for (const auto& r : rtl)
+    if (r.name == name) return r;
+  throw std::invalid_argument("block '" + name + "' has no RTL co-simulation model");
+}
+
+namespace {
+std::string hex_row(const Row& r) {
+  std::ostringstream os;
+  for (size_t i = 0; i < r.size(); ++i) os << (i ? " " : "") << std::hex << r[i];
+  return os.str();
+}
+std::string num(double x) {
+  if (std::isinf(x)) return "null";
+  std::ostringstream os;
+  os << std::setprecision(6) << x;
+  return os.str();
+}
+}  // namespace
+
+std::string Report::json() const {
+  std::ostringstream os;
+  os << "{\"block\": \"" << block << "\", \"vectors\": " << vectors << ", \"outputs\": " << outputs
+     << ", \"mismatches\": " << mismatches << ", \"model_mismatches\": " << model_mismatches
+     << ", \"extra_outputs\": " << extra_outputs << ", \"in_order\": " << (in_order ? "true" : "false")
+     << ", \"hung\": " << (hung ? "true" : "false") << ", \"max_abs_err\": " << num(max_abs_err)
+     << ", \"max_ulp_err\": " << num(max_ulp_err) << ", \"rms_err\": " << num(rms_err)
+     << ", \"flagged\": " << flagged << ", \"latency_cycles\": " << latency_cycles
+     << ", \"ii_cycles\": " << num(ii_cycles) << ", \"sim_cycles\": " << sim_cycles
+     << ", \"stall_prob\": " << num(stall_prob) << ", \"wall_s\": " << num(wall_s)
+     << ", \"ok\": " << (ok() ? "true" : "false") << "}";
+  return os.str();
+}
+
+Report run(const vec::VectorFile& vf, const Options& opt) {
+  const auto& block = blocks::find(vf.block);
+  const auto& rtl = find_rtl(vf.block);
+  if (vf.fields.size() != block.fields.size())
+    throw std::invalid_argument("vector file fields do not match block '" + block.name + "'");
+  for (size_t i = 0; i < vf.fields.size(); ++i) {
+    const auto& a = vf.fields[i];
+    const auto& b = block.fields[i];
+    if (a.name != b.name || a.role != b.role || a.fmt.str() != b.fmt.str())
+      throw std::invalid_argument("vector file field '" + a.name + ":" + a.fmt.str() +
+                                  "' does not match block field '" + b.name + ":" +
+                                  b.fmt.str() + "'");
+  }
+  const auto in_idx = vf.indices(vec::Role::In);
+  const auto out_idx = vf.indices(vec::Role::Out);
+  const auto ref_idx = vf.indices(vec::Role::Ref);
+  std::vector<Row> inputs;
+  inputs.reserve(vf.rows.size());
+  for (const auto& r : vf.rows) inputs.push_back(blocks::pick(r, in_idx));
+
+  Report rep;
+  rep.block = vf.block;
+  rep.vectors = vf.rows.size();
+  rep.stall_prob = opt.run.stall_prob;
+  const auto t_start = std::chrono::steady_clock::now();
+
+  if (!inputs.empty()) {
+    const std::vector<Row> prefix(inputs.begin(),
+                                  inputs.begin() + static_cast<long>(std::min(inputs.size(),
+                                                                              opt.timing_vectors)));
+    const auto [lat, ii] = rtl.timing(prefix);
+    rep.latency_cycles = lat;
+    rep.ii_cycles = ii;
+  }
+  const RunResult rr = rtl.run(inputs, opt.run);
+  rep.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  rep.outputs = rr.outputs.size();
+  rep.extra_outputs = rr.extra_outputs;
+  rep.hung = rr.hung;
+  rep.sim_cycles = rr.sim_cycles;
+  double sum_sq = 0;
+  uint64_t n_err = 0;
+  for (size_t i = 0; i < rr.outputs.size() && i < vf.rows.size(); ++i) {
+    const Row expected = blocks::pick(vf.rows[i], out_idx);
+    const Row model = block.model(inputs[i]);
+    if (model != expected) {
+      ++rep.model_mismatches;
+      if (rep.first_mismatch.empty())
+        rep.first_mismatch = "vector " + std::to_string(i) + ": C model gives " + hex_row(model) +
+                             ", file expects " + hex_row(expected);
+    }
+    if (rr.outputs[i] != expected) {
+      ++rep.mismatches;
+      if (rep.first_mismatch.empty())
+        rep.first_mismatch = "vector " + std::to_string(i) + " (in " + hex_row(inputs[i]) +
+                             "): RTL gives " + hex_row(rr.outputs[i]) + ", expected " +
+                             hex_row(expected);
+    }
+    const auto e = block.error(inputs[i], rr.outputs[i], blocks::pick(vf.rows[i], ref_idx));
+    if (!e.valid) {
+      ++rep.flagged;
+      continue;
+    }
+    rep.max_abs_err = std::max(rep.max_abs_err, e.abs);
+    rep.max_ulp_err = std::max(rep.max_ulp_err, e.ulp);
+    sum_sq += e.abs * e.abs;
+    ++n_err;
+  }
+  rep.in_order = rep.mismatches == 0;
+  rep.rms_err = n_err ? std::sqrt(sum_sq / static_cast<double>(n_err)) : 0;
+  return rep;
+}
+
+}  // namespace tu::cosim

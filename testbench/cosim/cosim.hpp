@@ -1,0 +1,56 @@
+// Co-simulation of a block's RTL against its C model on a vector file.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "block.hpp"
+#include "harness.hpp"
+#include "vector_file.hpp"
+
+namespace tu::cosim {
+
+// One Verilated RTL block: run a stream of input rows, and time a stall-free stream.
+struct RtlBlock {
+  std::string name;
+  std::function<RunResult(const std::vector<Row>&, const RunOptions&)> run;
+  std::function<std::pair<uint64_t, double>(const std::vector<Row>&)> timing;
+};
+
+const RtlBlock& find_rtl(const std::string& name);  // throws std::invalid_argument
+
+struct Report {
+  std::string block;
+  uint64_t vectors = 0;
+  uint64_t outputs = 0;
+  uint64_t mismatches = 0;        // RTL output != expected output in the file
+  uint64_t model_mismatches = 0;  // live C model != expected output in the file (stale file)
+  uint64_t extra_outputs = 0;
+  bool hung = false;
+  bool in_order = true;
+  double max_abs_err = 0, max_ulp_err = 0, rms_err = 0;  // RTL output vs float reference
+  uint64_t flagged = 0;
+  uint64_t latency_cycles = 0;
+  double ii_cycles = 0;
+  uint64_t sim_cycles = 0;
+  double stall_prob = 0;
+  double wall_s = 0;
+  std::string first_mismatch;  // human-readable description of the first mismatch
+  bool ok() const {
+    return mismatches == 0 && model_mismatches == 0 && extra_outputs == 0 && !hung &&
+           outputs == vectors;
+  }
+  std::string json() const;
+};
+
+struct Options {
+  RunOptions run;
+  size_t timing_vectors = 256;  // stall-free prefix used for latency and II
+};
+
+// Throws std::invalid_argument when the file's block or fields do not match the block.
+Report run(const vec::VectorFile& vf, const Options& opt);
+
+}  // namespace tu::cosim

@@ -1,0 +1,85 @@
+// Reciprocal unit: exhaustive error and monotonicity over every input code, guards, and the
+// normaliser's exponent handling.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "reciprocal/reciprocal.hpp"
+
+namespace {
+using namespace tu;
+
+constexpr int kW = fmt::kRecipInW;
+const double kUlp = std::ldexp(1.0, -fmt::kRecipOutF);
+
+TEST(Reciprocal, CoreExhaustiveFaithfulAndMonotonic) {
+  // Every mantissa code M in [1,2): |R - 1/M| < 1 ULP, R non-increasing.
+  const uint32_t lo = 1u << (fmt::kRecipMantW - 1), hi = 1u << fmt::kRecipMantW;
+  double max_err = 0, sum_sq = 0;
+  int64_t prev = INT64_MAX;
+  uint64_t non_monotonic = 0;
+  for (uint32_t m = lo; m < hi; ++m) {
+    const auto r = recip::core(recip::Mant::from_raw(m)).raw();
+    const double exact = static_cast<double>(lo) / m;
+    const double err = std::fabs(std::ldexp(static_cast<double>(r), -fmt::kRecipOutF) - exact);
+    max_err = std::max(max_err, err);
+    sum_sq += err * err;
+    if (r > prev) ++non_monotonic;
+    prev = r;
+  }
+  const double rms = std::sqrt(sum_sq / (hi - lo));
+  RecordProperty("max_ulp", std::to_string(max_err / kUlp));
+  RecordProperty("rms_ulp", std::to_string(rms / kUlp));
+  std::printf("reciprocal core: max %.4f ULP, rms %.4f ULP over %u codes\n", max_err / kUlp,
+              rms / kUlp, hi - lo);
+  EXPECT_LT(max_err, kUlp) << "not faithful";
+  EXPECT_EQ(non_monotonic, 0u);
+}
+
+TEST(Reciprocal, EveryInputCodeIsFaithfulOrFlagged) {
+  // All 2^RecipInW codes of the full unit (normaliser + core + guards).
+  const int64_t n = int64_t(1) << kW;
+  double max_ulp = 0;
+  uint64_t flagged = 0;
+  double prev_val = INFINITY;
+  for (int64_t c = 0; c < n; ++c) {
+    const auto q = static_cast<int32_t>(c);  // eval() sign-extends the low RecipInW bits
+    const auto r = recip::eval(q);
+    const int64_t qs = c >= n / 2 ? c - n : c;
+    if (qs <= 0) {
+      ASSERT_TRUE(r.flag) << qs;
+      ASSERT_EQ(r.mant, static_cast<uint32_t>(recip::Out::kMaxRaw));
+      ASSERT_EQ(r.shift, 0u);
+      ++flagged;
+      continue;
+    }
+    ASSERT_FALSE(r.flag) << qs;
+    const double val = recip::value(r, 0);  // 1/q for q an integer
+    const double ulp = std::ldexp(kUlp, -static_cast<int>(r.shift));
+    max_ulp = std::max(max_ulp, std::fabs(val - 1.0 / static_cast<double>(qs)) / ulp);
+    if (qs > 1) {
+      ASSERT_LE(val, prev_val) << "not monotonic at q = " << qs;
+    }
+    prev_val = val;
+  }
+  EXPECT_EQ(flagged, static_cast<uint64_t>(n / 2 + 1));
+  EXPECT_LT(max_ulp, 1.0);
+}
+
+TEST(Reciprocal, ExactPowersOfTwo) {
+  for (int p = 0; p < kW - 1; ++p) {
+    const auto r = recip::eval(1 << p);
+    EXPECT_EQ(r.shift, static_cast<uint32_t>(p));
+    EXPECT_EQ(r.mant, 1u << fmt::kRecipOutF) << "1/2^" << p << " must be exact";
+  }
+}
+
+TEST(Reciprocal, TableCoefficientsFitTheirFormats) {
+  // Rounding to the coefficient formats must never saturate (it would bias a whole segment).
+  for (const auto& c : recip::table()) {
+    EXPECT_LT(c.c0.raw(), recip::C0::kMaxRaw);
+    EXPECT_GT(c.c1.raw(), recip::C1::kMinRaw);
+    EXPECT_LT(c.c2.raw(), recip::C2::kMaxRaw);
+  }
+}
+}  // namespace

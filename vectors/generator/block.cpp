@@ -1,0 +1,57 @@
+#include "block.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace tu::blocks {
+
+Block make_reciprocal();  // reciprocal_block.cpp
+
+const std::vector<Block>& all() {
+  static const std::vector<Block> blocks = [] {
+    std::vector<Block> b;
+    b.push_back(make_reciprocal());
+    return b;
+  }();
+  return blocks;
+}
+
+const Block& find(const std::string& name) {
+  for (const auto& b : all())
+    if (b.name == name) return b;
+  std::string known;
+  for (const auto& b : all()) known += (known.empty() ? "" : ", ") + b.name;
+  throw std::invalid_argument("unknown block '" + name + "' (known: " + known + ")");
+}
+
+Row pick(const Row& row, const std::vector<int>& idx) {
+  Row r;
+  r.reserve(idx.size());
+  for (int i : idx) r.push_back(row[static_cast<size_t>(i)]);
+  return r;
+}
+
+vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count, uint64_t seed) {
+  if (std::find(b.sets.begin(), b.sets.end(), set) == b.sets.end())
+    throw std::invalid_argument("block '" + b.name + "' has no set '" + set + "'");
+  vec::VectorFile v;
+  v.block = b.name;
+  v.set = set;
+  v.seed = seed;
+  v.fields = b.fields;
+  const auto in_idx = v.indices(vec::Role::In);
+  const auto out_idx = v.indices(vec::Role::Out);
+  const auto ref_idx = v.indices(vec::Role::Ref);
+  for (const Row& in : b.inputs(set, count, seed)) {
+    Row row(v.fields.size());
+    const Row out = b.model(in);
+    const Row ref = b.ref(in);
+    for (size_t i = 0; i < in_idx.size(); ++i) row[static_cast<size_t>(in_idx[i])] = in[i];
+    for (size_t i = 0; i < out_idx.size(); ++i) row[static_cast<size_t>(out_idx[i])] = out[i];
+    for (size_t i = 0; i < ref_idx.size(); ++i) row[static_cast<size_t>(ref_idx[i])] = ref[i];
+    v.rows.push_back(std::move(row));
+  }
+  return v;
+}
+
+}  // namespace tu::blocks

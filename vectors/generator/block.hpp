@@ -1,0 +1,46 @@
+// Block descriptions shared by the vector generator, the co-simulation and the report:
+// field layout, input sets, the bit-accurate model, the float reference and the error metric.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "vector_file.hpp"
+
+namespace tu::blocks {
+
+using Row = std::vector<uint64_t>;
+
+// Error of one output against the float reference, in the block's own units.
+struct ErrPoint {
+  double abs = 0;  // absolute error in the block's documented unit
+  double ulp = 0;  // the same in units of the output's last place
+  bool valid = true;  // false for flagged/saturated outputs (excluded from the statistics)
+};
+
+struct Block {
+  std::string name;
+  std::string description;
+  std::vector<vec::Field> fields;  // in, out and ref fields, in file order
+  std::vector<std::string> sets;   // e.g. golden, stiff, random
+  // Input rows (one raw code per in-field) for a set; count/seed used by random sets.
+  std::function<std::vector<Row>(const std::string& set, uint64_t count, uint64_t seed)> inputs;
+  std::function<Row(const Row& in)> model;  // out-field codes
+  std::function<Row(const Row& in)> ref;    // ref-field bits (f64)
+  std::function<ErrPoint(const Row& in, const Row& out, const Row& ref)> error;
+  int latency_cycles = 0;  // declared by the structural scheme
+  int ii_cycles = 1;
+};
+
+const std::vector<Block>& all();
+const Block& find(const std::string& name);  // throws std::invalid_argument listing known names
+
+// A full vector file: inputs, C-model outputs and the reference, for a set of a block.
+vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count, uint64_t seed);
+
+// Split/join a file row by role.
+Row pick(const Row& row, const std::vector<int>& idx);
+
+}  // namespace tu::blocks
