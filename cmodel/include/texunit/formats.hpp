@@ -27,6 +27,28 @@
   X(RecipC0F, 30, "")                                                                           \
   X(RecipOutW, 25, "reciprocal mantissa R in (0.5,1]: unsigned, RecipOutF fraction bits")       \
   X(RecipOutF, 24, "")                                                                          \
+  /* Gaussian pixel model: clip volume, weight, weight tables (docs/blocks/gaussian.md) */      \
+  X(ClipInW, 13, "clip distance d: signed, ClipInF fraction bits; domain [-0.5, 0.5], clamped")  \
+  X(ClipInF, 12, "")                                                                            \
+  X(ClipAW, 12, "a = min(|d|, 0.5): unsigned, ClipInF fraction bits")                           \
+  X(ClipCoefW, 22, "polynomial / segment coefficients: signed, ClipCoefF fraction bits")        \
+  X(ClipCoefF, 18, "")                                                                          \
+  X(ClipAccW, 24, "Horner/Estrin accumulators and truncated products: signed, ClipCoefF frac")  \
+  X(ClipOutW, 16, "v: unsigned, ClipOutF fraction bits, round half up, p in [1, 2^16-1] codes") \
+  X(ClipOutF, 16, "")                                                                           \
+  X(ClipP1Latency, 2, "comparator + segment table + one multiply-add, II = 1")                  \
+  X(ClipHornerLatency, 4, "degree-3 Horner, fully pipelined, II = 1")                           \
+  X(ClipEstrinLatency, 3, "degree-3 Estrin (a^2 beside c1*a, c3*a), II = 1")                   \
+  X(ClipSeqLatency, 4, "degree-3 Horner on one shared multiplier (FSM)")                        \
+  X(ClipSeqIi, 4, "initiation interval of the shared-multiplier scheme")                        \
+  X(GaussQW, 16, "normalised quadratic form Q: unsigned, GaussQF fraction bits")                \
+  X(GaussQF, 14, "")                                                                            \
+  X(GaussTW, 16, "t = 1 - Q/2 in [0.5, 1]: unsigned, GaussTF fraction bits")                    \
+  X(GaussTF, 15, "")                                                                            \
+  X(GaussSqW, 17, "t^2, t^4 and w = t^8: unsigned, GaussSqF fraction bits, round half up")      \
+  X(GaussSqF, 16, "")                                                                           \
+  X(GaussLatency, 3, "three squarings, one per stage, II = 1")                                  \
+  X(WtabEntryW, 16, "weight-table entry: unsigned, WtabEntryW fraction bits, saturating")       \
   X(RecipLatency, 5, "pipeline latency in cycles, II = 1")
 
 namespace tu::fmt {
