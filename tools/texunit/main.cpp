@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "block.hpp"
+#include "complexity/complexity.hpp"
 #include "cosim.hpp"
 #include "texunit/rtl_gen.hpp"
 #include "vector_file.hpp"
@@ -36,7 +37,12 @@ int cmd_cosim(const std::string& block, const std::string& file, double stall, u
   opt.run.stall_prob = stall;
   opt.run.seed = seed;
   opt.run.fst_path = fst;
-  const auto rep = tu::cosim::run(vf, opt);
+  tu::cosim::Report rep;
+  try {
+    rep = tu::cosim::run(vf, opt);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(file + ": " + e.what());
+  }
   if (json) {
     std::cout << rep.json() << "\n";
   } else {
@@ -77,6 +83,17 @@ int cmd_gen_rtl(const std::string& root, bool check) {
     std::cerr << "wrote " << p.string() << "\n";
   }
   return stale ? 1 : 0;
+}
+
+// Complexity map (docs/blocks/relief.md): HEIGHT.png (first channel) -> 8-bit level codes.
+int cmd_complexity(const std::string& in, const std::string& out, const tu::complexity::Params& p) {
+  tu::complexity::validate(p);
+  const auto h = tu::img::read_png_channel0(in);
+  const auto c = tu::complexity::complexity_map(h, p);
+  tu::img::write_png_gray(out, c);
+  std::cerr << "wrote " << c.width << "x" << c.height << " complexity map (" << p.levels
+            << " levels, gamma " << p.gamma << ", dilate " << p.dilate << ") to " << out << "\n";
+  return 0;
 }
 
 // Main job until the texture pipeline lands: every block with RTL, co-simulated on its golden,
@@ -139,11 +156,24 @@ int main(int argc, char** argv) {
   auto* demo = app.add_subcommand("demo", "main job: co-simulate every block and print the table");
   demo->add_option("--count", count, "random vectors per block")->check(CLI::Range(1ull, 1ull << 32));
 
+  std::string cx_in, cx_out;
+  tu::complexity::Params cx;
+  auto* cpx = app.add_subcommand("complexity", "complexity map of a height map (seed-000 POM)");
+  cpx->add_option("HEIGHT", cx_in, "height map PNG (first channel)")->required();
+  cpx->add_option("OUT", cx_out, "output PNG (8-bit grey level codes)")->required();
+  cpx->add_option("--levels", cx.levels, "quantisation levels")->check(CLI::Range(2, 256));
+  cpx->add_option("--gamma", cx.gamma, "gamma exponent")->check(CLI::Range(1e-6, 16.0));
+  cpx->add_option("--dilate", cx.dilate, "odd max-filter size (1 = none)")
+      ->check(CLI::Range(1, 255) & CLI::Validator([](std::string& s) {
+        return std::stoi(s) % 2 ? std::string() : std::string("must be odd");
+      }, "ODD"));
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (*vec) return cmd_vectors(block, set, count, seed, out);
     if (*cos) return cmd_cosim(block, file, stall, seed, fst, json);
     if (*gen) return cmd_gen_rtl(root, check);
+    if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000);
   } catch (const std::exception& e) {
     std::cerr << "texunit: error: " << e.what() << "\n";
