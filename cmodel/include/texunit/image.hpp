@@ -1,0 +1,32 @@
+// Small image module: 8-bit grey images and PNG I/O (stb_image / stb_image_write), shared by the
+// complexity-map tool and, later, the texture unit's texture loader.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tu::img {
+
+// Row-major 8-bit single-channel image.
+struct Gray8 {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> px;  // width * height
+  Gray8() = default;
+  Gray8(int w, int h, uint8_t fill = 0)
+      : width(w), height(h), px(static_cast<size_t>(w) * static_cast<size_t>(h), fill) {}
+  uint8_t& at(int x, int y) { return px[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)]; }
+  uint8_t at(int x, int y) const { return px[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)]; }
+};
+
+// Reads a PNG and returns its first colour channel (R; grey for grey images) as 8 bits
+// (16-bit PNGs are reduced to 8 bits by stb_image: code16 >> 8). Throws std::runtime_error naming
+// the file on a missing or malformed file.
+Gray8 read_png_channel0(const std::string& path);
+
+// Writes an 8-bit grey PNG atomically (temporary file in the same directory + rename), so a
+// failure leaves no partial output. Throws std::runtime_error naming the file.
+void write_png_gray(const std::string& path, const Gray8& im);
+
+}  // namespace tu::img
