@@ -6,11 +6,13 @@
 namespace tu::blocks {
 
 Block make_reciprocal();  // reciprocal_block.cpp
+Block make_persp();       // persp_block.cpp
 
 const std::vector<Block>& all() {
   static const std::vector<Block> blocks = [] {
     std::vector<Block> b;
     b.push_back(make_reciprocal());
+    b.push_back(make_persp());
     return b;
   }();
   return blocks;

@@ -49,7 +49,16 @@
   X(GaussSqF, 16, "")                                                                           \
   X(GaussLatency, 3, "three squarings, one per stage, II = 1")                                  \
   X(WtabEntryW, 16, "weight-table entry: unsigned, WtabEntryW fraction bits, saturating")       \
-  X(RecipLatency, 5, "pipeline latency in cycles, II = 1")
+  X(RecipLatency, 5, "pipeline latency in cycles, II = 1")                                     \
+  /* Perspective divide (docs/blocks/persp.md) */                                               \
+  X(PerspXyW, 12, "pixel indices x, y and span offset n: unsigned, 0..4095")                    \
+  X(PerspF, 40, "fraction bits of coefficients A..I and of accumulators p_u, p_v, q")           \
+  X(PerspPW, kPerspF + 14, "A..F, p_u, p_v: signed, PerspF fraction bits, |p| < 2^13")          \
+  X(PerspQW, kPerspF + 4, "G..I, q: signed, PerspF fraction bits, |q| < 8")                     \
+  X(PerspGuardLog2, 10, "guard: q < 2^-PerspGuardLog2 (incl. q <= 0) -> flag, u, v saturated")  \
+  X(PerspUvW, 32, "u, v: signed texels, PerspUvF fraction bits, round half up, saturate")       \
+  X(PerspUvF, 8, "")                                                                            \
+  X(PerspLatency, 8, "per-pixel pipeline latency in cycles, II = 1")
 
 namespace tu::fmt {
 #define TU_X_DECLARE(name, value, desc) inline constexpr int k##name = (value);

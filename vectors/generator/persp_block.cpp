@@ -1,0 +1,222 @@
+// Vector sets for the perspective divide unit (B1). One vector = one pixel of a span:
+//   in : the span's per-scanline seeds p_u0, p_v0, q0 (values at the span start x0), the per-pixel
+//        increments A, D, G and the pixel's offset n in the span
+//   out: u, v (texels, s32.8) and the guard flag
+//   ref: u, v as the exact rational (p_u0 + n A) / (q0 + n G) of the quantised coefficients
+//        (long double), +inf when the guard applies.
+// Spans are written as consecutive rows n = 0, 1, 2, ...: the C model evaluates each row directly
+// (stateless), the RTL accumulates (loads the seeds when n = 0, otherwise adds the increments),
+// so co-simulation also checks direct == incremental.
+#include <cmath>
+#include <random>
+
+#include "block.hpp"
+#include "persp/persp.hpp"
+
+namespace tu::blocks {
+
+namespace {
+using persp::Unit;
+using persp::Uv;
+using persp::Xy;
+using P = Unit::P;
+using Q = Unit::Q;
+constexpr int kPW = fmt::kPerspPW, kQW = fmt::kPerspQW, kN = fmt::kPerspXyW;
+constexpr int64_t kGuard = int64_t(1) << (fmt::kPerspF - fmt::kPerspGuardLog2);
+
+void emit_span(std::vector<Row>& rows, P pu, P pv, Q q, P a, P d, Q g, int n) {
+  for (int i = 0; i < n; ++i)
+    rows.push_back({pu.bits(), pv.bits(), q.bits(), a.bits(), d.bits(), g.bits(),
+                    static_cast<uint64_t>(i)});
+}
+
+// A span of the quantised map k on row y, pixels x0 .. x0+n-1; false if set-up rejects it.
+bool emit_map(std::vector<Row>& rows, const persp::Coef9& k, int y, int x0, int n) {
+  try {
+    const auto c = Unit::quantise(k, "span");
+    const auto s = Unit::setup(c, y, x0, x0 + n - 1, "span");
+    emit_span(rows, s.pu, s.pv, s.q, c.a, c.d, c.g, n);
+    return true;
+  } catch (const persp::SetupError&) {
+    return false;
+  }
+}
+
+persp::Camera floor_camera(int w, int h) {
+  persp::Camera cam;
+  cam.width = w;
+  cam.height = h;
+  cam.pos[1] = 1.0;
+  cam.look_at[1] = 0.98;  // almost horizontal: the horizon is near the image centre
+  return cam;
+}
+// A large floor quad half (y = 0 plane), 1 texel per 1/64 unit, reaching far away.
+persp::Triangle floor_tri() {
+  persp::Triangle t;
+  t.name = "floor";
+  t.v[0] = {{-40, 0, -0.5}, {0, 0}};
+  t.v[1] = {{40, 0, -0.5}, {4096, 0}};
+  t.v[2] = {{-40, 0, -500}, {0, 4096}};
+  return t;
+}
+
+std::vector<Row> golden_inputs() {
+  std::vector<Row> rows;
+  const auto cam = floor_camera(64, 48);
+  const auto k = persp::coefficients(cam, floor_tri());
+  emit_map(rows, k, 40, 10, 6);  // near the bottom of the image
+  emit_map(rows, persp::span_map(7, 0, 4095, 1.0, 0.001, 3.5, 4000, -100, 2048, 0, 0, 0), 7, 0, 5);
+  // q crosses zero: the last pixels are flagged.
+  emit_map(rows, persp::span_map(0, 0, 5, 0.002, -0.001, 1, 2, 3, 4, 0, 0, 0), 0, 0, 6);
+  return rows;
+}
+
+std::vector<Row> stiff_inputs() {
+  std::vector<Row> rows;
+  // Grazing planes / long spans: 4096 pixels, depth ratio 1000, far ends at +-4096 texels.
+  emit_map(rows, persp::span_map(4095, 0, 4095, 1.0, 0.001, 0, 4096, 0, -4096, 0, 0.5, -0.5), 4095, 0, 4096);
+  emit_map(rows, persp::span_map(0, 0, 4095, 0.001, 1.0, -4096, 17.25, 4096, 0.5, 0, 0, 0), 0, 0, 4096);
+  emit_map(rows, persp::span_map(2000, 0, 4095, 0.5, 0.0011, 4095.9, -4095.9, 1, 4095, 0, 0, 0), 2000, 0, 4096);
+  // Horizon-near spans of a floor seen by a 4096-wide camera: rows just below the horizon
+  // (q tiny, constant along the row), and a rolled camera whose rows cross the horizon.
+  {
+    const auto cam = floor_camera(4096, 2048);
+    const auto k = persp::coefficients(cam, floor_tri());
+    for (int y = 0; y < 2048; ++y) {
+      double u, v, q;
+      persp::eval_ref(k, 2048, y, &u, &v, &q);
+      if (q > 0 && q < 0.004) {
+        emit_map(rows, k, y, 0, 1024);
+        if (rows.size() > 3 * 4096 + 4 * 1024) break;
+      }
+    }
+    auto rolled = cam;
+    rolled.up[0] = 0.3;  // roll: each row runs from below to above the horizon (q crosses 0)
+    const auto kr = persp::coefficients(rolled, floor_tri());
+    emit_map(rows, kr, 1000, 0, 4096);
+  }
+  // q near the guard: walk q across 2^-10 one LSB per pixel, both directions; and from just above
+  // the guard with a tiny slope.
+  const P one = P::from_double(1.0), big = P::from_raw(P::kMaxRaw), nbig = P::from_raw(P::kMinRaw);
+  emit_span(rows, one, nbig, Q::from_raw(kGuard + 4), P::from_raw(1), P::from_raw(1), Q::from_raw(-1), 9);
+  emit_span(rows, big, one, Q::from_raw(kGuard - 4), P::from_raw(-1), P::from_raw(0), Q::from_raw(1), 9);
+  emit_span(rows, big, nbig, Q::from_raw(kGuard), P::from_raw(-12345), P::from_raw(999), Q::from_raw(7), 64);
+  // Negative q: a span crossing q = 0 exactly, the most negative q, and q <= 0 throughout.
+  emit_span(rows, one, one, Q::from_raw(int64_t(5) << 30), P::from_raw(3), P::from_raw(-3),
+            Q::from_raw(-(int64_t(1) << 30)), 12);
+  emit_span(rows, one, one, Q::from_raw(Q::kMinRaw), P::from_raw(0), P::from_raw(0), Q::from_raw(0), 3);
+  emit_map(rows, persp::span_map(10, 100, 611, -0.01, -1.0, 5, 6, 7, 8, 0, 0, 0), 10, 100, 512);
+  // Largest q and largest |p|: outputs at the edges of their ranges.
+  emit_span(rows, big, nbig, Q::from_raw(Q::kMaxRaw), P::from_raw(0), P::from_raw(0), Q::from_raw(0), 2);
+  return rows;
+}
+
+std::vector<Row> random_inputs(uint64_t count, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::vector<Row> rows;
+  rows.reserve(count + 4096);
+  while (rows.size() < count) {
+    const int len = U(rng) < 0.1 ? 4096 : std::max(1, static_cast<int>(std::pow(4096.0, U(rng))));
+    const int x0 = static_cast<int>(rng() % static_cast<uint64_t>(4097 - len));
+    const int x1 = x0 + len - 1;
+    const int y = static_cast<int>(rng() % 4096);
+    const double kind = U(rng);
+    double q0, q1;
+    if (kind < 0.8) {  // visible, depth ratio up to 1000
+      q0 = std::pow(1000.0, -U(rng));
+      q1 = std::pow(1000.0, -U(rng));
+    } else if (kind < 0.9) {  // crossing the eye plane
+      q0 = U(rng);
+      q1 = -U(rng);
+    } else {  // hugging the guard
+      q0 = std::ldexp(1.0, -fmt::kPerspGuardLog2) * (1 + (U(rng) - 0.5) * 0.01);
+      q1 = std::ldexp(1.0, -fmt::kPerspGuardLog2) * (1 + (U(rng) - 0.5) * 0.01);
+    }
+    const auto k = persp::random_span_map(rng, y, x0, x1, q0, q1);
+    emit_map(rows, k, y, x0, len);
+  }
+  rows.resize(count);  // a prefix of a span is still a valid span
+  return rows;
+}
+
+struct Eval {
+  long double pu, pv, q;
+  bool guarded;
+};
+Eval eval_row(const Row& in) {
+  const i128 n = static_cast<i128>(in[6]);
+  const i128 pu = vec::sext(in[0], kPW) + n * vec::sext(in[3], kPW);
+  const i128 pv = vec::sext(in[1], kPW) + n * vec::sext(in[4], kPW);
+  const i128 q = vec::sext(in[2], kQW) + n * vec::sext(in[5], kQW);
+  return {static_cast<long double>(pu), static_cast<long double>(pv), static_cast<long double>(q),
+          q < kGuard};
+}
+}  // namespace
+
+Block make_persp() {
+  Block b;
+  b.name = "persp";
+  b.description =
+      "perspective divide: u = p_u/q, v = p_v/q per pixel, incremental accumulators, "
+      "reciprocal + 2 multiplies, II = 1";
+  auto fmt_s = [](int w, int f) { return "s" + std::to_string(w) + "." + std::to_string(f); };
+  auto F = [](const char* n, vec::Role r, const std::string& f) {
+    return vec::Field{n, r, vec::FieldFormat::parse(f)};
+  };
+  const std::string pf = fmt_s(kPW, fmt::kPerspF), qf = fmt_s(kQW, fmt::kPerspF),
+                    uvf = fmt_s(fmt::kPerspUvW, fmt::kPerspUvF);
+  b.fields = {F("pu0", vec::Role::In, pf),  F("pv0", vec::Role::In, pf),
+              F("q0", vec::Role::In, qf),   F("a", vec::Role::In, pf),
+              F("d", vec::Role::In, pf),    F("g", vec::Role::In, qf),
+              F("n", vec::Role::In, "u" + std::to_string(kN) + ".0"),
+              F("u", vec::Role::Out, uvf),  F("v", vec::Role::Out, uvf),
+              F("flag", vec::Role::Out, "u1.0"),
+              F("uref", vec::Role::Ref, "f64"), F("vref", vec::Role::Ref, "f64")};
+  b.sets = {"golden", "stiff", "random"};
+  b.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
+    if (set == "golden") return golden_inputs();
+    if (set == "stiff") return stiff_inputs();
+    return random_inputs(count, seed);
+  };
+  b.model = [](const Row& in) {
+    const Xy n = Xy::from_raw(static_cast<int64_t>(in[6]));
+    const P pu = (P::from_bits(in[0]) + P::from_bits(in[3]) * n).as<P>();
+    const P pv = (P::from_bits(in[1]) + P::from_bits(in[4]) * n).as<P>();
+    const Q q = (Q::from_bits(in[2]) + Q::from_bits(in[5]) * n).as<Q>();
+    const persp::Pixel px = Unit::pixel({pu, pv, q});
+    return Row{Uv::from_raw(px.u).bits(), Uv::from_raw(px.v).bits(), px.flag ? 1u : 0u};
+  };
+  b.ref = [](const Row& in) {
+    const Eval e = eval_row(in);
+    if (e.guarded) return Row{vec::f64_bits(INFINITY), vec::f64_bits(INFINITY)};
+    return Row{vec::f64_bits(static_cast<double>(e.pu / e.q)),
+               vec::f64_bits(static_cast<double>(e.pv / e.q))};
+  };
+  b.error = [](const Row& in, const Row& out, const Row& ref) {
+    ErrPoint e;
+    const double ur = vec::bits_f64(ref[0]), vr = vec::bits_f64(ref[1]);
+    const bool guarded = eval_row(in).guarded;
+    const uint64_t sat = Uv::from_raw(Uv::kMaxRaw).bits();
+    if (guarded) {  // must be flagged and saturated
+      const bool ok = out[2] == 1 && out[0] == sat && out[1] == sat && std::isinf(ur);
+      e.valid = !ok;
+      e.abs = e.ulp = ok ? 0 : INFINITY;
+      return e;
+    }
+    if (out[2] != 0) {
+      e.abs = e.ulp = INFINITY;
+      return e;
+    }
+    const double u = std::ldexp(static_cast<double>(vec::sext(out[0], fmt::kPerspUvW)), -fmt::kPerspUvF);
+    const double v = std::ldexp(static_cast<double>(vec::sext(out[1], fmt::kPerspUvW)), -fmt::kPerspUvF);
+    e.abs = std::max(std::fabs(u - ur), std::fabs(v - vr));
+    e.ulp = std::ldexp(e.abs, fmt::kPerspUvF);
+    return e;
+  };
+  b.latency_cycles = fmt::kPerspLatency;
+  b.ii_cycles = 1;
+  return b;
+}
+
+}  // namespace tu::blocks
