@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "pom/pom_layers.hpp"
 #include "reciprocal/reciprocal.hpp"
 #include "texunit/formats.hpp"
 
@@ -52,10 +53,25 @@ std::string recip_rom() {
   os << "    endcase\n  end\nendmodule\n";
   return os.str();
 }
+std::string pom_f_rom() {
+  std::ostringstream os;
+  os << kBanner << "// Adaptive POM angle factor ROM: f = round((1 - idx/2^PomIdxF)^0.8 * 2^PomFF).\n"
+     << "module tu_pom_f_rom (\n"
+     << "  input  logic [tu_formats_pkg::PomIdxW-1:0] idx_i,\n"
+     << "  output logic [tu_formats_pkg::PomFW-1:0]   f_o\n);\n"
+     << "  always_comb begin\n    unique case (idx_i)\n";
+  const auto& t = pom::f_table();
+  for (size_t k = 0; k < t.size(); ++k)
+    os << "      " << hex(k, fmt::kPomIdxW) << ": f_o = " << hex(t[k], fmt::kPomFW) << ";\n";
+  os << "      default: f_o = '0;\n";
+  os << "    endcase\n  end\nendmodule\n";
+  return os.str();
+}
 }  // namespace
 
 std::map<std::string, std::string> generated_rtl() {
   return {{"rtl/generated/tu_formats_pkg.sv", formats_pkg()},
+          {"rtl/generated/tu_pom_f_rom.sv", pom_f_rom()},
           {"rtl/generated/tu_recip_rom.sv", recip_rom()}};
 }
 

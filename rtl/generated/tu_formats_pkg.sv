@@ -42,6 +42,21 @@ package tu_formats_pkg;
   localparam int unsigned GaussLatency = 3;  // three squarings, one per stage, II = 1
   localparam int unsigned WtabEntryW = 16;  // weight-table entry: unsigned, WtabEntryW fraction bits, saturating
   localparam int unsigned RecipLatency = 5;  // pipeline latency in cycles, II = 1
+  localparam int unsigned PomVzW = 16;  // view-vector z: signed, PomVzF fraction bits (|Vz| > 1 saturates to 1)
+  localparam int unsigned PomVzF = 14;
+  localparam int unsigned PomIdxF = 11;  // ROM index: round_half_up(min(|Vz|,1) * 2^PomIdxF), unsigned
+  localparam int unsigned PomIdxW = 12;  // index 0..2^PomIdxF (2^PomIdxF + 1 ROM entries)
+  localparam int unsigned PomFW = 17;  // F = (1-|Vz|)^0.8: unsigned, PomFF fraction bits, round to nearest, F(0)=1
+  localparam int unsigned PomFF = 16;
+  localparam int unsigned PomCW = 8;  // complexity code C*255: unsigned integer
+  localparam int unsigned PomNW = 6;  // layer counts Nmin, Nmax, N: unsigned integers 0..63
+  localparam int unsigned PomTW = 17;  // T = 255*(Nmax-2*Nmin) + Nmax*code: signed integer
+  localparam int unsigned PomPW = 33;  // P = F*T: signed, PomFF fraction bits (exact)
+  localparam int unsigned PomQW = 16;  // y = floor(P / 2^(PomFF+1)) + 255*PomBias: unsigned integer, < 2^15
+  localparam int unsigned PomBias = 64;  // bias (in units of 255) that makes y non-negative
+  localparam int unsigned PomDivM = 32897;  // floor(y/255) = (y*PomDivM) >> PomDivS, exact for y < 66052
+  localparam int unsigned PomDivS = 23;
+  localparam int unsigned PomLayersLatency = 3;  // pom_layers pipeline latency in cycles, II = 1
   localparam int unsigned PerspXyW = 12;  // pixel indices x, y and span offset n: unsigned, 0..4095
   localparam int unsigned PerspF = 40;  // fraction bits of coefficients A..I and of accumulators p_u, p_v, q
   localparam int unsigned PerspPW = 54;  // A..F, p_u, p_v: signed, PerspF fraction bits, |p| < 2^13

@@ -9,9 +9,10 @@
 namespace tu::cosim {
 
 RtlBlock rtl_reciprocal();  // reciprocal_rtl.cpp
+RtlBlock rtl_pom_layers();  // pom_layers_rtl.cpp
 
 const RtlBlock& find_rtl(const std::string& name) {
-  static const std::vector<RtlBlock> rtl = {rtl_reciprocal()};
+  static const std::vector<RtlBlock> rtl = {rtl_reciprocal(), rtl_pom_layers()};
   for (const auto& r : rtl)
     if (r.name == name) return r;
   throw std::invalid_argument("block '" + name + "' has no RTL co-simulation model");

@@ -50,5 +50,5 @@ TEST_P(Cosim, DetectsACorruptedExpectedValue) {
   EXPECT_FALSE(rep.ok());
 }
 
-INSTANTIATE_TEST_SUITE_P(Blocks, Cosim, ::testing::Values("reciprocal"));
+INSTANTIATE_TEST_SUITE_P(Blocks, Cosim, ::testing::Values("reciprocal", "pom_layers"));
 }  // namespace

@@ -6,12 +6,14 @@
 namespace tu::blocks {
 
 Block make_reciprocal();  // reciprocal_block.cpp
+Block make_pom_layers();  // pom_layers_block.cpp
 Block make_persp();       // persp_block.cpp
 
 const std::vector<Block>& all() {
   static const std::vector<Block> blocks = [] {
     std::vector<Block> b;
     b.push_back(make_reciprocal());
+    b.push_back(make_pom_layers());
     b.push_back(make_persp());
     return b;
   }();

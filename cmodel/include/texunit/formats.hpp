@@ -50,6 +50,22 @@
   X(GaussLatency, 3, "three squarings, one per stage, II = 1")                                  \
   X(WtabEntryW, 16, "weight-table entry: unsigned, WtabEntryW fraction bits, saturating")       \
   X(RecipLatency, 5, "pipeline latency in cycles, II = 1")                                     \
+  /* Adaptive POM layer counter (docs/blocks/relief.md) */                                     \
+  X(PomVzW, 16, "view-vector z: signed, PomVzF fraction bits (|Vz| > 1 saturates to 1)")        \
+  X(PomVzF, 14, "")                                                                             \
+  X(PomIdxF, 11, "ROM index: round_half_up(min(|Vz|,1) * 2^PomIdxF), unsigned")                 \
+  X(PomIdxW, kPomIdxF + 1, "index 0..2^PomIdxF (2^PomIdxF + 1 ROM entries)")                    \
+  X(PomFW, 17, "F = (1-|Vz|)^0.8: unsigned, PomFF fraction bits, round to nearest, F(0)=1")     \
+  X(PomFF, 16, "")                                                                              \
+  X(PomCW, 8, "complexity code C*255: unsigned integer")                                        \
+  X(PomNW, 6, "layer counts Nmin, Nmax, N: unsigned integers 0..63")                            \
+  X(PomTW, 17, "T = 255*(Nmax-2*Nmin) + Nmax*code: signed integer")                            \
+  X(PomPW, 33, "P = F*T: signed, PomFF fraction bits (exact)")                                  \
+  X(PomQW, 16, "y = floor(P / 2^(PomFF+1)) + 255*PomBias: unsigned integer, < 2^15")            \
+  X(PomBias, 64, "bias (in units of 255) that makes y non-negative")                            \
+  X(PomDivM, 32897, "floor(y/255) = (y*PomDivM) >> PomDivS, exact for y < 66052")              \
+  X(PomDivS, 23, "")                                                                            \
+  X(PomLayersLatency, 3, "pom_layers pipeline latency in cycles, II = 1")                      \
   /* Perspective divide (docs/blocks/persp.md) */                                               \
   X(PerspXyW, 12, "pixel indices x, y and span offset n: unsigned, 0..4095")                    \
   X(PerspF, 40, "fraction bits of coefficients A..I and of accumulators p_u, p_v, q")           \
