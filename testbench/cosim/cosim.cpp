@@ -9,10 +9,11 @@
 namespace tu::cosim {
 
 RtlBlock rtl_reciprocal();  // reciprocal_rtl.cpp
+RtlBlock rtl_persp();       // persp_rtl.cpp
 RtlBlock rtl_pom_layers();  // pom_layers_rtl.cpp
 
 const RtlBlock& find_rtl(const std::string& name) {
-  static const std::vector<RtlBlock> rtl = {rtl_reciprocal(), rtl_pom_layers()};
+  static const std::vector<RtlBlock> rtl = {rtl_reciprocal(), rtl_persp(), rtl_pom_layers()};
   for (const auto& r : rtl)
     if (r.name == name) return r;
   throw std::invalid_argument("block '" + name + "' has no RTL co-simulation model");
@@ -42,6 +43,7 @@ std::string Report::json() const {
      << ", \"flagged\": " << flagged << ", \"latency_cycles\": " << latency_cycles
      << ", \"ii_cycles\": " << num(ii_cycles) << ", \"sim_cycles\": " << sim_cycles
      << ", \"stall_prob\": " << num(stall_prob) << ", \"wall_s\": " << num(wall_s)
+     << (err_metric.empty() ? "" : ", \"" + err_metric + "\": " + num(max_abs_err))
      << ", \"ok\": " << (ok() ? "true" : "false") << "}";
   return os.str();
 }
@@ -68,6 +70,7 @@ Report run(const vec::VectorFile& vf, const Options& opt) {
 
   Report rep;
   rep.block = vf.block;
+  rep.err_metric = block.err_metric;
   rep.vectors = vf.rows.size();
   rep.stall_prob = opt.run.stall_prob;
   const auto t_start = std::chrono::steady_clock::now();

@@ -38,6 +38,7 @@ struct Report {
   double stall_prob = 0;
   double wall_s = 0;
   std::string first_mismatch;  // human-readable description of the first mismatch
+  std::string err_metric;      // block's extra key for max_abs_err (empty: none)
   bool ok() const {
     return mismatches == 0 && model_mismatches == 0 && extra_outputs == 0 && !hung &&
            outputs == vectors;

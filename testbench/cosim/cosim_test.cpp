@@ -50,5 +50,5 @@ TEST_P(Cosim, DetectsACorruptedExpectedValue) {
   EXPECT_FALSE(rep.ok());
 }
 
-INSTANTIATE_TEST_SUITE_P(Blocks, Cosim, ::testing::Values("reciprocal", "pom_layers"));
+INSTANTIATE_TEST_SUITE_P(Blocks, Cosim, ::testing::Values("reciprocal", "persp", "pom_layers"));
 }  // namespace

@@ -32,6 +32,8 @@ struct Block {
   std::function<ErrPoint(const Row& in, const Row& out, const Row& ref)> error;
   int latency_cycles = 0;  // declared by the structural scheme
   int ii_cycles = 1;
+  // Optional extra JSON key for max_abs_err in the block's own unit (e.g. "max_texel_err").
+  std::string err_metric;
 };
 
 const std::vector<Block>& all();

@@ -1,0 +1,161 @@
+// Perspective divide unit (B1), per-pixel pipeline, II = 1, latency PerspLatency (8).
+// One input = one pixel of a span: the per-scanline seeds p_u0, p_v0, q0 (values at the span
+// start), the increments A, D, G and the pixel offset n. Formats and rounding exactly as
+// cmodel/blocks/persp (docs/blocks/persp.md):
+//   S1 accumulate : n == 0 ? seed : acc + increment          (Direct = 1: seed + n * increment)
+//   S2 normalise  : guard q < 2^-PerspGuardLog2 (incl. q <= 0); e = msb(q); M = top 24 bits
+//   S3..S6        : tu_recip_core (R ~ 1/M, u25.24)
+//   S7 multiply   : p_u * R, p_v * R (two signed PW x 25-bit products)
+//   S8 round      : >> (RecipOutF + e - PerspUvF), round half up, saturate to s32.8;
+//                   guarded: u = v = max code, flag = 1
+module tu_persp #(
+  parameter int unsigned Direct = 0  // 1: direct evaluation (three multipliers) instead of accumulators
+) (
+  input  logic                                 clk_i,
+  input  logic                                 rst_ni,
+  input  logic                                 in_valid_i,
+  output logic                                 in_ready_o,
+  input  logic [tu_formats_pkg::PerspPW-1:0]   pu0_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]   pv0_i,
+  input  logic [tu_formats_pkg::PerspQW-1:0]   q0_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]   a_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]   d_i,
+  input  logic [tu_formats_pkg::PerspQW-1:0]   g_i,
+  input  logic [tu_formats_pkg::PerspXyW-1:0]  n_i,
+  output logic                                 out_valid_o,
+  input  logic                                 out_ready_i,
+  output logic [tu_formats_pkg::PerspUvW-1:0]  u_o,
+  output logic [tu_formats_pkg::PerspUvW-1:0]  v_o,
+  output logic                                 flag_o
+);
+  localparam int unsigned PW = tu_formats_pkg::PerspPW;
+  localparam int unsigned QW = tu_formats_pkg::PerspQW;
+  localparam int unsigned MW = tu_formats_pkg::RecipMantW;
+  localparam int unsigned RW = tu_formats_pkg::RecipOutW;
+  localparam int unsigned UW = tu_formats_pkg::PerspUvW;
+  localparam int unsigned EW = 6;                 // msb position of q, 0..QW-2
+  localparam int unsigned ProdW = PW + RW + 1;    // signed p * unsigned R
+  localparam int unsigned CoreLat = 4;
+  localparam logic [QW-1:0] GuardVal = QW'(1) << (tu_formats_pkg::PerspF - tu_formats_pkg::PerspGuardLog2);
+  localparam logic signed [ProdW-1:0] UMax = ProdW'({1'b0, {(UW-1){1'b1}}});
+  localparam logic signed [ProdW-1:0] UMin = -ProdW'({1'b1, {(UW-1){1'b0}}});
+
+  logic                                    en, accept;
+  logic [tu_formats_pkg::PerspLatency-1:0] stage_valid;
+
+  tu_pipe_valid #(.Depth(tu_formats_pkg::PerspLatency)) u_ctrl (
+    .clk_i, .rst_ni, .in_valid_i, .in_ready_o, .out_valid_o, .out_ready_i,
+    .en_o(en), .stage_valid_o(stage_valid)
+  );
+  assign accept = en && in_valid_i;
+
+  // ---- S1: accumulators (hold the last accepted pixel; only the valid bit moves on bubbles)
+  logic [PW-1:0] pu_d, pv_d, pu_q1, pv_q1;
+  logic [QW-1:0] q_d, q_q1;
+  if (Direct != 0) begin : g_direct
+    // seed + n * increment, modulo 2^W like the accumulators (exact for in-range values)
+    logic [PW-1:0] pu_m, pv_m;
+    logic [QW-1:0] q_m;
+    assign pu_m = PW'($signed(a_i) * $signed({1'b0, n_i}));
+    assign pv_m = PW'($signed(d_i) * $signed({1'b0, n_i}));
+    assign q_m  = QW'($signed(g_i) * $signed({1'b0, n_i}));
+    assign pu_d = pu0_i + pu_m;
+    assign pv_d = pv0_i + pv_m;
+    assign q_d  = q0_i + q_m;
+  end else begin : g_incr
+    assign pu_d = (n_i == '0) ? pu0_i : pu_q1 + a_i;
+    assign pv_d = (n_i == '0) ? pv0_i : pv_q1 + d_i;
+    assign q_d  = (n_i == '0) ? q0_i  : q_q1 + g_i;
+  end
+  always_ff @(posedge clk_i) begin
+    if (accept) begin
+      pu_q1 <= pu_d;
+      pv_q1 <= pv_d;
+      q_q1  <= q_d;
+    end
+  end
+
+  // ---- S2: guard, leading-one detect, normalise (truncate to MW bits)
+  logic          guard;
+  logic [EW-1:0] msb;
+  logic [QW-1:0] nrm;
+  always_comb begin
+    guard = q_q1[QW-1] || (q_q1 < GuardVal);
+    msb = '0;
+    for (int i = 0; i < QW - 1; i++) begin
+      if (q_q1[i]) msb = EW'(i);
+    end
+    nrm = q_q1 << (QW - 1 - 32'(msb));
+  end
+
+  logic [MW-1:0] m_q2;
+  logic [EW-1:0] e_q [CoreLat+2];
+  logic          g_q [CoreLat+2];
+  logic [PW-1:0] pu_q [CoreLat+1];
+  logic [PW-1:0] pv_q [CoreLat+1];
+  always_ff @(posedge clk_i) begin
+    if (en) begin
+      m_q2    <= nrm[QW-1 -: MW];
+      e_q[0]  <= msb;
+      g_q[0]  <= guard;
+      pu_q[0] <= pu_q1;
+      pv_q[0] <= pv_q1;
+      for (int i = 1; i <= CoreLat; i++) begin
+        e_q[i]  <= e_q[i-1];
+        g_q[i]  <= g_q[i-1];
+        pu_q[i] <= pu_q[i-1];
+        pv_q[i] <= pv_q[i-1];
+      end
+      e_q[CoreLat+1] <= e_q[CoreLat];
+      g_q[CoreLat+1] <= g_q[CoreLat];
+    end
+  end
+  // pu_q[CoreLat] lines up with the core output (S6); e_q/g_q[CoreLat+1] with the products (S7).
+
+  // ---- S3..S6: reciprocal core
+  logic [RW-1:0] r;
+  tu_recip_core u_core (.clk_i, .en_i(en), .m_i(m_q2), .r_o(r));
+
+  // ---- S7: two multiplies
+  logic signed [ProdW-1:0] r_ext, pu_ext, pv_ext, prod_u_q, prod_v_q;
+  assign r_ext  = ProdW'({1'b0, r});
+  assign pu_ext = ProdW'($signed(pu_q[CoreLat]));
+  assign pv_ext = ProdW'($signed(pv_q[CoreLat]));
+  always_ff @(posedge clk_i) begin
+    if (en) begin
+      prod_u_q <= pu_ext * r_ext;
+      prod_v_q <= pv_ext * r_ext;
+    end
+  end
+
+  // ---- S8: shift by the exponent, round half up, saturate
+  logic [7:0]              sh;
+  logic signed [ProdW:0]   rnd_u, rnd_v;
+  logic [UW-1:0]           u_d, v_d, u_q8, v_q8;
+  logic                    flag_q8;
+  function automatic logic [UW-1:0] sat(input logic signed [ProdW:0] x);
+    if (x > (ProdW+1)'(UMax)) return {1'b0, {(UW-1){1'b1}}};
+    if (x < (ProdW+1)'(UMin)) return {1'b1, {(UW-1){1'b0}}};
+    return UW'(x);
+  endfunction
+  always_comb begin
+    sh    = 8'(tu_formats_pkg::RecipOutF) + 8'(e_q[CoreLat+1]) - 8'(tu_formats_pkg::PerspUvF);
+    rnd_u = ((ProdW+1)'(prod_u_q) + ((ProdW+1)'(1) << (sh - 8'd1))) >>> sh;
+    rnd_v = ((ProdW+1)'(prod_v_q) + ((ProdW+1)'(1) << (sh - 8'd1))) >>> sh;
+    u_d   = g_q[CoreLat+1] ? {1'b0, {(UW-1){1'b1}}} : sat(rnd_u);
+    v_d   = g_q[CoreLat+1] ? {1'b0, {(UW-1){1'b1}}} : sat(rnd_v);
+  end
+  always_ff @(posedge clk_i) begin
+    if (en) begin
+      u_q8    <= u_d;
+      v_q8    <= v_d;
+      flag_q8 <= g_q[CoreLat+1];
+    end
+  end
+  assign u_o    = u_q8;
+  assign v_o    = v_q8;
+  assign flag_o = flag_q8;
+
+  logic unused;
+  assign unused = ^{stage_valid, nrm[QW-MW-1:0]};  // truncated mantissa bits
+endmodule

@@ -1,0 +1,37 @@
+// RTL bindings of the perspective divide unit: rtl/persp/tu_persp.sv (incremental accumulators,
+// block "persp") and rtl/persp/tu_persp_direct.sv (direct evaluation, same ports and vectors).
+#include "Vtu_persp.h"
+#include "Vtu_persp_direct.h"
+#include "cosim.hpp"
+
+namespace tu::cosim {
+
+namespace {
+template <class V>
+RtlBlock bind(const std::string& name) {
+  auto drive = [](V& d, const Row& in) {
+    d.pu0_i = in[0];
+    d.pv0_i = in[1];
+    d.q0_i = in[2];
+    d.a_i = in[3];
+    d.d_i = in[4];
+    d.g_i = in[5];
+    d.n_i = static_cast<uint16_t>(in[6]);
+  };
+  auto sample = [](V& d) { return Row{d.u_o, d.v_o, d.flag_o}; };
+  RtlBlock b;
+  b.name = name;
+  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
+    return Harness<V>(drive, sample).run(in, o);
+  };
+  b.timing = [=](const std::vector<Row>& in) {
+    return Harness<V>(drive, sample).measure_timing(in);
+  };
+  return b;
+}
+}  // namespace
+
+RtlBlock rtl_persp() { return bind<Vtu_persp>("persp"); }
+RtlBlock rtl_persp_direct() { return bind<Vtu_persp_direct>("persp"); }
+
+}  // namespace tu::cosim
