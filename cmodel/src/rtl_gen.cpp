@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "pom/pom_layers.hpp"
+#include "gauss/clip.hpp"
 #include "reciprocal/reciprocal.hpp"
 #include "texunit/formats.hpp"
 
@@ -67,10 +68,51 @@ std::string pom_f_rom() {
   os << "    endcase\n  end\nendmodule\n";
   return os.str();
 }
+std::string clip_roms(bool seg) {
+  // Clip volume (docs/blocks/gaussian.md): mm_p3 polynomial coefficients and the mm_p1
+  // comparator + segment table.
+  std::ostringstream os;
+  const int cw = fmt::kClipCoefW;
+  auto lit = [&](int64_t v) {  // two's-complement bits as a sized signed literal
+    std::string h = hex(static_cast<uint64_t>(v) & ((uint64_t(1) << cw) - 1), cw);
+    return h.insert(h.find('\'') + 1, "s");
+  };
+  const auto& p3 = clip::variant("mm_p3");
+  const auto& p1 = clip::variant("mm_p1");
+  os << kBanner;
+  if (seg) goto segment;
+  os << "// Clip-volume polynomial coefficients (variant mm_p3, scripts/minimax_clip.sollya).\n"
+     << "module tu_clip_coef_mm3 (\n";
+  for (size_t k = 0; k < p3.c.size(); ++k)
+    os << "  output logic signed [tu_formats_pkg::ClipCoefW-1:0] c" << k << "_o"
+       << (k + 1 < p3.c.size() ? ",\n" : "\n);\n");
+  for (size_t k = 0; k < p3.c.size(); ++k)
+    os << "  assign c" << k << "_o = " << lit(p3.c[k]) << ";\n";
+  os << "endmodule\n";
+  return os.str();
+segment:
+  os << "// Clip-volume 3-segment line table (variant mm_p1, scripts/minimax_clip_p1.py):\n"
+     << "// comparators against the breakpoints select (c0, c1).\n"
+     << "module tu_clip_seg_mm1 (\n"
+     << "  input  logic [tu_formats_pkg::ClipAW-1:0]          a_i,\n"
+     << "  output logic signed [tu_formats_pkg::ClipCoefW-1:0] c0_o,\n"
+     << "  output logic signed [tu_formats_pkg::ClipCoefW-1:0] c1_o\n);\n"
+     << "  logic [1:0] seg;\n"
+     << "  assign seg = 2'(a_i >= " << hex(static_cast<uint64_t>(p1.breaks[0]), fmt::kClipAW)
+     << ") + 2'(a_i >= " << hex(static_cast<uint64_t>(p1.breaks[1]), fmt::kClipAW) << ");\n"
+     << "  always_comb begin\n    unique case (seg)\n";
+  for (size_t s = 0; s < p1.seg_c0.size(); ++s)
+    os << "      2'd" << s << ": begin c0_o = " << lit(p1.seg_c0[s]) << "; c1_o = "
+       << lit(p1.seg_c1[s]) << "; end\n";
+  os << "      default: begin c0_o = '0; c1_o = '0; end\n    endcase\n  end\nendmodule\n";
+  return os.str();
+}
 }  // namespace
 
 std::map<std::string, std::string> generated_rtl() {
   return {{"rtl/generated/tu_formats_pkg.sv", formats_pkg()},
+          {"rtl/generated/tu_clip_coef_mm3.sv", clip_roms(false)},
+          {"rtl/generated/tu_clip_seg_mm1.sv", clip_roms(true)},
           {"rtl/generated/tu_pom_f_rom.sv", pom_f_rom()},
           {"rtl/generated/tu_recip_rom.sv", recip_rom()}};
 }

@@ -9,12 +9,16 @@
 namespace tu::cosim {
 
 RtlBlock rtl_reciprocal();  // reciprocal_rtl.cpp
+std::vector<RtlBlock> rtl_gauss();  // gauss_rtl.cpp
 RtlBlock rtl_persp();       // persp_rtl.cpp
 RtlBlock rtl_pom_layers();  // pom_layers_rtl.cpp
 
 const RtlBlock& find_rtl(const std::string& name) {
   static const std::vector<RtlBlock> rtl = {rtl_reciprocal(), rtl_persp(), rtl_pom_layers()};
   for (const auto& r : rtl)
+    if (r.name == name) return r;
+  static const std::vector<RtlBlock> gauss = rtl_gauss();
+  for (const auto& r : gauss)
     if (r.name == name) return r;
   throw std::invalid_argument("block '" + name + "' has no RTL co-simulation model");
 }

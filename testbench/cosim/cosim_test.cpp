@@ -50,5 +50,6 @@ TEST_P(Cosim, DetectsACorruptedExpectedValue) {
   EXPECT_FALSE(rep.ok());
 }
 
-INSTANTIATE_TEST_SUITE_P(Blocks, Cosim, ::testing::Values("reciprocal", "persp", "pom_layers"));
+INSTANTIATE_TEST_SUITE_P(Blocks, Cosim, ::testing::Values("reciprocal", "clip_p1", "clip_horner", "clip_estrin", "clip_seq",
+                                           "gauss_weight", "persp", "pom_layers"));
 }  // namespace

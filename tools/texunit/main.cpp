@@ -10,6 +10,7 @@
 #include "block.hpp"
 #include "complexity/complexity.hpp"
 #include "cosim.hpp"
+#include "report.hpp"
 #include "texunit/rtl_gen.hpp"
 #include "vector_file.hpp"
 
@@ -168,11 +169,20 @@ int main(int argc, char** argv) {
         return std::stoi(s) % 2 ? std::string() : std::string("must be odd");
       }, "ODD"));
 
+  std::vector<std::string> rep_blocks;
+  std::string rep_json, rep_plots;
+  auto* rep = app.add_subcommand("report", "error / cycles / area per block variant (docs/blocks/gaussian.md)");
+  rep->add_option("--blocks", rep_blocks, "clip_volume,gauss_weight,weight_table")->delimiter(',')->required();
+  rep->add_option("--json", rep_json, "write the rows as a JSON array");
+  rep->add_option("--plots", rep_plots, "directory for error_vs_cycles.png / error_vs_cells.png");
+  rep->add_option("--root", root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (*vec) return cmd_vectors(block, set, count, seed, out);
     if (*cos) return cmd_cosim(block, file, stall, seed, fst, json);
     if (*gen) return cmd_gen_rtl(root, check);
+    if (*rep) return tu::report::run(rep_blocks, rep_json, rep_plots, root);
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000);
   } catch (const std::exception& e) {

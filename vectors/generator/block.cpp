@@ -6,6 +6,7 @@
 namespace tu::blocks {
 
 Block make_reciprocal();  // reciprocal_block.cpp
+std::vector<Block> make_gauss_blocks();  // gauss_blocks.cpp
 Block make_pom_layers();  // pom_layers_block.cpp
 Block make_persp();       // persp_block.cpp
 
@@ -13,6 +14,7 @@ const std::vector<Block>& all() {
   static const std::vector<Block> blocks = [] {
     std::vector<Block> b;
     b.push_back(make_reciprocal());
+    for (auto& g : make_gauss_blocks()) b.push_back(std::move(g));
     b.push_back(make_pom_layers());
     b.push_back(make_persp());
     return b;

@@ -123,6 +123,7 @@ TableStats table_stats(int kind, int log2n, int step_code) {
       ++st.samples;
     }
   st.nmse = se / sw;
+  st.rms = std::sqrt(se / static_cast<double>(st.samples));
   st.memory_bits = kind == 0 ? t1.memory_bits() : kind == 1 ? t2.memory_bits() : 0;
   return st;
 }

@@ -52,6 +52,7 @@ uint32_t q_of(int32_t xi_code, int32_t eta_code);
 
 struct TableStats {
   double nmse = 0;     // sum (w_tab - w)^2 / sum w^2 over the sample grid
+  double rms = 0;      // sqrt(mean (w_tab - w)^2)
   double max_abs = 0;  // max |w_tab - w| (includes the 2^-8 step of w at the ellipse boundary)
   double max_abs_inner = 0;  // the same over samples with Q <= 0.9 (away from the step)
   uint64_t samples = 0;

@@ -1,0 +1,60 @@
+// Clip volume, degree-3 polynomial (mm_p3 coefficients), parallel / Estrin form (II = 1):
+//   stage 1: a2 = floor(a * a), u = floor(c3 * a), w = floor(c1 * a)   (three multipliers)
+//   stage 2: t = floor((c2 + u) * a2), s = c0 + w                      (one multiplier)
+//   stage 3: v = fold(round(s + t))
+// Four multipliers, latency ClipEstrinLatency = 3 (one less than Horner).
+module tu_clip_estrin (
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+  input  logic                                in_valid_i,
+  output logic                                in_ready_o,
+  input  logic [tu_formats_pkg::ClipInW-1:0]  d_i,
+  output logic                                out_valid_o,
+  input  logic                                out_ready_i,
+  output logic [tu_formats_pkg::ClipOutW-1:0] v_o
+);
+  localparam int unsigned AccW = tu_formats_pkg::ClipAccW;
+  localparam int unsigned AW   = tu_formats_pkg::ClipAW;
+  localparam int unsigned Lat  = tu_formats_pkg::ClipEstrinLatency;
+  localparam int unsigned F    = tu_formats_pkg::ClipCoefF;
+  logic en;
+  logic [Lat-1:0] stage_valid;
+  tu_pipe_valid #(.Depth(Lat)) u_ctrl (
+    .clk_i, .rst_ni, .in_valid_i, .in_ready_o, .out_valid_o, .out_ready_i,
+    .en_o(en), .stage_valid_o(stage_valid)
+  );
+
+  logic signed [tu_formats_pkg::ClipCoefW-1:0] c0, c1, c2, c3;
+  tu_clip_coef_mm3 u_coef (.c0_o(c0), .c1_o(c1), .c2_o(c2), .c3_o(c3));
+
+  logic [AW-1:0] a;
+  logic neg, neg_q1, neg_q2;
+  logic [2*AW-1:0] a2_full;
+  logic signed [AccW-1:0] a2, u, w, a2_q1, u_q1, w_q1, hi, t, s, t_q2, s_q2, acc;
+  logic signed [2*AccW-1:0] hp;
+  logic [tu_formats_pkg::ClipOutW-1:0] v_d, v_q3;
+  tu_clip_abs u_abs (.d_i, .a_o(a), .neg_o(neg));
+  // a * a has 2 * ClipInF fraction bits; floor to ClipCoefF (a^2 <= 1/4, no wrap).
+  assign a2_full = a * a;
+  assign a2 = AccW'(a2_full >> (2 * tu_formats_pkg::ClipInF - F));
+  tu_clip_mulfloor u_mu (.x_i(AccW'(c3)), .a_i(a), .y_o(u));
+  tu_clip_mulfloor u_mw (.x_i(AccW'(c1)), .a_i(a), .y_o(w));
+  assign hi  = AccW'(c2) + u_q1;
+  assign hp  = (2*AccW)'(hi) * (2*AccW)'(a2_q1);
+  assign t   = AccW'(hp >>> F);
+  assign s   = AccW'(c0) + w_q1;
+  assign acc = s_q2 + t_q2;
+  tu_clip_fold u_fold (.acc_i(acc), .neg_i(neg_q2), .v_o(v_d));
+
+  always_ff @(posedge clk_i) begin
+    if (en) begin
+      a2_q1 <= a2;  u_q1 <= u;  w_q1 <= w;  neg_q1 <= neg;
+      t_q2  <= t;   s_q2 <= s;              neg_q2 <= neg_q1;
+      v_q3  <= v_d;
+    end
+  end
+  assign v_o = v_q3;
+
+  logic unused_stage_valid;
+  assign unused_stage_valid = ^stage_valid;
+endmodule

@@ -1,0 +1,52 @@
+// Gaussian pixel-model weight w = (1 - Q/2)^8 (0 for Q > 1), three squarings, II = 1.
+//   stage 1: t = 1 - Q/2 (u16.15), s1 = round_half_up(t^2)  (u17.16)
+//   stage 2: s2 = round_half_up(s1^2)     stage 3: w = round_half_up(s2^2), 0 outside
+// Latency GaussLatency = 3.
+module tu_gauss_weight (
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+  input  logic                                in_valid_i,
+  output logic                                in_ready_o,
+  input  logic [tu_formats_pkg::GaussQW-1:0]  q_i,
+  output logic                                out_valid_o,
+  input  logic                                out_ready_i,
+  output logic [tu_formats_pkg::GaussSqW-1:0] w_o
+);
+  localparam int unsigned SqW = tu_formats_pkg::GaussSqW;
+  localparam int unsigned SqF = tu_formats_pkg::GaussSqF;
+  localparam int unsigned TW  = tu_formats_pkg::GaussTW;
+  localparam int unsigned TF  = tu_formats_pkg::GaussTF;
+  localparam int unsigned Lat = tu_formats_pkg::GaussLatency;
+  logic en;
+  logic [Lat-1:0] stage_valid;
+  tu_pipe_valid #(.Depth(Lat)) u_ctrl (
+    .clk_i, .rst_ni, .in_valid_i, .in_ready_o, .out_valid_o, .out_ready_i,
+    .en_o(en), .stage_valid_o(stage_valid)
+  );
+
+  logic out_d, out_q1, out_q2;
+  logic [TW-1:0] t;
+  logic [2*TW-1:0] p1;
+  logic [2*SqW-1:0] p2, p3;
+  logic [SqW-1:0] s1, s2, s3, s1_q, s2_q, w_q;
+  assign out_d = q_i > tu_formats_pkg::GaussQW'(1 << tu_formats_pkg::GaussQF);
+  assign t  = TW'(1 << TF) - TW'(q_i);  // Q/2 has TF fraction bits with Q's raw code
+  assign p1 = t * t;
+  assign s1 = SqW'((p1 + (2*TW)'(1 << (2*TF - SqF - 1))) >> (2*TF - SqF));
+  assign p2 = s1_q * s1_q;
+  assign s2 = SqW'((p2 + (2*SqW)'(1 << (SqF - 1))) >> SqF);
+  assign p3 = s2_q * s2_q;
+  assign s3 = SqW'((p3 + (2*SqW)'(1 << (SqF - 1))) >> SqF);
+
+  always_ff @(posedge clk_i) begin
+    if (en) begin
+      s1_q <= s1;  out_q1 <= out_d;
+      s2_q <= s2;  out_q2 <= out_q1;
+      w_q  <= out_q2 ? '0 : s3;
+    end
+  end
+  assign w_o = w_q;
+
+  logic unused_stage_valid;
+  assign unused_stage_valid = ^stage_valid;
+endmodule

@@ -1,0 +1,26 @@
+// `texunit report`: error / cycles / area / C-model speed per block variant (generic rows).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tu::report {
+
+struct Row {
+  std::string block, variant, scheme;
+  double max_abs_err = 0, rms_err = 0, max_ulp_err = 0;
+  int64_t latency_cycles = -1;  // -1: n/a
+  double ii_cycles = 0;
+  std::string cycles_source;    // "measured (Verilator ...)" or "estimated (graph)"
+  int64_t cells = -1, flip_flops = -1, multipliers = -1, memory_bits = -1;
+  std::string area_source = "n/a", rtl_top, notes;
+  double cmodel_ns_per_item = 0;
+  std::string json() const;
+};
+
+std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string& root, bool yosys);
+int run(const std::vector<std::string>& blocks, const std::string& json, const std::string& plots,
+        const std::string& root);
+
+}  // namespace tu::report

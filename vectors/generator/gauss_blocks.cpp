@@ -1,0 +1,130 @@
+// Vector sets for the Gaussian pixel-model blocks (docs/blocks/gaussian.md): the clip-volume
+// schemes (d s13.12 -> v u16.16, error |v - Phi(clamp(d)/0.2)|) and the weight (Q u16.14 ->
+// w u17.16, error |w - (1 - Q/2)^8|).
+#include <cmath>
+#include <random>
+
+#include "block.hpp"
+#include "gauss/clip.hpp"
+#include "gauss/weight.hpp"
+
+namespace tu::blocks {
+
+namespace {
+vec::Field F(const char* n, vec::Role r, const char* f) {
+  return vec::Field{n, r, vec::FieldFormat::parse(f)};
+}
+
+std::vector<Row> clip_inputs(const std::string& set, uint64_t count, uint64_t seed) {
+  const int w = fmt::kClipInW;
+  const uint64_t mask = (uint64_t(1) << w) - 1;
+  auto code = [&](int64_t d) { return Row{static_cast<uint64_t>(d) & mask}; };
+  std::vector<Row> rows;
+  const int64_t h = clip::kHalfCode;
+  if (set == "golden") {
+    for (int64_t d : {int64_t(0), int64_t(1), int64_t(-1), h / 2, -h / 2, h, -h, int64_t(689),
+                      int64_t(1244), int64_t(-1000), int64_t(4095), int64_t(-4096)})
+      rows.push_back(code(d));
+  } else if (set == "stiff") {
+    // Domain edges, clamping, sign, every seed and minimax breakpoint +-1, extremes.
+    for (int64_t d : {int64_t(0), int64_t(1), int64_t(-1), h - 1, h, h + 1, -h + 1, -h, -h - 1,
+                      int64_t(4095), int64_t(-4096), int64_t(-4095)})
+      rows.push_back(code(d));
+    for (int64_t b : {int64_t(676), int64_t(1249), int64_t(689), int64_t(1244)})
+      for (int64_t e = -1; e <= 1; ++e) {
+        rows.push_back(code(b + e));
+        rows.push_back(code(-(b + e)));
+      }
+  } else {
+    std::mt19937_64 rng(seed);
+    for (uint64_t i = 0; i < count; ++i) {
+      // 90% inside the domain, 10% anywhere.
+      const int64_t d = (rng() % 10) ? static_cast<int64_t>(rng() % (2 * h + 1)) - h
+                                     : static_cast<int64_t>(rng() & mask) - (int64_t(1) << (w - 1));
+      rows.push_back(code(d));
+    }
+  }
+  return rows;
+}
+
+Block make_clip(const std::string& name, const std::string& variant, const std::string& desc,
+                int latency, int ii) {
+  Block b;
+  b.name = name;
+  b.description = desc;
+  b.fields = {F("d", vec::Role::In, "s13.12"), F("v", vec::Role::Out, "u16.16"),
+              F("ref", vec::Role::Ref, "f64")};
+  b.sets = {"golden", "stiff", "random"};
+  b.inputs = clip_inputs;
+  const clip::Variant* v = &clip::variant(variant);
+  b.model = [v](const Row& in) {
+    return Row{clip::eval(*v, static_cast<int32_t>(vec::sext(in[0], fmt::kClipInW)))};
+  };
+  b.ref = [](const Row& in) {
+    const double d = std::ldexp(static_cast<double>(vec::sext(in[0], fmt::kClipInW)), -fmt::kClipInF);
+    return Row{vec::f64_bits(clip::reference(d))};
+  };
+  b.error = [](const Row&, const Row& out, const Row& ref) {
+    ErrPoint e;
+    e.abs = std::fabs(std::ldexp(static_cast<double>(out[0]), -fmt::kClipOutF) - vec::bits_f64(ref[0]));
+    e.ulp = e.abs / std::ldexp(1.0, -fmt::kClipOutF);
+    return e;
+  };
+  b.latency_cycles = latency;
+  b.ii_cycles = ii;
+  return b;
+}
+}  // namespace
+
+std::vector<Block> make_gauss_blocks() {
+  std::vector<Block> bs;
+  bs.push_back(make_clip("clip_p1", "mm_p1",
+                         "clip volume, 3-segment minimax lines: comparators + table + 1 MAC",
+                         fmt::kClipP1Latency, 1));
+  bs.push_back(make_clip("clip_horner", "mm_p3", "clip volume, degree-3 minimax, Horner pipelined",
+                         fmt::kClipHornerLatency, 1));
+  bs.push_back(make_clip("clip_estrin", "mm_p3_estrin",
+                         "clip volume, degree-3 minimax, Estrin (a^2 beside c1*a)",
+                         fmt::kClipEstrinLatency, 1));
+  bs.push_back(make_clip("clip_seq", "mm_p3", "clip volume, degree-3 minimax, one shared multiplier",
+                         fmt::kClipSeqLatency, fmt::kClipSeqIi));
+  Block w;
+  w.name = "gauss_weight";
+  w.description = "Gaussian weight (1 - Q/2)^8, three squarings, II = 1";
+  w.fields = {F("q", vec::Role::In, "u16.14"), F("w", vec::Role::Out, "u17.16"),
+              F("ref", vec::Role::Ref, "f64")};
+  w.sets = {"golden", "stiff", "random"};
+  w.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
+    std::vector<Row> rows;
+    const uint64_t one = uint64_t(1) << fmt::kGaussQF;
+    if (set == "golden") {
+      for (uint64_t q : {uint64_t(0), one / 2, one, one + 1, one / 4, uint64_t(12345), uint64_t(0xffff)})
+        rows.push_back({q});
+    } else if (set == "stiff") {
+      for (uint64_t q : {uint64_t(0), uint64_t(1), one - 1, one, one + 1, 2 * one, uint64_t(0xffff),
+                         uint64_t(0xfffe)})
+        rows.push_back({q});
+    } else {
+      std::mt19937_64 rng(seed);
+      for (uint64_t i = 0; i < count; ++i)
+        rows.push_back({(rng() % 5) ? rng() % (one + 1) : rng() & 0xffff});
+    }
+    return rows;
+  };
+  w.model = [](const Row& in) { return Row{gauss::weight(static_cast<uint32_t>(in[0]))}; };
+  w.ref = [](const Row& in) {
+    return Row{vec::f64_bits(gauss::weight_ref(std::ldexp(static_cast<double>(in[0]), -fmt::kGaussQF)))};
+  };
+  w.error = [](const Row&, const Row& out, const Row& ref) {
+    ErrPoint e;
+    e.abs = std::fabs(std::ldexp(static_cast<double>(out[0]), -fmt::kGaussSqF) - vec::bits_f64(ref[0]));
+    e.ulp = e.abs / std::ldexp(1.0, -fmt::kGaussSqF);
+    return e;
+  };
+  w.latency_cycles = fmt::kGaussLatency;
+  w.ii_cycles = 1;
+  bs.push_back(w);
+  return bs;
+}
+
+}  // namespace tu::blocks
