@@ -133,17 +133,25 @@ module tu_persp #(
   logic signed [ProdW:0]   rnd_u, rnd_v;
   logic [UW-1:0]           u_d, v_d, u_q8, v_q8;
   logic                    flag_q8;
-  function automatic logic [UW-1:0] sat(input logic signed [ProdW:0] x);
-    if (x > (ProdW+1)'(UMax)) return {1'b0, {(UW-1){1'b1}}};
-    if (x < (ProdW+1)'(UMin)) return {1'b1, {(UW-1){1'b0}}};
-    return UW'(x);
-  endfunction
+  localparam int unsigned XW = ProdW + 1;
+  localparam logic signed [XW-1:0] SatMax = XW'(UMax);
+  localparam logic signed [XW-1:0] SatMin = XW'(UMin);
+  localparam logic signed [XW-1:0] One = XW'(1);
+  localparam logic [UW-1:0] CodeMax = {1'b0, {(UW-1){1'b1}}};
+  localparam logic [UW-1:0] CodeMin = {1'b1, {(UW-1){1'b0}}};
+  logic signed [XW-1:0] pu_x, pv_x;
+  assign pu_x = {prod_u_q[ProdW-1], prod_u_q};
+  assign pv_x = {prod_v_q[ProdW-1], prod_v_q};
   always_comb begin
     sh    = 8'(tu_formats_pkg::RecipOutF) + 8'(e_q[CoreLat+1]) - 8'(tu_formats_pkg::PerspUvF);
-    rnd_u = ((ProdW+1)'(prod_u_q) + ((ProdW+1)'(1) << (sh - 8'd1))) >>> sh;
-    rnd_v = ((ProdW+1)'(prod_v_q) + ((ProdW+1)'(1) << (sh - 8'd1))) >>> sh;
-    u_d   = g_q[CoreLat+1] ? {1'b0, {(UW-1){1'b1}}} : sat(rnd_u);
-    v_d   = g_q[CoreLat+1] ? {1'b0, {(UW-1){1'b1}}} : sat(rnd_v);
+    rnd_u = (pu_x + (One << (sh - 8'd1))) >>> sh;
+    rnd_v = (pv_x + (One << (sh - 8'd1))) >>> sh;
+    if (g_q[CoreLat+1] || rnd_u > SatMax) u_d = CodeMax;
+    else if (rnd_u < SatMin)              u_d = CodeMin;
+    else                                  u_d = rnd_u[UW-1:0];
+    if (g_q[CoreLat+1] || rnd_v > SatMax) v_d = CodeMax;
+    else if (rnd_v < SatMin)              v_d = CodeMin;
+    else                                  v_d = rnd_v[UW-1:0];
   end
   always_ff @(posedge clk_i) begin
     if (en) begin
