@@ -45,7 +45,8 @@ void cycles(Row& r, const std::string& graph) {
   r.ii_cycles = pred.ii;
   r.cycles_source = "estimated (" + graph + ")";
   r.multipliers = pred.units_used.count("mul") ? pred.units_used.at("mul") : 0;
-  if (graph == "clip_seq") r.multipliers = 1;
+  const auto& lim = gauss::scheme(graph).limits;
+  if (lim.count("mul")) r.multipliers = std::min<int64_t>(r.multipliers, lim.at("mul"));
   try {
     const auto& b = blocks::find(graph);
     std::vector<cosim::Row> in = b.inputs("random", 64, 3);
