@@ -30,16 +30,6 @@ module tu_persp #(
 );
   localparam int unsigned PW = tu_formats_pkg::PerspPW;
   localparam int unsigned QW = tu_formats_pkg::PerspQW;
-  localparam int unsigned MW = tu_formats_pkg::RecipMantW;
-  localparam int unsigned RW = tu_formats_pkg::RecipOutW;
-  localparam int unsigned UW = tu_formats_pkg::PerspUvW;
-  localparam int unsigned EW = 6;                 // msb position of q, 0..QW-2
-  localparam int unsigned ProdW = PW + RW + 1;    // signed p * unsigned R
-  localparam int unsigned CoreLat = 4;
-  localparam logic [QW-1:0] GuardVal = QW'(1) << (tu_formats_pkg::PerspF - tu_formats_pkg::PerspGuardLog2);
-  localparam logic signed [ProdW-1:0] UMax = ProdW'({1'b0, {(UW-1){1'b1}}});
-  localparam logic signed [ProdW-1:0] UMin = -ProdW'({1'b1, {(UW-1){1'b0}}});
-
   logic                                    en, accept;
   logic [tu_formats_pkg::PerspLatency-1:0] stage_valid;
 
@@ -75,95 +65,11 @@ module tu_persp #(
     end
   end
 
-  // ---- S2: guard, leading-one detect, normalise (truncate to MW bits)
-  logic          guard;
-  logic [EW-1:0] msb;
-  logic [QW-1:0] nrm;
-  always_comb begin
-    guard = q_q1[QW-1] || (q_q1 < GuardVal);
-    msb = '0;
-    for (int i = 0; i < QW - 1; i++) begin
-      if (q_q1[i]) msb = EW'(i);
-    end
-    nrm = q_q1 << (QW - 1 - 32'(msb));
-  end
-
-  logic [MW-1:0] m_q2;
-  logic [EW-1:0] e_q [CoreLat+2];
-  logic          g_q [CoreLat+2];
-  logic [PW-1:0] pu_q [CoreLat+1];
-  logic [PW-1:0] pv_q [CoreLat+1];
-  always_ff @(posedge clk_i) begin
-    if (en) begin
-      m_q2    <= nrm[QW-1 -: MW];
-      e_q[0]  <= msb;
-      g_q[0]  <= guard;
-      pu_q[0] <= pu_q1;
-      pv_q[0] <= pv_q1;
-      for (int i = 1; i <= CoreLat; i++) begin
-        e_q[i]  <= e_q[i-1];
-        g_q[i]  <= g_q[i-1];
-        pu_q[i] <= pu_q[i-1];
-        pv_q[i] <= pv_q[i-1];
-      end
-      e_q[CoreLat+1] <= e_q[CoreLat];
-      g_q[CoreLat+1] <= g_q[CoreLat];
-    end
-  end
-  // pu_q[CoreLat] lines up with the core output (S6); e_q/g_q[CoreLat+1] with the products (S7).
-
-  // ---- S3..S6: reciprocal core
-  logic [RW-1:0] r;
-  tu_recip_core u_core (.clk_i, .en_i(en), .m_i(m_q2), .r_o(r));
-
-  // ---- S7: two multiplies
-  logic signed [ProdW-1:0] r_ext, pu_ext, pv_ext, prod_u_q, prod_v_q;
-  assign r_ext  = ProdW'({1'b0, r});
-  assign pu_ext = ProdW'($signed(pu_q[CoreLat]));
-  assign pv_ext = ProdW'($signed(pv_q[CoreLat]));
-  always_ff @(posedge clk_i) begin
-    if (en) begin
-      prod_u_q <= pu_ext * r_ext;
-      prod_v_q <= pv_ext * r_ext;
-    end
-  end
-
-  // ---- S8: shift by the exponent, round half up, saturate
-  logic [7:0]              sh;
-  logic signed [ProdW:0]   rnd_u, rnd_v;
-  logic [UW-1:0]           u_d, v_d, u_q8, v_q8;
-  logic                    flag_q8;
-  localparam int unsigned XW = ProdW + 1;
-  localparam logic signed [XW-1:0] SatMax = XW'(UMax);
-  localparam logic signed [XW-1:0] SatMin = XW'(UMin);
-  localparam logic signed [XW-1:0] One = XW'(1);
-  localparam logic [UW-1:0] CodeMax = {1'b0, {(UW-1){1'b1}}};
-  localparam logic [UW-1:0] CodeMin = {1'b1, {(UW-1){1'b0}}};
-  logic signed [XW-1:0] pu_x, pv_x;
-  assign pu_x = {prod_u_q[ProdW-1], prod_u_q};
-  assign pv_x = {prod_v_q[ProdW-1], prod_v_q};
-  always_comb begin
-    sh    = 8'(tu_formats_pkg::RecipOutF) + 8'(e_q[CoreLat+1]) - 8'(tu_formats_pkg::PerspUvF);
-    rnd_u = (pu_x + (One << (sh - 8'd1))) >>> sh;
-    rnd_v = (pv_x + (One << (sh - 8'd1))) >>> sh;
-    if (g_q[CoreLat+1] || rnd_u > SatMax) u_d = CodeMax;
-    else if (rnd_u < SatMin)              u_d = CodeMin;
-    else                                  u_d = rnd_u[UW-1:0];
-    if (g_q[CoreLat+1] || rnd_v > SatMax) v_d = CodeMax;
-    else if (rnd_v < SatMin)              v_d = CodeMin;
-    else                                  v_d = rnd_v[UW-1:0];
-  end
-  always_ff @(posedge clk_i) begin
-    if (en) begin
-      u_q8    <= u_d;
-      v_q8    <= v_d;
-      flag_q8 <= g_q[CoreLat+1];
-    end
-  end
-  assign u_o    = u_q8;
-  assign v_o    = v_q8;
-  assign flag_o = flag_q8;
+  // ---- S2..S8: per-pixel back end
+  tu_persp_pixel u_pixel (
+    .clk_i, .en_i(en), .pu_i(pu_q1), .pv_i(pv_q1), .q_i(q_q1), .u_o, .v_o, .flag_o
+  );
 
   logic unused;
-  assign unused = ^{stage_valid, nrm[QW-MW-1:0]};  // truncated mantissa bits
+  assign unused = ^stage_valid;
 endmodule

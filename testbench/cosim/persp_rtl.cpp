@@ -2,6 +2,7 @@
 // block "persp") and rtl/persp/tu_persp_direct.sv (direct evaluation, same ports and vectors).
 #include "Vtu_persp.h"
 #include "Vtu_persp_direct.h"
+#include "Vtu_persp_klane.h"
 #include "cosim.hpp"
 
 namespace tu::cosim {
@@ -33,5 +34,36 @@ RtlBlock bind(const std::string& name) {
 
 RtlBlock rtl_persp() { return bind<Vtu_persp>("persp"); }
 RtlBlock rtl_persp_direct() { return bind<Vtu_persp_direct>("persp"); }
+
+// k-lane unit (K = 4): one transaction = 4 pixels; outputs per lane j: u_j, v_j, flag_j.
+RtlBlock rtl_persp_k4() {
+  auto drive = [](Vtu_persp_klane& d, const Row& in) {
+    d.pu0_i = in[0];
+    d.pv0_i = in[1];
+    d.q0_i = in[2];
+    d.a_i = in[3];
+    d.d_i = in[4];
+    d.g_i = in[5];
+    d.n_i = static_cast<uint16_t>(in[6]);
+  };
+  auto sample = [](Vtu_persp_klane& d) {
+    Row r;
+    for (int j = 0; j < 4; ++j) {
+      r.push_back(d.u_o[j]);
+      r.push_back(d.v_o[j]);
+      r.push_back((d.flag_o >> j) & 1u);
+    }
+    return r;
+  };
+  RtlBlock b;
+  b.name = "persp_k4";
+  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
+    return Harness<Vtu_persp_klane>(drive, sample).run(in, o);
+  };
+  b.timing = [=](const std::vector<Row>& in) {
+    return Harness<Vtu_persp_klane>(drive, sample).measure_timing(in);
+  };
+  return b;
+}
 
 }  // namespace tu::cosim

@@ -9,6 +9,7 @@ Block make_reciprocal();  // reciprocal_block.cpp
 std::vector<Block> make_gauss_blocks();  // gauss_blocks.cpp
 Block make_pom_layers();  // pom_layers_block.cpp
 Block make_persp();       // persp_block.cpp
+Block make_persp_k4();    // persp_block.cpp
 
 const std::vector<Block>& all() {
   static const std::vector<Block> blocks = [] {
@@ -17,6 +18,7 @@ const std::vector<Block>& all() {
     for (auto& g : make_gauss_blocks()) b.push_back(std::move(g));
     b.push_back(make_pom_layers());
     b.push_back(make_persp());
+    b.push_back(make_persp_k4());
     return b;
   }();
   return blocks;

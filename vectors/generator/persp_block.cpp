@@ -141,17 +141,64 @@ std::vector<Row> random_inputs(uint64_t count, uint64_t seed) {
   return rows;
 }
 
+// C model of the pixel at span offset n (n may run past 4095 in the last k-lane group).
+Row model_at(const Row& in, int64_t n) {
+  using N = UFixed<fmt::kPerspXyW + 1, 0>;
+  const N nf = N::from_raw(n);
+  const P pu = (P::from_bits(in[0]) + P::from_bits(in[3]) * nf).as<P>();
+  const P pv = (P::from_bits(in[1]) + P::from_bits(in[4]) * nf).as<P>();
+  const Q q = (Q::from_bits(in[2]) + Q::from_bits(in[5]) * nf).as<Q>();
+  const persp::Pixel px = Unit::pixel({pu, pv, q});
+  return Row{Uv::from_raw(px.u).bits(), Uv::from_raw(px.v).bits(), px.flag ? 1u : 0u};
+}
+
 struct Eval {
   long double pu, pv, q;
   bool guarded;
 };
-Eval eval_row(const Row& in) {
-  const i128 n = static_cast<i128>(in[6]);
+Eval eval_row(const Row& in, int64_t offset = 0) {
+  const i128 n = static_cast<i128>(in[6]) + offset;
   const i128 pu = vec::sext(in[0], kPW) + n * vec::sext(in[3], kPW);
   const i128 pv = vec::sext(in[1], kPW) + n * vec::sext(in[4], kPW);
   const i128 q = vec::sext(in[2], kQW) + n * vec::sext(in[5], kQW);
   return {static_cast<long double>(pu), static_cast<long double>(pv), static_cast<long double>(q),
           q < kGuard};
+}
+Row ref_at(const Row& in, int64_t off) {
+  const Eval e = eval_row(in, off);
+  if (e.guarded) return Row{vec::f64_bits(INFINITY), vec::f64_bits(INFINITY)};
+  return Row{vec::f64_bits(static_cast<double>(e.pu / e.q)),
+             vec::f64_bits(static_cast<double>(e.pv / e.q))};
+}
+
+// Error of one pixel (offset `off` from the row's n) against the exact rational reference.
+ErrPoint pixel_error(const Row& in, const Row& out, const Row& ref, int64_t off) {
+  ErrPoint e;
+  const double ur = vec::bits_f64(ref[0]), vr = vec::bits_f64(ref[1]);
+  const bool guarded = eval_row(in, off).guarded;
+  const uint64_t sat = Uv::from_raw(Uv::kMaxRaw).bits();
+  if (guarded) {  // must be flagged and saturated
+    const bool ok = out[2] == 1 && out[0] == sat && out[1] == sat && std::isinf(ur);
+    e.valid = !ok;
+    e.abs = e.ulp = ok ? 0 : INFINITY;
+    return e;
+  }
+  if (out[2] != 0) {
+    e.abs = e.ulp = INFINITY;
+    return e;
+  }
+  // The error bound (docs/blocks/persp.md) is stated for |u|, |v| <= 4096 texels; the stiff
+  // set's format-limit pixels (|u| up to 2^23) are checked bit-exactly but left out of the
+  // error statistics (counted under "flagged").
+  if (std::fabs(ur) > kUvDomain || std::fabs(vr) > kUvDomain) {
+    e.valid = false;
+    return e;
+  }
+  const double u = std::ldexp(static_cast<double>(vec::sext(out[0], fmt::kPerspUvW)), -fmt::kPerspUvF);
+  const double v = std::ldexp(static_cast<double>(vec::sext(out[1], fmt::kPerspUvW)), -fmt::kPerspUvF);
+  e.abs = std::max(std::fabs(u - ur), std::fabs(v - vr));
+  e.ulp = std::ldexp(e.abs, fmt::kPerspUvF);
+  return e;
 }
 }  // namespace
 
@@ -180,46 +227,84 @@ Block make_persp() {
     if (set == "stiff") return stiff_inputs();
     return random_inputs(count, seed);
   };
+  b.model = [](const Row& in) { return model_at(in, static_cast<int64_t>(in[6])); };
+  b.ref = [](const Row& in) { return ref_at(in, 0); };
+  b.error = [](const Row& in, const Row& out, const Row& ref) { return pixel_error(in, out, ref, 0); };
+  b.latency_cycles = fmt::kPerspLatency;
+  b.ii_cycles = 1;
+  b.err_metric = "max_texel_err";
+  return b;
+}
+
+
+// ---------------- k-lane unit (rtl/persp/tu_persp_klane.sv), K = 4 ----------------
+// One vector = a group of 4 consecutive pixels of a span starting at offset n (a multiple of 4),
+// taken from the persp sets; a span's last group may run past its end and is kept while those
+// pixels still fit the accumulator formats (the RTL computes all 4 lanes).
+namespace {
+constexpr int kLanes = 4;
+bool group_fits(const Row& in) {
+  const i128 n = static_cast<i128>(in[6]) + kLanes - 1;
+  auto fits = [](i128 v, int w) { return v >= -(i128(1) << (w - 1)) && v < (i128(1) << (w - 1)); };
+  return fits(vec::sext(in[0], kPW) + n * vec::sext(in[3], kPW), kPW) &&
+         fits(vec::sext(in[1], kPW) + n * vec::sext(in[4], kPW), kPW) &&
+         fits(vec::sext(in[2], kQW) + n * vec::sext(in[5], kQW), kQW);
+}
+}  // namespace
+
+Block make_persp_k4() {
+  const Block px = make_persp();
+  Block b;
+  b.name = "persp_k4";
+  b.description = "perspective divide, 4 lanes: 4 pixels per clock (p_n = p_{n-4} + 4A), II = 1";
+  auto F = [](const std::string& n, vec::Role r, const std::string& f) {
+    return vec::Field{n, r, vec::FieldFormat::parse(f)};
+  };
+  b.fields.assign(px.fields.begin(), px.fields.begin() + 7);
+  const std::string uvf = "s" + std::to_string(fmt::kPerspUvW) + "." + std::to_string(fmt::kPerspUvF);
+  for (int j = 0; j < kLanes; ++j) {
+    const std::string k = std::to_string(j);
+    b.fields.push_back(F("u" + k, vec::Role::Out, uvf));
+    b.fields.push_back(F("v" + k, vec::Role::Out, uvf));
+    b.fields.push_back(F("flag" + k, vec::Role::Out, "u1.0"));
+  }
+  for (int j = 0; j < kLanes; ++j) {
+    b.fields.push_back(F("uref" + std::to_string(j), vec::Role::Ref, "f64"));
+    b.fields.push_back(F("vref" + std::to_string(j), vec::Role::Ref, "f64"));
+  }
+  b.sets = px.sets;
+  b.inputs = [px](const std::string& set, uint64_t count, uint64_t seed) {
+    std::vector<Row> rows;
+    for (const auto& r : px.inputs(set, count * kLanes, seed))
+      if (r[6] % kLanes == 0 && group_fits(r)) rows.push_back(r);
+    if (set == "random" && rows.size() > count) rows.resize(count);
+    return rows;
+  };
   b.model = [](const Row& in) {
-    const Xy n = Xy::from_raw(static_cast<int64_t>(in[6]));
-    const P pu = (P::from_bits(in[0]) + P::from_bits(in[3]) * n).as<P>();
-    const P pv = (P::from_bits(in[1]) + P::from_bits(in[4]) * n).as<P>();
-    const Q q = (Q::from_bits(in[2]) + Q::from_bits(in[5]) * n).as<Q>();
-    const persp::Pixel px = Unit::pixel({pu, pv, q});
-    return Row{Uv::from_raw(px.u).bits(), Uv::from_raw(px.v).bits(), px.flag ? 1u : 0u};
+    Row out;
+    for (int j = 0; j < kLanes; ++j)
+      for (uint64_t c : model_at(in, static_cast<int64_t>(in[6]) + j)) out.push_back(c);
+    return out;
   };
   b.ref = [](const Row& in) {
-    const Eval e = eval_row(in);
-    if (e.guarded) return Row{vec::f64_bits(INFINITY), vec::f64_bits(INFINITY)};
-    return Row{vec::f64_bits(static_cast<double>(e.pu / e.q)),
-               vec::f64_bits(static_cast<double>(e.pv / e.q))};
+    Row out;
+    for (int j = 0; j < kLanes; ++j)
+      for (uint64_t c : ref_at(in, j)) out.push_back(c);
+    return out;
   };
   b.error = [](const Row& in, const Row& out, const Row& ref) {
     ErrPoint e;
-    const double ur = vec::bits_f64(ref[0]), vr = vec::bits_f64(ref[1]);
-    const bool guarded = eval_row(in).guarded;
-    const uint64_t sat = Uv::from_raw(Uv::kMaxRaw).bits();
-    if (guarded) {  // must be flagged and saturated
-      const bool ok = out[2] == 1 && out[0] == sat && out[1] == sat && std::isinf(ur);
-      e.valid = !ok;
-      e.abs = e.ulp = ok ? 0 : INFINITY;
-      return e;
+    e.valid = false;
+    for (int j = 0; j < kLanes; ++j) {
+      const Row o(out.begin() + 3 * j, out.begin() + 3 * j + 3);
+      const Row r(ref.begin() + 2 * j, ref.begin() + 2 * j + 2);
+      const ErrPoint p = pixel_error(in, o, r, j);
+      if (std::isinf(p.abs)) return p;  // wrong guard / flag: infinite error
+      if (!p.valid) continue;
+      e.valid = true;
+      e.abs = std::max(e.abs, p.abs);
+      e.ulp = std::max(e.ulp, p.ulp);
     }
-    if (out[2] != 0) {
-      e.abs = e.ulp = INFINITY;
-      return e;
-    }
-    // The error bound (docs/blocks/persp.md) is stated for |u|, |v| <= 4096 texels; the stiff
-    // set's format-limit pixels (|u| up to 2^23) are checked bit-exactly but left out of the
-    // error statistics (counted under "flagged").
-    if (std::fabs(ur) > kUvDomain || std::fabs(vr) > kUvDomain) {
-      e.valid = false;
-      return e;
-    }
-    const double u = std::ldexp(static_cast<double>(vec::sext(out[0], fmt::kPerspUvW)), -fmt::kPerspUvF);
-    const double v = std::ldexp(static_cast<double>(vec::sext(out[1], fmt::kPerspUvW)), -fmt::kPerspUvF);
-    e.abs = std::max(std::fabs(u - ur), std::fabs(v - vr));
-    e.ulp = std::ldexp(e.abs, fmt::kPerspUvF);
     return e;
   };
   b.latency_cycles = fmt::kPerspLatency;
