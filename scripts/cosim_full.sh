@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Full co-simulation of one block: stiff, golden and 1,000,000 random vectors, 30% stalls.
-# Usage: scripts/cosim_full.sh BLOCK [COUNT]
+# Usage: scripts/cosim_full.sh BLOCK [COUNT]      (TU_TEXUNIT=path/to/texunit to use another build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 block=${1:?usage: scripts/cosim_full.sh BLOCK [COUNT]}
 count=${2:-1000000}
-tu=build/default/tools/texunit/texunit
-[ -x "$tu" ] || { cmake --preset default >/dev/null && cmake --build --preset default --target texunit; }
+tu=${TU_TEXUNIT:-build/default/tools/texunit/texunit}
+[ -n "${TU_TEXUNIT:-}" ] || [ -x "$tu" ] || { cmake --preset default >/dev/null && cmake --build --preset default --target texunit; }
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 for set in golden stiff random; do
