@@ -110,7 +110,7 @@ segment:
 }  // namespace
 
 std::map<std::string, std::string> generated_rtl() {
-  return {{"rtl/generated/tu_formats_pkg.sv", formats_pkg()},
+  return {{"rtl/0_pkg/tu_formats_pkg.sv", formats_pkg()},
           {"rtl/generated/tu_clip_coef_mm3.sv", clip_roms(false)},
           {"rtl/generated/tu_clip_seg_mm1.sv", clip_roms(true)},
           {"rtl/generated/tu_pom_f_rom.sv", pom_f_rom()},

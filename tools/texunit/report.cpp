@@ -62,7 +62,7 @@ void cycles(Row& r, const std::string& graph) {
 void area(Row& r, const std::string& root) {
   if (r.rtl_top.empty()) return;
   const std::string rtl = root + "/rtl/";
-  std::string files = rtl + "generated/tu_formats_pkg.sv " + rtl + "common/tu_pipe_valid.sv ";
+  std::string files = rtl + "0_pkg/tu_formats_pkg.sv " + rtl + "common/tu_pipe_valid.sv ";
   for (const char* f : {"generated/tu_clip_coef_mm3.sv", "generated/tu_clip_seg_mm1.sv",
                         "gauss/tu_clip_abs.sv", "gauss/tu_clip_fold.sv", "gauss/tu_clip_mulfloor.sv"})
     files += rtl + f + " ";

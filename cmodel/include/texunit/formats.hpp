@@ -1,5 +1,5 @@
 // texunit formats: the ONE description of word lengths, fraction bits and constants shared by the
-// C model and the RTL. `texunit gen-rtl` writes rtl/generated/tu_formats_pkg.sv from this list;
+// C model and the RTL. `texunit gen-rtl` writes rtl/0_pkg/tu_formats_pkg.sv from this list;
 // the test GeneratedRtl.IsFresh fails when the committed package differs from this file.
 //
 // Naming: <Block><Signal><W|F>; W = word length, F = fraction bits. Signedness is in the comment
@@ -49,7 +49,7 @@
   X(GaussSqF, 16, "")                                                                           \
   X(GaussLatency, 3, "three squarings, one per stage, II = 1")                                  \
   X(WtabEntryW, 16, "weight-table entry: unsigned, WtabEntryW fraction bits, saturating")       \
-  X(RecipLatency, 5, "pipeline latency in cycles, II = 1")                                     \
+  X(RecipLatency, 5, "pipeline latency in cycles, II = 1")                        \
   /* Adaptive POM layer counter (docs/blocks/relief.md) */                                     \
   X(PomVzW, 16, "view-vector z: signed, PomVzF fraction bits (|Vz| > 1 saturates to 1)")        \
   X(PomVzF, 14, "")                                                                             \
