@@ -15,27 +15,27 @@
 
 namespace tu::img {
 
-Gray8 read_png_channel0(const std::string& path) {
+namespace {
+using StbData = std::unique_ptr<stbi_uc, void (*)(void*)>;
+
+// Loads a PNG with `want` channels (0: as stored); n receives the stored channel count.
+StbData load(const std::string& path, int want, int& w, int& h, int& n) {
   if (!std::filesystem::is_regular_file(path))
     throw std::runtime_error(path + ": no such file");
-  int w = 0, h = 0, n = 0;
-  std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(path.c_str(), &w, &h, &n, 0),
-                                                stbi_image_free);
+  StbData data(stbi_load(path.c_str(), &w, &h, &n, want), stbi_image_free);
   if (!data)
     throw std::runtime_error(path + ": cannot read PNG (" + std::string(stbi_failure_reason()) +
                              ")");
   if (w <= 0 || h <= 0 || n <= 0) throw std::runtime_error(path + ": empty image");
-  Gray8 im(w, h);
-  for (size_t i = 0; i < im.px.size(); ++i) im.px[i] = data.get()[i * static_cast<size_t>(n)];
-  return im;
+  return data;
 }
 
-void write_png_gray(const std::string& path, const Gray8& im) {
-  if (im.width <= 0 || im.height <= 0 ||
-      im.px.size() != static_cast<size_t>(im.width) * static_cast<size_t>(im.height))
+void write_png(const std::string& path, int w, int h, int channels, const void* data,
+               size_t size) {
+  if (w <= 0 || h <= 0 || size != static_cast<size_t>(w) * static_cast<size_t>(h))
     throw std::runtime_error(path + ": refusing to write an empty or inconsistent image");
   const std::string tmp = path + ".tmp";
-  if (!stbi_write_png(tmp.c_str(), im.width, im.height, 1, im.px.data(), im.width)) {
+  if (!stbi_write_png(tmp.c_str(), w, h, channels, data, w * channels)) {
     std::remove(tmp.c_str());
     throw std::runtime_error(path + ": cannot write PNG");
   }
@@ -45,6 +45,35 @@ void write_png_gray(const std::string& path, const Gray8& im) {
     std::remove(tmp.c_str());
     throw std::runtime_error(path + ": cannot write PNG (" + ec.message() + ")");
   }
+}
+}  // namespace
+
+Gray8 read_png_channel0(const std::string& path) {
+  int w = 0, h = 0, n = 0;
+  const StbData data = load(path, 0, w, h, n);
+  Gray8 im(w, h);
+  for (size_t i = 0; i < im.px.size(); ++i) im.px[i] = data.get()[i * static_cast<size_t>(n)];
+  return im;
+}
+
+void write_png_gray(const std::string& path, const Gray8& im) {
+  write_png(path, im.width, im.height, 1, im.px.data(), im.px.size());
+}
+
+Rgba8Image read_png_rgba(const std::string& path) {
+  int w = 0, h = 0, n = 0;
+  const StbData data = load(path, 4, w, h, n);
+  Rgba8Image im(w, h);
+  for (size_t i = 0; i < im.px.size(); ++i) {
+    const stbi_uc* p = data.get() + 4 * i;
+    im.px[i] = {p[0], p[1], p[2], p[3]};
+  }
+  return im;
+}
+
+void write_png_rgba(const std::string& path, const Rgba8Image& im) {
+  static_assert(sizeof(Rgba8) == 4, "Rgba8 must be packed RGBA");
+  write_png(path, im.width, im.height, 4, im.px.data(), im.px.size());
 }
 
 }  // namespace tu::img

@@ -64,6 +64,10 @@ package tu_formats_pkg;
   localparam int unsigned PerspGuardLog2 = 10;  // guard: q < 2^-PerspGuardLog2 (incl. q <= 0) -> flag, u, v saturated
   localparam int unsigned PerspUvW = 32;  // u, v: signed texels, PerspUvF fraction bits, round half up, saturate
   localparam int unsigned PerspUvF = 8;
+  localparam int unsigned TexUvF = 8;  // texel coordinates: fraction bits of the B1 output
+  localparam int unsigned TexWeightF = 8;  // bilinear weights out of 2^TexWeightF (truncated from TexUvF bits)
+  localparam int unsigned TexLodF = 8;  // LOD fraction bits: trilinear blend weight
+  localparam int unsigned TexMaxLevels = 13;  // mip levels: up to 4096 texels on a side
   localparam int unsigned PerspLatency = 8;  // per-pixel pipeline latency in cycles, II = 1
   /* verilator lint_on UNUSEDPARAM */
 endpackage

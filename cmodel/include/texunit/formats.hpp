@@ -74,6 +74,11 @@
   X(PerspGuardLog2, 10, "guard: q < 2^-PerspGuardLog2 (incl. q <= 0) -> flag, u, v saturated")  \
   X(PerspUvW, 32, "u, v: signed texels, PerspUvF fraction bits, round half up, saturate")       \
   X(PerspUvF, 8, "")                                                                            \
+  /* Textures and baseline filters (docs/blocks/texture.md) */                                 \
+  X(TexUvF, kPerspUvF, "texel coordinates: fraction bits of the B1 output")                  \
+  X(TexWeightF, 8, "bilinear weights out of 2^TexWeightF (truncated from TexUvF bits)")     \
+  X(TexLodF, 8, "LOD fraction bits: trilinear blend weight")                                 \
+  X(TexMaxLevels, 13, "mip levels: up to 4096 texels on a side")                             \
   X(PerspLatency, 8, "per-pixel pipeline latency in cycles, II = 1")
 
 namespace tu::fmt {

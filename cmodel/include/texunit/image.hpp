@@ -20,6 +20,28 @@ struct Gray8 {
   uint8_t at(int x, int y) const { return px[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)]; }
 };
 
+// Row-major RGBA8 image (textures, rendered frames, error heat maps).
+struct Rgba8 {
+  uint8_t r = 0, g = 0, b = 0, a = 255;
+  friend bool operator==(const Rgba8&, const Rgba8&) = default;
+};
+struct Rgba8Image {
+  int width = 0;
+  int height = 0;
+  std::vector<Rgba8> px;  // width * height
+  Rgba8Image() = default;
+  Rgba8Image(int w, int h, Rgba8 fill = {})
+      : width(w), height(h), px(static_cast<size_t>(w) * static_cast<size_t>(h), fill) {}
+  Rgba8& at(int x, int y) { return px[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)]; }
+  const Rgba8& at(int x, int y) const { return px[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)]; }
+};
+
+// Reads any 8/16-bit PNG as RGBA8 (grey and grey+alpha are expanded, missing alpha is 255).
+// Throws std::runtime_error naming the file on a missing or malformed file.
+Rgba8Image read_png_rgba(const std::string& path);
+// Writes an RGBA8 PNG atomically (temporary file + rename). Throws naming the file.
+void write_png_rgba(const std::string& path, const Rgba8Image& im);
+
 // Reads a PNG and returns its first colour channel (R; grey for grey images) as 8 bits
 // (16-bit PNGs are reduced to 8 bits by stb_image: code16 >> 8). Throws std::runtime_error naming
 // the file on a missing or malformed file.
