@@ -1,0 +1,89 @@
+// Scenes: the documented JSON format (docs/scene-format.md) the render, dump and plan commands
+// read. Loading validates everything up front: a malformed file, an unknown field, a wrong type,
+// an out-of-range value or a missing texture file is a SceneError whose message names the file,
+// the line (for syntax errors) or the field as a JSON pointer (e.g. `/objects/1/material`).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "persp/persp.hpp"
+#include "texture/texture.hpp"
+
+namespace tu::scene {
+
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+enum class Filter { Nearest, Bilinear, Trilinear, Ewa };
+enum class WeightSource { Formula, Table1d, Table2d };
+enum class ReliefMethod { PomFixed, PomAdaptive, Iterative };
+
+struct Relief {
+  std::string height_texture;  // its first channel is the height (255 = top)
+  double scale = 0.05;         // depth of the relief in texture-space units (uv of the texture)
+  ReliefMethod method = ReliefMethod::PomAdaptive;
+  int layers = 16;             // PomFixed: N; PomAdaptive: Nmax (Nmin = 4); Iterative: cap
+};
+
+struct Material {
+  std::string name;
+  std::string texture;
+  Filter filter = Filter::Ewa;
+  WeightSource weights = WeightSource::Formula;
+  double max_aniso = 16;
+  std::optional<Relief> relief;
+};
+
+struct TextureSpec {
+  std::string name;
+  std::string builtin;  // "checkerboard" | "bricks" | "" (PNG)
+  std::string png;      // resolved path
+  int size = 256;
+  int cells = 8;
+  tex::Wrap wrap = tex::Wrap::Repeat;
+};
+
+struct Object {
+  std::string name;
+  std::string material;
+  std::vector<persp::Triangle> triangles;  // uv in texture repeats (1 = the texture's width)
+};
+
+// The object's triangles with uv in level-0 texels of a tex_width x tex_height texture.
+std::vector<persp::Triangle> in_texels(const Object& o, int tex_width, int tex_height);
+
+struct Budget {
+  double max_texel_err = 1.0 / 16;  // texture-coordinate error, texels
+  double min_psnr_db = 35;          // image quality against the float EWA reference
+};
+
+struct Scene {
+  std::string source;  // file name or "<default>"
+  persp::Camera camera;
+  std::map<std::string, TextureSpec> textures;
+  std::map<std::string, Material> materials;
+  std::vector<Object> objects;
+  Budget budget;
+};
+
+// Parse and validate; `source` names the file in messages, `base_dir` resolves relative PNG paths.
+Scene parse(const std::string& json_text, const std::string& source, const std::string& base_dir);
+Scene load(const std::string& path);
+// The embedded default scene: a checkerboard ground plane receding to the horizon and a tilted
+// brick wall with relief (grazing angles and strong anisotropy on purpose).
+const std::string& default_scene_json();
+Scene default_scene();
+
+// Builds the texture named `name` (procedural or PNG) with its mip pyramid.
+tex::Texture build_texture(const Scene& s, const std::string& name);
+
+const char* to_string(Filter f);
+const char* to_string(WeightSource w);
+const char* to_string(ReliefMethod m);
+
+}  // namespace tu::scene

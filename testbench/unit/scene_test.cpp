@@ -1,0 +1,94 @@
+// Scene format: the default scene, and every kind of bad input rejected with file + field.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "texunit/scene.hpp"
+
+namespace {
+using namespace tu::scene;
+
+std::string error_of(const std::string& text) {
+  try {
+    parse(text, "s.json", ".");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The default scene with one substitution applied (must match exactly once).
+std::string edited(const std::string& from, const std::string& to) {
+  std::string s = default_scene_json();
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  EXPECT_EQ(s.find(from, at + 1), std::string::npos) << from;
+  return s.replace(at, from.size(), to);
+}
+
+TEST(Scene, DefaultSceneLoads) {
+  const Scene s = default_scene();
+  EXPECT_EQ(s.camera.width, 256);
+  EXPECT_EQ(s.objects.size(), 2u);
+  EXPECT_EQ(s.objects[0].triangles.size(), 2u);
+  EXPECT_EQ(s.materials.at("wall").weights, WeightSource::Table1d);
+  ASSERT_TRUE(s.materials.at("wall").relief.has_value());
+  EXPECT_EQ(s.materials.at("wall").relief->method, ReliefMethod::PomAdaptive);
+  EXPECT_FALSE(s.materials.at("ground").relief.has_value());
+  EXPECT_DOUBLE_EQ(s.budget.max_texel_err, 0.0625);
+  const auto t = build_texture(s, "checker");
+  EXPECT_EQ(t.levels[0].width, 256);
+  const auto tris = in_texels(s.objects[0], 256, 256);
+  EXPECT_DOUBLE_EQ(tris[0].v[1].uv[0], 4 * 256.0);
+}
+
+TEST(Scene, BadInputNamesFileAndField) {
+  EXPECT_EQ(error_of("{\n  \"texunit_scene\": 1,\n  \"camera\": {,\n}").rfind("s.json:3: malformed JSON", 0), 0u);
+  EXPECT_EQ(error_of(edited("\"width\": 256", "\"width\": 0")),
+            "s.json: /camera/width: value 0 is out of range [1, 4096]");
+  EXPECT_EQ(error_of(edited("\"width\": 256", "\"widht\": 256")),
+            "s.json: /camera: missing field 'width'");
+  EXPECT_EQ(error_of(edited("\"fovy_deg\": 60,", "\"fovy_deg\": 60, \"zoom\": 2,")),
+            "s.json: /camera/zoom: unknown field");
+  EXPECT_EQ(error_of(edited("\"material\": \"wall\"", "\"material\": \"glass\"")),
+            "s.json: /objects/1/material: unknown material 'glass'");
+  EXPECT_EQ(error_of(edited("\"filter\": \"ewa\", \"weights\": \"formula\"",
+                            "\"filter\": \"cubic\", \"weights\": \"formula\"")),
+            "s.json: /materials/ground/filter: 'cubic' is not one of: nearest, bilinear, "
+            "trilinear, ewa");
+  EXPECT_EQ(error_of(edited("\"size\": 256, \"cells\"", "\"size\": 200, \"cells\"")),
+            "s.json: /textures/checker/size: must be a power of two");
+  EXPECT_EQ(error_of(edited("\"builtin\": \"bricks\"", "\"png\": \"missing.png\"")),
+            "s.json: /textures/bricks/png: file './missing.png' does not exist");
+  EXPECT_EQ(error_of(edited("[[0, 0], [4, 0], [4, 16], [0, 16]]", "[[0, 0], [4, 0], [4, 16]]")),
+            "s.json: /objects/0/uv: expected 4 uv pairs for a quad");
+  EXPECT_EQ(error_of(edited("\"scale\": 0.04", "\"scale\": -1")),
+            "s.json: /materials/wall/relief/scale: value -1 is out of range [0, 1]");
+  EXPECT_EQ(error_of(edited("\"texunit_scene\": 1", "\"texunit_scene\": 2")),
+            "s.json: /texunit_scene: value 2 is out of range [1, 1]");
+  EXPECT_EQ(error_of("[1, 2]"), "s.json: /: expected an object");
+}
+
+TEST(Scene, MissingFileAndPngTextureRelativeToTheScene) {
+  EXPECT_THROW(load("/nonexistent/scene.json"), SceneError);
+  const auto dir = std::filesystem::temp_directory_path() / "tu_scene_test";
+  std::filesystem::create_directories(dir);
+  tu::img::write_png_rgba((dir / "t.png").string(), tu::img::Rgba8Image(32, 16, {1, 2, 3, 255}));
+  std::ofstream(dir / "s.json") << edited("\"builtin\": \"bricks\", \"size\": 256", "\"png\": \"t.png\"");
+  const Scene s = load((dir / "s.json").string());
+  const auto t = build_texture(s, "bricks");
+  EXPECT_EQ(t.levels[0].width, 32);
+  EXPECT_EQ(t.levels[0].height, 16);
+  // A non-power-of-two PNG fails when built, naming the scene, the texture and the file.
+  tu::img::write_png_rgba((dir / "t.png").string(), tu::img::Rgba8Image(30, 16));
+  try {
+    build_texture(s, "bricks");
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("/textures/bricks"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not a power of two"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+}  // namespace
