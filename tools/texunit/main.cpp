@@ -10,6 +10,7 @@
 #include "block.hpp"
 #include "complexity/complexity.hpp"
 #include "cosim.hpp"
+#include "render_cmd.hpp"
 #include "report.hpp"
 #include "texunit/rtl_gen.hpp"
 #include "vector_file.hpp"
@@ -177,9 +178,13 @@ int main(int argc, char** argv) {
   rep->add_option("--plots", rep_plots, "directory for error_vs_cycles.png / error_vs_cells.png");
   rep->add_option("--root", root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
 
+  tu::cli::RenderArgs render_args;
+  auto* rnd = tu::cli::add_render(app, render_args);
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (*vec) return cmd_vectors(block, set, count, seed, out);
+    if (*rnd) return tu::cli::run_render(render_args);
     if (*cos) return cmd_cosim(block, file, stall, seed, fst, json);
     if (*gen) return cmd_gen_rtl(root, check);
     if (*rep) return tu::report::run(rep_blocks, rep_json, rep_plots, root);

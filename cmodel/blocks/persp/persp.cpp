@@ -54,7 +54,7 @@ Coef9 coefficients(const Camera& cam, const Triangle& t) {
           glm::dot(nq, b.dx), glm::dot(nq, b.dy), glm::dot(nq, b.d0)};
 }
 
-bool ray_uv(const Camera& cam, const Triangle& t, int x, int y, double* u, double* v) {
+bool ray_hit(const Camera& cam, const Triangle& t, int x, int y, Hit* h) {
   const Basis b = basis(cam);
   // Per-pixel ray, built from the pixel centre directly (not from the linear form above).
   const double th = std::tan(cam.fovy_deg * M_PI / 360.0);
@@ -69,8 +69,15 @@ bool ray_uv(const Camera& cam, const Triangle& t, int x, int y, double* u, doubl
   if (std::fabs(det) < 1e-300) return false;
   const glm::dvec3 srt = glm::inverse(m) * (b.pos - p0);
   if (srt.z <= 0) return false;
-  *u = t.v[0].uv[0] + srt.x * (t.v[1].uv[0] - t.v[0].uv[0]) + srt.y * (t.v[2].uv[0] - t.v[0].uv[0]);
-  *v = t.v[0].uv[1] + srt.x * (t.v[1].uv[1] - t.v[0].uv[1]) + srt.y * (t.v[2].uv[1] - t.v[0].uv[1]);
+  *h = {srt.x, srt.y, srt.z};
+  return true;
+}
+
+bool ray_uv(const Camera& cam, const Triangle& t, int x, int y, double* u, double* v) {
+  Hit h;
+  if (!ray_hit(cam, t, x, y, &h)) return false;
+  *u = t.v[0].uv[0] + h.s * (t.v[1].uv[0] - t.v[0].uv[0]) + h.r * (t.v[2].uv[0] - t.v[0].uv[0]);
+  *v = t.v[0].uv[1] + h.s * (t.v[1].uv[1] - t.v[0].uv[1]) + h.r * (t.v[2].uv[1] - t.v[0].uv[1]);
   return true;
 }
 

@@ -219,6 +219,12 @@ Coef9 coefficients(const Camera& cam, const Triangle& t);
 // Ray through the centre of pixel (x, y) intersected with the triangle's plane; uv by barycentric
 // interpolation. Returns false when the ray is parallel to the plane or the hit is behind the eye.
 bool ray_uv(const Camera& cam, const Triangle& t, int x, int y, double* u, double* v);
+// The same ray's hit with the triangle's plane: point p0 + s (p1 - p0) + r (p2 - p0) at distance
+// `dist` along the unit ray (inside the triangle iff s >= 0, r >= 0, s + r <= 1).
+struct Hit {
+  double s = 0, r = 0, dist = 0;
+};
+bool ray_hit(const Camera& cam, const Triangle& t, int x, int y, Hit* h);
 
 // A synthetic mapping (any 3x3 map with q > 0 on the span is the view of some plane): on row y,
 // q runs linearly from q0 at x0 to q1 at x1 and u (v) from u0 (v0) to u1 (v1) projectively;

@@ -1,0 +1,60 @@
+#include "ewa_ref.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tu::ewa {
+
+Result filter_ref(const tex::Texture& t, double u, double v, const ellipse::Jacobian& j,
+                  const Params& p) {
+  // Singular values and the major direction of J (eigen-decomposition of J J^T).
+  const double a11 = j.ux * j.ux + j.uy * j.uy, a12 = j.ux * j.vx + j.uy * j.vy,
+               a22 = j.vx * j.vx + j.vy * j.vy;
+  const double tr = a11 + a22, det = std::fabs(j.ux * j.vy - j.uy * j.vx);
+  const double disc = std::sqrt(std::max(0.0, tr * tr / 4 - det * det));
+  const double s1 = std::sqrt(tr / 2 + disc);
+  double s2 = s1 > 0 ? det / s1 : 0;
+  const double theta = 0.5 * std::atan2(2 * a12, a11 - a22);  // major axis angle in (u, v)
+  s2 = std::max(s2, s1 / p.max_aniso);
+  const int max_level = t.num_levels() - 1;
+  int level = s2 > 1 ? std::clamp(static_cast<int>(std::floor(std::log2(s2))), 0, max_level) : 0;
+  const double c = std::cos(theta), s = std::sin(theta);
+  Result r;
+  for (;; ++level) {
+    const double scale = std::ldexp(1.0, -level);
+    // At least 1 texel (reconstruction support); at most the level's size (a footprint larger
+    // than the texture averages all of it anyway).
+    const double lim = std::max(t.levels[static_cast<size_t>(level)].width,
+                                t.levels[static_cast<size_t>(level)].height);
+    const double a = std::clamp(s1 * scale, 1.0, lim), b = std::clamp(s2 * scale, 1.0, lim);
+    const double hu = std::sqrt(a * a * c * c + b * b * s * s);
+    const double hv = std::sqrt(a * a * s * s + b * b * c * c);
+    const double cu = u * scale - 0.5, cv = v * scale - 0.5;  // texel i has its centre at i
+    const auto x0 = static_cast<int64_t>(std::ceil(cu - hu)), x1 = static_cast<int64_t>(std::floor(cu + hu));
+    const auto y0 = static_cast<int64_t>(std::ceil(cv - hv)), y1 = static_cast<int64_t>(std::floor(cv + hv));
+    const int64_t box = (x1 - x0 + 1) * (y1 - y0 + 1);
+    if (box > p.max_texels && level < max_level) {
+      r.capped = true;
+      continue;
+    }
+    double acc[4] = {0, 0, 0, 0}, wsum = 0;
+    for (int64_t y = y0; y <= y1; ++y) {
+      for (int64_t x = x0; x <= x1; ++x) {
+        const double du = x - cu, dv = y - cv;
+        const double pu = (du * c + dv * s) / a, pv = (-du * s + dv * c) / b;
+        const double w = gpm_weight(pu * pu + pv * pv);
+        ++r.texels_visited;
+        if (w == 0) continue;
+        ++r.texels_inside;
+        const tex::Rgba8 px = t.fetch(level, x, y);
+        acc[0] += w * px.r, acc[1] += w * px.g, acc[2] += w * px.b, acc[3] += w * px.a;
+        wsum += w;
+      }
+    }
+    r.level = level;
+    r.color = {acc[0] / wsum, acc[1] / wsum, acc[2] / wsum, acc[3] / wsum};
+    return r;
+  }
+}
+
+}  // namespace tu::ewa

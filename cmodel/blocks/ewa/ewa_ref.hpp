@@ -1,0 +1,44 @@
+// EWA texture filter (B5), float reference: Heckbert's elliptical weighted average with the
+// seed-003 Gaussian pixel-model weight w = (1 - Q/2)^8 (Q <= 1), on a mip pyramid.
+//
+// Footprint: the image of the unit pixel disc under the Jacobian J (texels per pixel), i.e. an
+// ellipse with semi-axes sigma1 >= sigma2 (singular values of J) along J's left singular vectors.
+// The minor axis is grown to sigma1 / max_aniso (anisotropy clamp). Level L = floor(log2(minor)),
+// clamped to the pyramid, so the minor semi-axis at level L is in [1, 2) texels; both semi-axes are
+// at least 1 texel (magnification keeps a reconstruction support, and a disc of radius 1 always
+// holds a texel centre, so the weight sum is never 0). Texel walk over the ellipse's bounding box;
+// when the box exceeds max_texels the level is raised until it fits (documented fallback: blur
+// instead of an unbounded walk).
+#pragma once
+
+#include "ellipse/ellipse_ref.hpp"
+#include "texture/texture.hpp"
+
+namespace tu::ewa {
+
+struct Params {
+  double max_aniso = 16;
+  int max_texels = 1024;  // bounding-box texels per pixel before falling back to a coarser level
+};
+
+struct Result {
+  tex::RgbaF color;
+  int level = 0;
+  int texels_visited = 0;  // bounding-box texels walked
+  int texels_inside = 0;   // texels with Q < 1 (weighted)
+  bool capped = false;     // the texel cap raised the level
+};
+
+// (u, v): level-0 texel coordinates of the pixel centre; j: the Jacobian there.
+Result filter_ref(const tex::Texture& t, double u, double v, const ellipse::Jacobian& j,
+                  const Params& p);
+
+// Gaussian pixel-model weight, Q in [0, 1); 0 outside.
+inline double gpm_weight(double q) {
+  if (q < 0 || q >= 1) return 0;
+  const double t = 1 - q / 2;
+  const double t2 = t * t, t4 = t2 * t2;
+  return t4 * t4;
+}
+
+}  // namespace tu::ewa

@@ -1,0 +1,138 @@
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+
+#include "ewa/ewa_ref.hpp"
+#include "texunit/render.hpp"
+
+namespace tu::render {
+
+namespace {
+constexpr img::Rgba8 kBackground{0, 0, 80, 255};
+
+uint8_t to8(double x) { return static_cast<uint8_t>(std::clamp(std::lround(x), 0L, 255L)); }
+img::Rgba8 to8(const tex::RgbaF& c) { return {to8(c.r), to8(c.g), to8(c.b), to8(c.a)}; }
+}  // namespace
+
+std::vector<Cover> visibility(const scene::Scene& s) {
+  const int w = s.camera.width, h = s.camera.height;
+  std::vector<Cover> cov(static_cast<size_t>(w) * static_cast<size_t>(h));
+  std::vector<double> depth(cov.size(), std::numeric_limits<double>::infinity());
+  for (size_t o = 0; o < s.objects.size(); ++o) {
+    const auto& tris = s.objects[o].triangles;
+    for (size_t t = 0; t < tris.size(); ++t) {
+      for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+          persp::Hit hit;
+          if (!persp::ray_hit(s.camera, tris[t], x, y, &hit)) continue;
+          if (hit.s < 0 || hit.r < 0 || hit.s + hit.r > 1) continue;
+          const size_t i = static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
+          if (hit.dist < depth[i]) {
+            depth[i] = hit.dist;
+            cov[i] = {static_cast<int>(o), static_cast<int>(t)};
+          }
+        }
+      }
+    }
+  }
+  return cov;
+}
+
+Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
+  const int w = s.camera.width, h = s.camera.height;
+  Frame f;
+  f.image = img::Rgba8Image(w, h, kBackground);
+  const auto cov = visibility(s);
+  // Per object: texture and per-triangle coefficients.
+  std::vector<tex::Texture> texs;
+  std::vector<std::vector<persp::Coef9>> coefs;
+  for (const auto& o : s.objects) {
+    const auto& m = s.materials.at(o.material);
+    texs.push_back(scene::build_texture(s, m.texture));
+    const auto& base = texs.back().levels[0];
+    std::vector<persp::Coef9> k;
+    for (const auto& t : scene::in_texels(o, base.width, base.height))
+      k.push_back(persp::coefficients(s.camera, t));
+    coefs.push_back(std::move(k));
+  }
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const Cover c = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)];
+      if (c.object < 0) continue;
+      const auto& m = s.materials.at(s.objects[static_cast<size_t>(c.object)].material);
+      const auto& tx = texs[static_cast<size_t>(c.object)];
+      const persp::Coef9& k = coefs[static_cast<size_t>(c.object)][static_cast<size_t>(c.triangle)];
+      double u, v, q;
+      persp::eval_ref(k, x, y, &u, &v, &q);
+      PixelRecord rec;
+      rec.x = x, rec.y = y, rec.object = c.object, rec.u = u, rec.v = v;
+      const auto j = ellipse::analytic(k, x, y);
+      const ellipse::FootprintParams fp{m.max_aniso, static_cast<double>(tx.num_levels() - 1)};
+      switch (filter.value_or(m.filter)) {
+        case scene::Filter::Nearest:
+          rec.color = tx.fetch(0, static_cast<int64_t>(std::floor(u)), static_cast<int64_t>(std::floor(v)));
+          rec.texels = 1;
+          break;
+        case scene::Filter::Bilinear:
+          rec.color = to8(tex::bilinear_ref(tx, 0, u, v));
+          rec.texels = 4;
+          break;
+        case scene::Filter::Trilinear:
+          rec.lod = ellipse::footprint(j, fp).lod;
+          rec.color = to8(tex::trilinear_ref(tx, rec.lod, u, v));
+          rec.texels = 8;
+          break;
+        case scene::Filter::Ewa: {
+          const auto r = ewa::filter_ref(tx, u, v, j, {m.max_aniso, 1024});
+          rec.color = to8(r.color);
+          rec.lod = r.level;
+          rec.texels = r.texels_visited;
+          break;
+        }
+      }
+      f.image.at(x, y) = rec.color;
+      f.pixels.push_back(rec);
+    }
+  }
+  return f;
+}
+
+img::Rgba8Image error_heatmap(const img::Rgba8Image& a, const img::Rgba8Image& b, int full_scale) {
+  if (a.width != b.width || a.height != b.height)
+    throw std::invalid_argument("error_heatmap: images differ in size");
+  img::Rgba8Image out(a.width, a.height);
+  for (size_t i = 0; i < a.px.size(); ++i) {
+    const int d = std::max({std::abs(a.px[i].r - b.px[i].r), std::abs(a.px[i].g - b.px[i].g),
+                            std::abs(a.px[i].b - b.px[i].b)});
+    const double t = std::min(1.0, static_cast<double>(d) / std::max(1, full_scale));
+    out.px[i] = d == 0 ? img::Rgba8{0, 0, 0, 255}
+                       : img::Rgba8{to8(255 * t), to8(64 * (1 - t)), to8(255 * (1 - t)), 255};
+  }
+  return out;
+}
+
+void write_dump_csv(const std::string& path, const Frame& f) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    if (!out) throw std::runtime_error(path + ": cannot write");
+    out << "x,y,u,v,lod,texels,r,g,b,a\n";
+    char buf[160];
+    for (const auto& p : f.pixels) {
+      std::snprintf(buf, sizeof buf, "%d,%d,%.6f,%.6f,%.4f,%d,%d,%d,%d,%d\n", p.x, p.y, p.u, p.v,
+                    p.lod, p.texels, p.color.r, p.color.g, p.color.b, p.color.a);
+      out << buf;
+    }
+    if (!out) {
+      std::filesystem::remove(tmp);
+      throw std::runtime_error(path + ": write failed");
+    }
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace tu::render
