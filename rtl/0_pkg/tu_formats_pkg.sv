@@ -57,6 +57,13 @@ package tu_formats_pkg;
   localparam int unsigned PomDivM = 32897;  // floor(y/255) = (y*PomDivM) >> PomDivS, exact for y < 66052
   localparam int unsigned PomDivS = 23;
   localparam int unsigned PomLayersLatency = 3;  // pom_layers pipeline latency in cycles, II = 1
+  localparam int unsigned PomUvW = 32;  // POM march uv: signed, PomUvF fraction bits (1.0 = one texture)
+  localparam int unsigned PomUvF = 16;
+  localparam int unsigned PomSF = 16;  // height scale S: unsigned u0.PomSF (S < 1)
+  localparam int unsigned PomVzMin = 512;  // |Vz| guard: |Vz| clamped to >= PomVzMin * 2^-PomVzF (2^-5, 88.2 deg)
+  localparam int unsigned PomWF = 16;  // refinement weight w = a/(a+b) in [0,1]: unsigned, PomWF fraction bits
+  localparam int unsigned IpxCap = 16;  // iterative parallax: default iteration cap
+  localparam int unsigned IpxEps = 256;  // iterative parallax: default threshold |d| < IpxEps * 2^-PomUvF (2^-8)
   localparam int unsigned PerspXyW = 12;  // pixel indices x, y and span offset n: unsigned, 0..4095
   localparam int unsigned PerspF = 40;  // fraction bits of coefficients A..I and of accumulators p_u, p_v, q
   localparam int unsigned PerspPW = 54;  // A..F, p_u, p_v: signed, PerspF fraction bits, |p| < 2^13

@@ -9,6 +9,7 @@
 
 #include "block.hpp"
 #include "complexity/complexity.hpp"
+#include "pom/relief_quality.hpp"
 #include "cosim.hpp"
 #include "render_cmd.hpp"
 #include "report.hpp"
@@ -100,6 +101,11 @@ int cmd_complexity(const std::string& in, const std::string& out, const tu::comp
 
 // Main job until the texture pipeline lands: every block with RTL, co-simulated on its golden,
 // stiff and random sets with 30% stalls, as one table.
+int cmd_relief_quality(const tu::pom::QualityParams& p) {
+  std::cout << tu::pom::quality_markdown(tu::pom::quality(p));
+  return 0;
+}
+
 int cmd_demo(uint64_t count) {
   std::printf("%-12s %-7s %9s %9s %10s %11s %10s %8s %4s %10s\n", "block", "set", "vectors",
               "outputs", "mismatch", "max_ulp", "rms_err", "latency", "II", "cycles");
@@ -170,6 +176,12 @@ int main(int argc, char** argv) {
         return std::stoi(s) % 2 ? std::string() : std::string("must be odd");
       }, "ODD"));
 
+  tu::pom::QualityParams rq;
+  auto* rqc = app.add_subcommand("relief-quality", "POM / iterative parallax PSNR vs steps (docs/blocks/relief.md)");
+  rqc->add_option("--size", rq.side, "texture and image side (power of two)")->check(CLI::IsMember({16, 32, 64, 128, 256, 512}));
+  rqc->add_option("--scale", rq.scale, "height scale S")->check(CLI::Range(0.0, 0.99));
+  rqc->add_option("--debug-dir", rq.debug_dir, "write layer-count debug PNGs here")->check(CLI::ExistingDirectory);
+
   std::vector<std::string> rep_blocks;
   std::string rep_json, rep_plots;
   auto* rep = app.add_subcommand("report", "error / cycles / area per block variant (docs/blocks/gaussian.md)");
@@ -189,6 +201,7 @@ int main(int argc, char** argv) {
     if (*gen) return cmd_gen_rtl(root, check);
     if (*rep) return tu::report::run(rep_blocks, rep_json, rep_plots, root);
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
+    if (*rqc) return cmd_relief_quality(rq);
     if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000);
   } catch (const std::exception& e) {
     std::cerr << "texunit: error: " << e.what() << "\n";

@@ -66,6 +66,13 @@
   X(PomDivM, 32897, "floor(y/255) = (y*PomDivM) >> PomDivS, exact for y < 66052")              \
   X(PomDivS, 23, "")                                                                            \
   X(PomLayersLatency, 3, "pom_layers pipeline latency in cycles, II = 1")                      \
+  X(PomUvW, 32, "POM march uv: signed, PomUvF fraction bits (1.0 = one texture)")              \
+  X(PomUvF, 16, "")                                                                             \
+  X(PomSF, 16, "height scale S: unsigned u0.PomSF (S < 1)")                                   \
+  X(PomVzMin, 512, "|Vz| guard: |Vz| clamped to >= PomVzMin * 2^-PomVzF (2^-5, 88.2 deg)")    \
+  X(PomWF, 16, "refinement weight w = a/(a+b) in [0,1]: unsigned, PomWF fraction bits")        \
+  X(IpxCap, 16, "iterative parallax: default iteration cap")                                  \
+  X(IpxEps, 256, "iterative parallax: default threshold |d| < IpxEps * 2^-PomUvF (2^-8)")      \
   /* Perspective divide (docs/blocks/persp.md) */                                               \
   X(PerspXyW, 12, "pixel indices x, y and span offset n: unsigned, 0..4095")                    \
   X(PerspF, 40, "fraction bits of coefficients A..I and of accumulators p_u, p_v, q")           \

@@ -1,0 +1,41 @@
+// Relief quality vs cost (docs/blocks/relief.md §5): procedural depth maps, a textured render of
+// the shifted uv, PSNR against a dense 256-layer exact-refinement march (pom::march_ref).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "texunit/image.hpp"
+
+namespace tu::pom {
+
+// 128x128-style procedural depth maps (side: power of two). depth code 0 = top, 255 = deepest.
+img::Gray8 map_smooth(int side);  // low-frequency sinusoid bumps
+img::Gray8 map_bricks(int side);  // flat bricks, bevelled edges, deep mortar (steep steps)
+img::Gray8 map_noisy(int side);   // 3-octave value noise + per-texel noise (rocky)
+
+// Render albedo at (u, v) (analytic, continuous, period 1/8): 8-bit value.
+double albedo(double u, double v);
+
+struct QualityParams {
+  int side = 128;        // texture and image size (pixels = texels, one tile)
+  double scale = 0.05;   // height scale S
+  double azimuth = 30;   // degrees
+  std::vector<double> angles = {0, 45, 60, 80, 85};
+  std::string debug_dir; // if set: layer-count debug PNGs (N per pixel) are written here
+};
+
+struct QualityRow {
+  std::string map, method;
+  double angle = 0;
+  double psnr = 0;        // dB, +inf when identical
+  double steps = 0;       // mean march steps / iterations per pixel
+  double fetches = 0;     // mean depth fetches per pixel (steps + 1)
+  double nonconv = 0;     // fraction of pixels flagged non-converged (iterative only)
+  double ref_steps = 0;   // mean steps of the 256-layer reference
+};
+
+std::vector<QualityRow> quality(const QualityParams& p);
+std::string quality_markdown(const std::vector<QualityRow>& rows);
+
+}  // namespace tu::pom
