@@ -199,3 +199,30 @@ TEST(IterParallax, SteepReliefOscillatesAndIsFlagged) {
 }
 
 }  // namespace
+
+namespace {
+TEST(ReliefQuality, TableInvariants) {
+  // Small scene (32x32): head-on every method is exact; at 80 deg 32 layers beat 4 layers;
+  // adaptive uses N = Nmin = 4 head-on (the same steps as N = 4); steps grow with N.
+  tu::pom::QualityParams p;
+  p.side = 32;
+  p.angles = {0, 80};
+  const auto rows = tu::pom::quality(p);
+  ASSERT_EQ(rows.size(), 3u * 2u * 8u);
+  auto get = [&](const std::string& m, double a, const std::string& meth) {
+    for (const auto& r : rows)
+      if (r.map == m && r.angle == a && r.method == meth) return r;
+    ADD_FAILURE() << m << " " << a << " " << meth;
+    return tu::pom::QualityRow{};
+  };
+  for (const char* m : {"smooth", "bricks", "noisy"}) {
+    for (const char* meth : {"N=4", "N=32", "adaptive", "iter-seed", "iter-norm"})
+      EXPECT_TRUE(std::isinf(get(m, 0, meth).psnr)) << m << " " << meth;
+    EXPECT_EQ(get(m, 0, "adaptive").steps, get(m, 0, "N=4").steps) << m;
+    EXPECT_GT(get(m, 80, "N=32").psnr, get(m, 80, "N=4").psnr) << m;
+    EXPECT_GT(get(m, 80, "N=32").steps, get(m, 80, "N=8").steps) << m;
+    EXPECT_GT(get(m, 80, "N=8").steps, get(m, 80, "N=4").steps) << m;
+    EXPECT_NEAR(get(m, 80, "N=4").fetches, get(m, 80, "N=4").steps + 1, 1e-12);
+  }
+}
+}  // namespace
