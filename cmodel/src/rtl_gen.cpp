@@ -5,6 +5,7 @@
 
 #include "pom/pom_layers.hpp"
 #include "gauss/clip.hpp"
+#include "gauss/weight.hpp"
 #include "reciprocal/reciprocal.hpp"
 #include "texunit/formats.hpp"
 
@@ -107,6 +108,25 @@ segment:
   os << "      default: begin c0_o = '0; c1_o = '0; end\n    endcase\n  end\nendmodule\n";
   return os.str();
 }
+std::string wtab1d_rom() {
+  // 1-D Gaussian weight table (docs/blocks/gaussian.md): row k holds the two entries the linear
+  // interpolation needs, e[k] and e[k+1] (0 past the end), so one read per pixel.
+  const gauss::Table1D t(gauss::kWtabRtlLog2N);
+  const int iw = gauss::kWtabRtlLog2N + 1, ew = fmt::kWtabEntryW;
+  std::ostringstream os;
+  os << kBanner << "// Gaussian weight table, 1-D by Q, N = " << (1 << gauss::kWtabRtlLog2N)
+     << " (gauss::Table1D): e0 = w(k/N), e1 = w((k+1)/N), u" << ew << "." << ew << ".\n"
+     << "module tu_wtab1d_rom (\n"
+     << "  input  logic [" << iw - 1 << ":0]                              idx_i,\n"
+     << "  output logic [tu_formats_pkg::WtabEntryW-1:0] e0_o,\n"
+     << "  output logic [tu_formats_pkg::WtabEntryW-1:0] e1_o\n);\n"
+     << "  always_comb begin\n    unique case (idx_i)\n";
+  for (size_t k = 0; k < t.e.size(); ++k)
+    os << "      " << hex(k, iw) << ": begin e0_o = " << hex(t.e[k], ew)
+       << "; e1_o = " << hex(k + 1 < t.e.size() ? t.e[k + 1] : 0, ew) << "; end\n";
+  os << "      default: begin e0_o = '0; e1_o = '0; end\n    endcase\n  end\nendmodule\n";
+  return os.str();
+}
 }  // namespace
 
 std::map<std::string, std::string> generated_rtl() {
@@ -114,7 +134,8 @@ std::map<std::string, std::string> generated_rtl() {
           {"rtl/generated/tu_clip_coef_mm3.sv", clip_roms(false)},
           {"rtl/generated/tu_clip_seg_mm1.sv", clip_roms(true)},
           {"rtl/generated/tu_pom_f_rom.sv", pom_f_rom()},
-          {"rtl/generated/tu_recip_rom.sv", recip_rom()}};
+          {"rtl/generated/tu_recip_rom.sv", recip_rom()},
+          {"rtl/generated/tu_wtab1d_rom.sv", wtab1d_rom()}};
 }
 
 }  // namespace tu

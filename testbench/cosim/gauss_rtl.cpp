@@ -4,6 +4,7 @@
 #include "Vtu_clip_p1.h"
 #include "Vtu_clip_seq.h"
 #include "Vtu_gauss_weight.h"
+#include "Vtu_weight_table_1d.h"
 #include "cosim.hpp"
 
 namespace tu::cosim {
@@ -39,6 +40,17 @@ std::vector<RtlBlock> rtl_gauss() {
     return Harness<Vtu_gauss_weight>(drive, sample).measure_timing(in);
   };
   v.push_back(w);
+  auto tdrive = [](Vtu_weight_table_1d& d, const Row& in) { d.q_i = static_cast<uint16_t>(in[0]); };
+  auto tsample = [](Vtu_weight_table_1d& d) { return Row{d.w_o}; };
+  RtlBlock t;
+  t.name = "weight_table_1d";
+  t.run = [=](const std::vector<Row>& in, const RunOptions& o) {
+    return Harness<Vtu_weight_table_1d>(tdrive, tsample).run(in, o);
+  };
+  t.timing = [=](const std::vector<Row>& in) {
+    return Harness<Vtu_weight_table_1d>(tdrive, tsample).measure_timing(in);
+  };
+  v.push_back(t);
   return v;
 }
 

@@ -63,7 +63,7 @@ void area(Row& r, const std::string& root) {
   if (r.rtl_top.empty()) return;
   const std::string rtl = root + "/rtl/";
   std::string files = rtl + "0_pkg/tu_formats_pkg.sv " + rtl + "common/tu_pipe_valid.sv ";
-  for (const char* f : {"generated/tu_clip_coef_mm3.sv", "generated/tu_clip_seg_mm1.sv",
+  for (const char* f : {"generated/tu_clip_coef_mm3.sv", "generated/tu_clip_seg_mm1.sv", "generated/tu_wtab1d_rom.sv",
                         "gauss/tu_clip_abs.sv", "gauss/tu_clip_fold.sv", "gauss/tu_clip_mulfloor.sv"})
     files += rtl + f + " ";
   files += rtl + "gauss/" + r.rtl_top + ".sv";
@@ -148,7 +148,7 @@ std::vector<Row> weight_rows(const std::string& root, bool yosys) {
   return {r};
 }
 
-std::vector<Row> table_rows() {
+std::vector<Row> table_rows(const std::string& root, bool yosys) {
   std::vector<Row> rows;
   const auto comp = gauss::table_stats(2, 0);
   for (int kind = 0; kind < 2; ++kind)
@@ -157,11 +157,19 @@ std::vector<Row> table_rows() {
       Row r;
       r.block = "weight_table";
       r.variant = std::string(kind ? "2d_" : "1d_") + std::to_string(1 << l);
-      r.scheme = kind ? "est_weight_table_2d" : "est_weight_table_1d";
+      r.scheme = kind ? "est_weight_table_2d" : "weight_table_1d";
       r.max_abs_err = st.max_abs;
       r.rms_err = st.rms;
       r.max_ulp_err = st.max_abs / std::ldexp(1.0, -fmt::kWtabEntryW);
       cycles(r, r.scheme);
+      // The RTL (tu_weight_table_1d) is built at N = 2^kWtabRtlLog2N only; other sizes have the
+      // same structure (estimate; the ROM depth differs).
+      if (!r.rtl_top.empty() && l != gauss::kWtabRtlLog2N) {
+        r.rtl_top.clear();
+        r.cycles_source = "estimated (" + r.scheme + "; RTL has N = " +
+                          std::to_string(1 << gauss::kWtabRtlLog2N) + ")";
+      }
+      if (yosys) area(r, root);
       const gauss::Table1D t1(kind ? 4 : l);
       const gauss::Table2D t2(kind ? l : 4);
       r.cmodel_ns_per_item = ns_per_item([&] {
@@ -212,7 +220,7 @@ std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string&
     std::vector<Row> r;
     if (b == "clip_volume") r = clip_rows(root, yosys);
     else if (b == "gauss_weight") r = weight_rows(root, yosys);
-    else if (b == "weight_table") r = table_rows();
+    else if (b == "weight_table") r = table_rows(root, yosys);
     else throw std::invalid_argument("report: unknown block '" + b + "' (known: clip_volume, gauss_weight, weight_table)");
     out.insert(out.end(), r.begin(), r.end());
   }

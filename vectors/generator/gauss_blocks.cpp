@@ -15,6 +15,16 @@ vec::Field F(const char* n, vec::Role r, const char* f) {
   return vec::Field{n, r, vec::FieldFormat::parse(f)};
 }
 
+// |w - ref| for a weight output with `frac` fraction bits (ref: f64 bits).
+auto weight_error(int frac) {
+  return [frac](const Row&, const Row& out, const Row& ref) {
+    ErrPoint e;
+    e.abs = std::fabs(std::ldexp(static_cast<double>(out[0]), -frac) - vec::bits_f64(ref[0]));
+    e.ulp = e.abs / std::ldexp(1.0, -frac);
+    return e;
+  };
+}
+
 std::vector<Row> clip_inputs(const std::string& set, uint64_t count, uint64_t seed) {
   const int w = fmt::kClipInW;
   const uint64_t mask = (uint64_t(1) << w) - 1;
@@ -115,15 +125,47 @@ std::vector<Block> make_gauss_blocks() {
   w.ref = [](const Row& in) {
     return Row{vec::f64_bits(gauss::weight_ref(std::ldexp(static_cast<double>(in[0]), -fmt::kGaussQF)))};
   };
-  w.error = [](const Row&, const Row& out, const Row& ref) {
-    ErrPoint e;
-    e.abs = std::fabs(std::ldexp(static_cast<double>(out[0]), -fmt::kGaussSqF) - vec::bits_f64(ref[0]));
-    e.ulp = e.abs / std::ldexp(1.0, -fmt::kGaussSqF);
-    return e;
-  };
+  w.error = weight_error(fmt::kGaussSqF);
   w.latency_cycles = fmt::kGaussLatency;
   w.ii_cycles = 1;
   bs.push_back(w);
+  // 1-D weight table by Q at the RTL size (N = 256), linear interpolation; error against the
+  // computed reference (1 - Q/2)^8 of the same Q.
+  Block t = w;
+  t.name = "weight_table_1d";
+  t.description = "Gaussian weight from a 1-D table by Q (N = 256), linear interpolation, II = 1";
+  t.fields = {F("q", vec::Role::In, "u16.14"), F("w", vec::Role::Out, "u16.16"),
+              F("ref", vec::Role::Ref, "f64")};
+  t.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
+    std::vector<Row> rows;
+    const uint64_t one = uint64_t(1) << fmt::kGaussQF;
+    const uint64_t step = one >> gauss::kWtabRtlLog2N;  // table node spacing in Q codes
+    if (set == "golden") {
+      for (uint64_t q : {uint64_t(0), one / 2, one, one + 1, one / 4, uint64_t(12345), uint64_t(0xffff),
+                         step / 2, one - step / 2})
+        rows.push_back({q});
+    } else if (set == "stiff") {
+      // every table node and its neighbours (both interpolation ends), the end of the table,
+      // just outside, the largest codes
+      for (uint64_t k = 0; k <= one; k += step)
+        for (uint64_t q : {k, k + 1, k + step - 1, k + step / 2})
+          if (q <= one + 1) rows.push_back({q});
+      for (uint64_t q : {one + 1, one + step, 2 * one, uint64_t(0xfffe), uint64_t(0xffff)}) rows.push_back({q});
+    } else {
+      std::mt19937_64 rng(seed);
+      for (uint64_t i = 0; i < count; ++i)
+        rows.push_back({(rng() % 5) ? rng() % (one + 1) : rng() & 0xffff});
+    }
+    return rows;
+  };
+  t.model = [](const Row& in) {
+    static const gauss::Table1D tab(gauss::kWtabRtlLog2N);
+    return Row{tab.lookup(static_cast<uint32_t>(in[0]))};
+  };
+  t.error = weight_error(fmt::kWtabEntryW);
+  t.latency_cycles = gauss::kWtabRtlLatency;
+  t.ii_cycles = 1;
+  bs.push_back(t);
   return bs;
 }
 

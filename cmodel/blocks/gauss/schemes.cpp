@@ -68,7 +68,8 @@ std::vector<Graph> build() {
     g.add("square3_zero", "mul", 1, {s2});
     gs.push_back(g);
   }
-  // Estimates without RTL: the other Horner degrees and the weight tables.
+  // Estimates without RTL: the other Horner degrees, the 16-segment table, the 2-D weight table
+  // (the 1-D weight table has RTL at N = 256, below).
   gs.push_back(horner("est_clip_horner_deg2", 2, false));
   gs.push_back(horner("est_clip_horner_deg4", 4, false));
   gs.push_back(horner("est_clip_seq_deg2", 2, true));
@@ -85,8 +86,8 @@ std::vector<Graph> build() {
   }
   {
     Graph g;
-    g.name = "est_weight_table_1d";
-    g.description = "synchronous ROM (2 entries), one lerp multiply, round";
+    g.name = "weight_table_1d";
+    g.description = "registered ROM read (2 entries per row), one lerp multiply, round";
     const int r = g.add("rom_read", "rom", 1);
     const int m = g.add("lerp_mul", "mul", 1, {r});
     g.add("add_round", "add", 1, {m});
@@ -112,10 +113,6 @@ const std::vector<sched::Graph>& schemes() {
   return gs;
 }
 
-const sched::Graph& scheme(const std::string& name) {
-  for (const auto& g : schemes())
-    if (g.name == name) return g;
-  throw std::invalid_argument("no scheme graph '" + name + "'");
-}
+const sched::Graph& scheme(const std::string& name) { return sched::find(schemes(), name); }
 
 }  // namespace tu::gauss

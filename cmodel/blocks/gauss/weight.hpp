@@ -37,6 +37,12 @@ struct Table1D {
   uint64_t memory_bits() const { return e.size() * fmt::kWtabEntryW; }
 };
 
+// The 1-D table built in RTL (rtl/gauss/tu_weight_table_1d.sv, generated ROM tu_wtab1d_rom from
+// Table1D(kWtabRtlLog2N).e): N = 256 (4 kbit; the NMSE saturates there, gaussian.md), latency 3
+// (registered ROM read, lerp multiply, round), II = 1.
+inline constexpr int kWtabRtlLog2N = 8;
+inline constexpr int kWtabRtlLatency = 3;
+
 // Coordinates in the ellipse frame: xi, eta signed s16.14 (Q = xi^2 + eta^2).
 inline constexpr int kXiW = 16, kXiF = 14;
 struct Table2D {

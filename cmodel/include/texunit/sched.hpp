@@ -49,6 +49,13 @@ struct Schedule {
   std::map<std::string, int> units_used;  // ops per unit type (e.g. multipliers in a pipeline)
 };
 
+// The graph called `name` in a block's list of schemes (throws std::invalid_argument).
+inline const Graph& find(const std::vector<Graph>& gs, const std::string& name) {
+  for (const auto& g : gs)
+    if (g.name == name) return g;
+  throw std::invalid_argument("no scheme graph '" + name + "'");
+}
+
 inline Schedule schedule(const Graph& g) {
   const size_t n = g.ops.size();
   for (size_t i = 0; i < n; ++i)

@@ -1,0 +1,68 @@
+#include "schemes.hpp"
+
+namespace tu::persp {
+
+namespace {
+using sched::Graph;
+
+// One pixel of the back end (tu_persp_pixel, S2..S8) after the S1 op `acc_q` (the op producing q)
+// and the S1 ops `acc_p` (p_u, p_v): guard + leading-one detect + normalise (registered), the
+// reciprocal core (tu_recip_core: ROM, two multiply-adds, round; each stage registered), two
+// multiplies p*R, shift/round/saturate (registered). `sfx` distinguishes the lanes. Convention as
+// in the Gaussian graphs: a multiplier feeding an adder in the same stage is the registered op
+// (latency 1), the adder after it chains combinationally (latency 0).
+void back_end(Graph& g, int acc_q, int acc_pu, int acc_pv, const std::string& sfx) {
+  const int nrm = g.add("guard_lzc_normalise" + sfx, "lzc", 1, {acc_q});
+  const int rom = g.add("recip_rom" + sfx, "rom", 1, {nrm});
+  const int m1 = g.add("recip_mul_c2_dx" + sfx, "mul", 1, {rom});
+  const int a1 = g.add("recip_add_c1" + sfx, "add", 0, {m1});
+  const int m2 = g.add("recip_mul_s_dx" + sfx, "mul", 1, {a1});
+  const int a2 = g.add("recip_add_c0" + sfx, "add", 0, {m2});
+  const int r = g.add("recip_round_sat" + sfx, "add", 1, {a2});
+  const int mu = g.add("mul_pu_r" + sfx, "mul", 1, {r, acc_pu});
+  const int mv = g.add("mul_pv_r" + sfx, "mul", 1, {r, acc_pv});
+  g.add("shift_round_sat_u" + sfx, "shift", 1, {mu});
+  g.add("shift_round_sat_v" + sfx, "shift", 1, {mv});
+}
+
+// S1 of the incremental unit: n == 0 ? seed : acc + increment (registered accumulators).
+// S1 of the direct unit: seed + n * increment (combinational multiply, registered sum).
+// k lanes: lane j = n == 0 ? seed + j*inc : lane_j + K*inc (j*inc, K*inc by shift-and-add).
+Graph build_persp(const std::string& name, bool direct, int lanes) {
+  Graph g;
+  g.name = name;
+  g.description = direct ? "direct: seed + n*inc (3 multipliers), reciprocal, 2 multiplies"
+                         : (lanes == 1 ? "incremental: 3 accumulators, reciprocal, 2 multiplies"
+                                       : std::to_string(lanes) +
+                                             "-lane incremental: per lane 3 accumulators, reciprocal, 2 multiplies");
+  for (int j = 0; j < lanes; ++j) {
+    const std::string sfx = lanes == 1 ? "" : "_lane" + std::to_string(j);
+    int acc[3];
+    const char* sig[3] = {"pu", "pv", "q"};
+    for (int k = 0; k < 3; ++k) {
+      if (direct) {
+        const int m = g.add(std::string("mul_n_inc_") + sig[k] + sfx, "mul", 1);
+        acc[k] = g.add(std::string("add_seed_") + sig[k] + sfx, "add", 0, {m});
+      } else {
+        acc[k] = g.add(std::string("acc_") + sig[k] + sfx, "add", 1);
+      }
+    }
+    back_end(g, acc[2], acc[0], acc[1], sfx);
+  }
+  return g;
+}
+
+std::vector<Graph> build() {
+  return {build_persp("persp", false, 1), build_persp("persp_direct", true, 1),
+          build_persp("persp_k4", false, 4)};
+}
+}  // namespace
+
+const std::vector<sched::Graph>& schemes() {
+  static const std::vector<sched::Graph> gs = build();
+  return gs;
+}
+
+const sched::Graph& scheme(const std::string& name) { return sched::find(schemes(), name); }
+
+}  // namespace tu::persp
