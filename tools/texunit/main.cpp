@@ -99,14 +99,15 @@ int cmd_complexity(const std::string& in, const std::string& out, const tu::comp
   return 0;
 }
 
-// Main job until the texture pipeline lands: every block with RTL, co-simulated on its golden,
-// stiff and random sets with 30% stalls, as one table.
 int cmd_relief_quality(const tu::pom::QualityParams& p) {
   std::cout << tu::pom::quality_markdown(tu::pom::quality(p));
   return 0;
 }
 
-int cmd_demo(uint64_t count) {
+// Main job: every block with RTL co-simulated on its golden, stiff and random sets with 30% stalls
+// (one table), then the default scene rendered through the float reference with every filter.
+// (The C-model and RTL render engines join when the EWA unit lands.)
+int cmd_demo(uint64_t count, const std::string& out_dir) {
   std::printf("%-12s %-7s %9s %9s %10s %11s %10s %8s %4s %10s\n", "block", "set", "vectors",
               "outputs", "mismatch", "max_ulp", "rms_err", "latency", "II", "cycles");
   bool ok = true;
@@ -126,6 +127,7 @@ int cmd_demo(uint64_t count) {
   }
   std::printf("%s\n", ok ? "RTL == C model on every vector (30% random stalls, in order, none lost)"
                           : "MISMATCH: RTL and C model disagree (see above)");
+  tu::cli::demo_render(out_dir);
   return ok ? 0 : 1;
 }
 
@@ -163,6 +165,8 @@ int main(int argc, char** argv) {
 
   auto* demo = app.add_subcommand("demo", "main job: co-simulate every block and print the table");
   demo->add_option("--count", count, "random vectors per block")->check(CLI::Range(1ull, 1ull << 32));
+  std::string demo_out = "build/demo";
+  demo->add_option("--out", demo_out, "directory for the rendered images");
 
   std::string cx_in, cx_out;
   tu::complexity::Params cx;
@@ -202,7 +206,7 @@ int main(int argc, char** argv) {
     if (*rep) return tu::report::run(rep_blocks, rep_json, rep_plots, root);
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*rqc) return cmd_relief_quality(rq);
-    if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000);
+    if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000, demo_out);
   } catch (const std::exception& e) {
     std::cerr << "texunit: error: " << e.what() << "\n";
     return 2;

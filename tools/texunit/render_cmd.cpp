@@ -1,6 +1,9 @@
 // `texunit render SCENE.json --out DIR [--dump FILE.csv] [--engine ref] [--filter F]`.
 #include "render_cmd.hpp"
 
+#include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
@@ -38,6 +41,41 @@ int run_render(const RenderArgs& a) {
     std::cerr << "wrote " << a.dump << "\n";
   }
   return 0;
+}
+
+void demo_render(const std::string& out_dir) {
+  const scene::Scene s = scene::default_scene();
+  const scene::Filter filters[] = {scene::Filter::Nearest, scene::Filter::Bilinear,
+                                   scene::Filter::Trilinear, scene::Filter::Ewa};
+  std::vector<render::Frame> frames;
+  std::vector<double> seconds;
+  for (auto f : filters) {
+    const auto t0 = std::chrono::steady_clock::now();
+    frames.push_back(render::render_ref(s, f));
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::filesystem::create_directories(out_dir);
+  const auto& ewa = frames.back();
+  std::printf("\ndefault scene (%dx%d, %zu covered pixels), float reference engine:\n",
+              s.camera.width, s.camera.height, ewa.pixels.size());
+  std::printf("%-10s %14s %14s %10s  %s\n", "filter", "PSNR vs EWA", "texels/pixel", "seconds",
+              "image");
+  for (size_t i = 0; i < frames.size(); ++i) {
+    const auto name = std::string(scene::to_string(filters[i]));
+    const auto png = (std::filesystem::path(out_dir) / ("ref_" + name + ".png")).string();
+    img::write_png_rgba(png, frames[i].image);
+    if (i + 1 < frames.size())
+      img::write_png_rgba((std::filesystem::path(out_dir) / ("heat_" + name + "_vs_ewa.png")).string(),
+                          render::error_heatmap(frames[i].image, ewa.image, 64));
+    double texels = 0;
+    for (const auto& p : frames[i].pixels) texels += p.texels;
+    const double ps = tex::psnr(frames[i].image, ewa.image);
+    char psnr_txt[32];
+    std::snprintf(psnr_txt, sizeof psnr_txt, std::isinf(ps) ? "reference" : "%.2f dB", ps);
+    std::printf("%-10s %14s %14.2f %10.3f  %s\n", name.c_str(), psnr_txt,
+                texels / static_cast<double>(std::max<size_t>(1, frames[i].pixels.size())),
+                seconds[i], png.c_str());
+  }
 }
 
 }  // namespace tu::cli

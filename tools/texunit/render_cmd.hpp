@@ -12,4 +12,8 @@ struct RenderArgs {
 CLI::App* add_render(CLI::App& app, RenderArgs& a);
 int run_render(const RenderArgs& a);  // throws on bad scenes and unwritable outputs
 
+// The main job's render part: the default scene through the float reference with every filter,
+// PNGs (one per filter, plus error heat maps against EWA) in out_dir, and a table on stdout.
+void demo_render(const std::string& out_dir);
+
 }  // namespace tu::cli
