@@ -261,7 +261,7 @@ int run(const std::vector<std::string>& blocks, const std::string& json, const s
     const std::string gp = plots + "/report.gp";
     {
       std::ofstream g(gp);
-      g << "set terminal pngcairo size 1200,800\nset logscale y\nset grid\nset key off\n"
+      g << "set terminal pngcairo size 1200,800 noenhanced\nset logscale y\nset grid\nset key off\n"
         << "set ylabel 'max abs error'\n"
         << "set output '" << plots << "/error_vs_cycles.png'\n"
         << "set xlabel 'cycles per item (latency + II; estimated where no RTL)'\n"

@@ -20,6 +20,11 @@ struct ErrPoint {
   bool valid = true;  // false for flagged/saturated outputs (excluded from the statistics)
 };
 
+// A vector-file field from its name, role and format ("s24.16", "u1.0", "f64").
+inline vec::Field field(const std::string& name, vec::Role role, const std::string& format) {
+  return vec::Field{name, role, vec::FieldFormat::parse(format)};
+}
+
 struct Block {
   std::string name;
   std::string description;
@@ -44,5 +49,15 @@ vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count,
 
 // Split/join a file row by role.
 Row pick(const Row& row, const std::vector<int>& idx);
+
+// Block::inputs for the three standard sets: golden() and stiff() are fixed, random(count, seed).
+template <class Golden, class Stiff, class Random>
+auto standard_sets(Golden golden, Stiff stiff, Random random) {
+  return [=](const std::string& set, uint64_t count, uint64_t seed) -> std::vector<Row> {
+    if (set == "golden") return golden();
+    if (set == "stiff") return stiff();
+    return random(count, seed);
+  };
+}
 
 }  // namespace tu::blocks

@@ -11,10 +11,6 @@
 namespace tu::blocks {
 
 namespace {
-vec::Field F(const char* n, vec::Role r, const char* f) {
-  return vec::Field{n, r, vec::FieldFormat::parse(f)};
-}
-
 // |w - ref| for a weight output with `frac` fraction bits (ref: f64 bits).
 auto weight_error(int frac) {
   return [frac](const Row&, const Row& out, const Row& ref) {
@@ -62,8 +58,8 @@ Block make_clip(const std::string& name, const std::string& variant, const std::
   Block b;
   b.name = name;
   b.description = desc;
-  b.fields = {F("d", vec::Role::In, "s13.12"), F("v", vec::Role::Out, "u16.16"),
-              F("ref", vec::Role::Ref, "f64")};
+  b.fields = {field("d", vec::Role::In, "s13.12"), field("v", vec::Role::Out, "u16.16"),
+              field("ref", vec::Role::Ref, "f64")};
   b.sets = {"golden", "stiff", "random"};
   b.inputs = clip_inputs;
   const clip::Variant* v = &clip::variant(variant);
@@ -101,8 +97,8 @@ std::vector<Block> make_gauss_blocks() {
   Block w;
   w.name = "gauss_weight";
   w.description = "Gaussian weight (1 - Q/2)^8, three squarings, II = 1";
-  w.fields = {F("q", vec::Role::In, "u16.14"), F("w", vec::Role::Out, "u17.16"),
-              F("ref", vec::Role::Ref, "f64")};
+  w.fields = {field("q", vec::Role::In, "u16.14"), field("w", vec::Role::Out, "u17.16"),
+              field("ref", vec::Role::Ref, "f64")};
   w.sets = {"golden", "stiff", "random"};
   w.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
     std::vector<Row> rows;
@@ -134,8 +130,8 @@ std::vector<Block> make_gauss_blocks() {
   Block t = w;
   t.name = "weight_table_1d";
   t.description = "Gaussian weight from a 1-D table by Q (N = 256), linear interpolation, II = 1";
-  t.fields = {F("q", vec::Role::In, "u16.14"), F("w", vec::Role::Out, "u16.16"),
-              F("ref", vec::Role::Ref, "f64")};
+  t.fields = {field("q", vec::Role::In, "u16.14"), field("w", vec::Role::Out, "u16.16"),
+              field("ref", vec::Role::Ref, "f64")};
   t.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
     std::vector<Row> rows;
     const uint64_t one = uint64_t(1) << fmt::kGaussQF;

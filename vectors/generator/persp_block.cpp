@@ -209,24 +209,17 @@ Block make_persp() {
       "perspective divide: u = p_u/q, v = p_v/q per pixel, incremental accumulators, "
       "reciprocal + 2 multiplies, II = 1";
   auto fmt_s = [](int w, int f) { return "s" + std::to_string(w) + "." + std::to_string(f); };
-  auto F = [](const char* n, vec::Role r, const std::string& f) {
-    return vec::Field{n, r, vec::FieldFormat::parse(f)};
-  };
   const std::string pf = fmt_s(kPW, fmt::kPerspF), qf = fmt_s(kQW, fmt::kPerspF),
                     uvf = fmt_s(fmt::kPerspUvW, fmt::kPerspUvF);
-  b.fields = {F("pu0", vec::Role::In, pf),  F("pv0", vec::Role::In, pf),
-              F("q0", vec::Role::In, qf),   F("a", vec::Role::In, pf),
-              F("d", vec::Role::In, pf),    F("g", vec::Role::In, qf),
-              F("n", vec::Role::In, "u" + std::to_string(kN) + ".0"),
-              F("u", vec::Role::Out, uvf),  F("v", vec::Role::Out, uvf),
-              F("flag", vec::Role::Out, "u1.0"),
-              F("uref", vec::Role::Ref, "f64"), F("vref", vec::Role::Ref, "f64")};
+  b.fields = {field("pu0", vec::Role::In, pf),  field("pv0", vec::Role::In, pf),
+              field("q0", vec::Role::In, qf),   field("a", vec::Role::In, pf),
+              field("d", vec::Role::In, pf),    field("g", vec::Role::In, qf),
+              field("n", vec::Role::In, "u" + std::to_string(kN) + ".0"),
+              field("u", vec::Role::Out, uvf),  field("v", vec::Role::Out, uvf),
+              field("flag", vec::Role::Out, "u1.0"),
+              field("uref", vec::Role::Ref, "f64"), field("vref", vec::Role::Ref, "f64")};
   b.sets = {"golden", "stiff", "random"};
-  b.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
-    if (set == "golden") return golden_inputs();
-    if (set == "stiff") return stiff_inputs();
-    return random_inputs(count, seed);
-  };
+  b.inputs = standard_sets(golden_inputs, stiff_inputs, random_inputs);
   b.model = [](const Row& in) { return model_at(in, static_cast<int64_t>(in[6])); };
   b.ref = [](const Row& in) { return ref_at(in, 0); };
   b.error = [](const Row& in, const Row& out, const Row& ref) { return pixel_error(in, out, ref, 0); };
@@ -257,20 +250,17 @@ Block make_persp_k4() {
   Block b;
   b.name = "persp_k4";
   b.description = "perspective divide, 4 lanes: 4 pixels per clock (p_n = p_{n-4} + 4A), II = 1";
-  auto F = [](const std::string& n, vec::Role r, const std::string& f) {
-    return vec::Field{n, r, vec::FieldFormat::parse(f)};
-  };
   b.fields.assign(px.fields.begin(), px.fields.begin() + 7);
   const std::string uvf = "s" + std::to_string(fmt::kPerspUvW) + "." + std::to_string(fmt::kPerspUvF);
   for (int j = 0; j < kLanes; ++j) {
     const std::string k = std::to_string(j);
-    b.fields.push_back(F("u" + k, vec::Role::Out, uvf));
-    b.fields.push_back(F("v" + k, vec::Role::Out, uvf));
-    b.fields.push_back(F("flag" + k, vec::Role::Out, "u1.0"));
+    b.fields.push_back(field("u" + k, vec::Role::Out, uvf));
+    b.fields.push_back(field("v" + k, vec::Role::Out, uvf));
+    b.fields.push_back(field("flag" + k, vec::Role::Out, "u1.0"));
   }
   for (int j = 0; j < kLanes; ++j) {
-    b.fields.push_back(F("uref" + std::to_string(j), vec::Role::Ref, "f64"));
-    b.fields.push_back(F("vref" + std::to_string(j), vec::Role::Ref, "f64"));
+    b.fields.push_back(field("uref" + std::to_string(j), vec::Role::Ref, "f64"));
+    b.fields.push_back(field("vref" + std::to_string(j), vec::Role::Ref, "f64"));
   }
   b.sets = px.sets;
   b.inputs = [px](const std::string& set, uint64_t count, uint64_t seed) {

@@ -63,20 +63,13 @@ std::vector<Row> random_inputs(uint64_t count, uint64_t seed) {
 Block make_pom_layers() {
   Block b;
   b.name = "pom_layers";
-  b.description = "adaptive POM layer count N = floor(Nmin + F(|Vz|)*(...)), F ROM, II = 1";
-  auto F = [](const char* n, vec::Role r, const char* f) {
-    return vec::Field{n, r, vec::FieldFormat::parse(f)};
-  };
-  b.fields = {F("vz", vec::Role::In, "s16.14"),  F("c", vec::Role::In, "u8.0"),
-              F("nmin", vec::Role::In, "u6.0"),  F("nmax", vec::Role::In, "u6.0"),
-              F("n", vec::Role::Out, "u6.0"),    F("neg", vec::Role::Out, "u1.0"),
-              F("ref", vec::Role::Ref, "f64")};
+  b.description = "adaptive POM layer count N = floor(Nmin + field(|Vz|)*(...)), F ROM, II = 1";
+  b.fields = {field("vz", vec::Role::In, "s16.14"),  field("c", vec::Role::In, "u8.0"),
+              field("nmin", vec::Role::In, "u6.0"),  field("nmax", vec::Role::In, "u6.0"),
+              field("n", vec::Role::Out, "u6.0"),    field("neg", vec::Role::Out, "u1.0"),
+              field("ref", vec::Role::Ref, "f64")};
   b.sets = {"golden", "stiff", "random"};
-  b.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
-    if (set == "golden") return golden_inputs();
-    if (set == "stiff") return stiff_inputs();
-    return random_inputs(count, seed);
-  };
+  b.inputs = standard_sets(golden_inputs, stiff_inputs, random_inputs);
   b.model = [](const Row& in) {
     const auto r = pom::layers(static_cast<int32_t>(vec::sext(in[0], kVzW)),
                                static_cast<uint32_t>(in[1]), static_cast<uint32_t>(in[2]),

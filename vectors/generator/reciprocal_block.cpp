@@ -75,18 +75,11 @@ Block make_reciprocal() {
   Block b;
   b.name = "reciprocal";
   b.description = "1/q, piecewise-quadratic ROM + Horner, faithful (< 1 ULP), II = 1";
-  auto F = [](const char* n, vec::Role r, const char* f) {
-    return vec::Field{n, r, vec::FieldFormat::parse(f)};
-  };
-  b.fields = {F("q", vec::Role::In, "s24.16"), F("mant", vec::Role::Out, "u25.24"),
-              F("shift", vec::Role::Out, "u5.0"), F("flag", vec::Role::Out, "u1.0"),
-              F("ref", vec::Role::Ref, "f64")};
+  b.fields = {field("q", vec::Role::In, "s24.16"), field("mant", vec::Role::Out, "u25.24"),
+              field("shift", vec::Role::Out, "u5.0"), field("flag", vec::Role::Out, "u1.0"),
+              field("ref", vec::Role::Ref, "f64")};
   b.sets = {"golden", "stiff", "random"};
-  b.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
-    if (set == "golden") return golden_inputs();
-    if (set == "stiff") return stiff_inputs();
-    return random_inputs(count, seed);
-  };
+  b.inputs = standard_sets(golden_inputs, stiff_inputs, random_inputs);
   b.model = [](const Row& in) {
     const auto r = recip::eval(static_cast<int32_t>(vec::sext(in[0], kW)));
     return Row{r.mant, r.shift, r.flag ? 1u : 0u};
