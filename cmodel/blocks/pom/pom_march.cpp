@@ -67,29 +67,15 @@ MarchOut march(const img::Gray8& depth, int64_t u, int64_t v, const View& view, 
   o.back = p.back;
   o.clamped = p.clamped;
   const int64_t du = mul_recip(p.pu, n), dv = mul_recip(p.pv, n);
-  const int64_t N = n;
-  int64_t tu = u, tv = v, pu = u, pv = v;
-  int64_t h = tex_nearest(depth, tu, tv), hp = h;
-  int64_t i = 0;
-  while (255 * i < h * N) {  // exact: i/N < h/255
-    pu = tu;
-    pv = tv;
-    hp = h;
-    tu -= du;
-    tv -= dv;
-    h = tex_nearest(depth, tu, tv);
-    ++i;
-  }
-  o.steps = static_cast<uint32_t>(i);
-  if (i > 0) {
-    const int64_t a = 255 * i - h * N;              // -(after), >= 0
-    const int64_t b = hp * N - 255 * (i - 1);       // before, > 0
-    const int64_t w = std::min<int64_t>(mul_recip(a << fmt::kPomWF, a + b), int64_t(1) << fmt::kPomWF);
+  const MarchCore c = march_core(depth, u, v, du, dv, n);
+  o.steps = c.steps;
+  int64_t tu = c.u, tv = c.v;
+  if (c.steps > 0) {
+    const int64_t a = c.a, den = c.den;
+    const int64_t w = std::min<int64_t>(mul_recip(a << fmt::kPomWF, den), int64_t(1) << fmt::kPomWF);
     o.w = static_cast<uint32_t>(w);
     tu += rsh(w * du, fmt::kPomWF);
     tv += rsh(w * dv, fmt::kPomWF);
-    (void)pu;
-    (void)pv;
   }
   if (wrap) {
     tu &= kUvOne - 1;
@@ -100,6 +86,32 @@ MarchOut march(const img::Gray8& depth, int64_t u, int64_t v, const View& view, 
   o.u = tu;
   o.v = tv;
   return o;
+}
+
+MarchCore march_core(const img::Gray8& depth, int64_t u, int64_t v, int64_t du, int64_t dv,
+                     uint32_t n) {
+  const int64_t N = n;
+  int64_t tu = u, tv = v;
+  int64_t h = tex_nearest(depth, tu, tv), hp = h;
+  int64_t i = 0;
+  while (255 * i < h * N) {  // exact: i/N < h/255
+    hp = h;
+    tu -= du;
+    tv -= dv;
+    h = tex_nearest(depth, tu, tv);
+    ++i;
+  }
+  MarchCore c;
+  c.u = tu;
+  c.v = tv;
+  c.steps = static_cast<uint32_t>(i);
+  if (i > 0) {
+    const int64_t a = 255 * i - h * N;         // -(after), >= 0
+    const int64_t b = hp * N - 255 * (i - 1);  // before, > 0
+    c.a = static_cast<uint32_t>(a);
+    c.den = static_cast<uint32_t>(a + b);
+  }
+  return c;
 }
 
 MarchRef march_ref(const img::Gray8& depth, double u, double v, double vx, double vy, double vz,

@@ -57,6 +57,16 @@ struct MarchOut {
 MarchOut march(const img::Gray8& depth, int64_t u, int64_t v, const View& view, uint32_t n,
                bool wrap);
 
+// The march loop alone (the RTL engine tu_pom_march): from T = (u, v), step dT = (du, dv),
+// N layers. Returns T_k, k, and the refinement operands a = 255k - h_k N, den = a + b
+// (b = h_{k-1} N - 255(k-1)); k = 0 gives a = den = 0.
+struct MarchCore {
+  int64_t u = 0, v = 0;
+  uint32_t steps = 0, a = 0, den = 0;
+};
+MarchCore march_core(const img::Gray8& depth, int64_t u, int64_t v, int64_t du, int64_t dv,
+                     uint32_t n);
+
 // Float reference (double): the same |Vz| guard, P = Vxy/a*S and dT = P/N unquantised, the same
 // exact loop rule, exact refinement weight. Any n >= 1 (the quality reference uses 256).
 struct MarchRef {

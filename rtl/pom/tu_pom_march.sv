@@ -1,0 +1,123 @@
+// POM march engine (docs/blocks/relief.md §6): one layer step per clock.
+// Per pixel: T = (u, v), step dT = (du, dv) (uv: PomUvW bits, PomUvF fraction), N layers.
+//   h_0 = depth(T); while 255*i < h_i*N: T -= dT, h = depth(T), i++      (exact integer rule)
+//   out: T_k, k, a = 255k - h_k*N, den = a + h_{k-1}*N - 255(k-1)   (k = 0: a = den = 0)
+// Depth map: a synchronous 8-bit ROM model (nearest, REPEAT: texel = uv[15:10] of a 64x64 map)
+// holding the procedural bricks map pom::map_bricks(64) (flat faces 26, bevels 153 / 89, mortar
+// 255); that map repeats every 32 texels, so the ROM is addressed by uv[14:10].
+// The address of T_{i+1} = T_i - dT is issued every RUN cycle, so the sample is ready on the
+// next cycle: a pixel takes k + 3 cycles (accept, k + 1 compares, output), no stalls.
+module tu_pom_march
+(
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+  input  logic                                in_valid_i,
+  output logic                                in_ready_o,
+  input  logic [tu_formats_pkg::PomUvW-1:0]   u_i,
+  input  logic [tu_formats_pkg::PomUvW-1:0]   v_i,
+  input  logic [tu_formats_pkg::PomUvW-1:0]   du_i,
+  input  logic [tu_formats_pkg::PomUvW-1:0]   dv_i,
+  input  logic [tu_formats_pkg::PomNW-1:0]    n_i,
+  output logic                                out_valid_o,
+  input  logic                                out_ready_i,
+  output logic [tu_formats_pkg::PomUvW-1:0]   u_o,
+  output logic [tu_formats_pkg::PomUvW-1:0]   v_o,
+  output logic [tu_formats_pkg::PomNW-1:0]    steps_o,
+  output logic [15:0]                         a_o,
+  output logic [15:0]                         den_o
+);
+  localparam int unsigned UvW = tu_formats_pkg::PomUvW;
+  localparam int unsigned NW = tu_formats_pkg::PomNW;
+  localparam int unsigned TexLsb = tu_formats_pkg::PomUvF - 6;
+
+  typedef enum logic [1:0] {Idle, Run, Done} state_e;
+  state_e state_q;
+
+  logic [UvW-1:0] tu_q, tv_q, du_q, dv_q;
+  logic [NW-1:0]  n_q, i_q;
+  logic [7:0]     h_q, hp_q;  // h_q: ROM output = depth(T_i); hp_q: depth(T_{i-1})
+
+  // Depth ROM (bricks 64x64), combinational part.
+  function automatic logic [7:0] bricks(input logic [4:0] x, input logic [4:0] y);
+    logic [4:0] xs;
+    logic [4:0] xm, dx;
+    logic [3:0] ym, dy, m;
+    xs = x + (y[4] ? 5'd16 : 5'd0);
+    xm = xs;
+    dx = (xm < 5'd16) ? xm : 5'd31 - xm;
+    ym = y[3:0];
+    dy = (ym < 4'd8) ? ym : 4'd15 - ym;
+    m  = (dx[3:0] < dy && dx[4] == 1'b0) ? dx[3:0] : dy;
+    unique case (m)
+      4'd0:    bricks = 8'd255;
+      4'd1:    bricks = 8'd153;
+      4'd2:    bricks = 8'd89;
+      default: bricks = 8'd26;
+    endcase
+  endfunction
+
+  logic [UvW-1:0] nu, nv;         // next T
+  logic [4:0]     ax, ay;         // ROM address (the 64x64 bricks map has period 32)
+  logic           go;             // continue marching
+  logic [15:0]    lhs, rhs, rhs_p;   // 255*i, h*N, h_prev*N (< 2^14)
+  logic           fire_in;
+
+  assign fire_in = in_valid_i && in_ready_o;
+  assign in_ready_o = (state_q == Idle);
+  assign out_valid_o = (state_q == Done);
+
+  always_comb begin
+    nu = tu_q - du_q;
+    nv = tv_q - dv_q;
+    lhs = 16'(8'd255 * i_q);
+    rhs = 16'(h_q * n_q);
+    rhs_p = 16'(hp_q * n_q);
+    go = lhs < rhs;
+    if (state_q == Idle) begin
+      ax = u_i[TexLsb +: 5];
+      ay = v_i[TexLsb +: 5];
+    end else begin
+      ax = nu[TexLsb +: 5];
+      ay = nv[TexLsb +: 5];
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      state_q <= Idle;
+      tu_q <= '0; tv_q <= '0; du_q <= '0; dv_q <= '0;
+      n_q <= '0; i_q <= '0; h_q <= '0; hp_q <= '0;
+      u_o <= '0; v_o <= '0; steps_o <= '0; a_o <= '0; den_o <= '0;
+    end else begin
+      // synchronous ROM: the address of this cycle is read at the edge
+      if (state_q == Idle || (state_q == Run && go)) h_q <= bricks(ax, ay);
+      unique case (state_q)
+        Idle: if (fire_in) begin
+          tu_q <= u_i; tv_q <= v_i; du_q <= du_i; dv_q <= dv_i; n_q <= n_i;
+          i_q <= '0;
+          state_q <= Run;
+        end
+        Run: if (go) begin
+          hp_q <= h_q;
+          tu_q <= nu;
+          tv_q <= nv;
+          i_q <= i_q + 1'b1;
+        end else begin
+          u_o <= tu_q;
+          v_o <= tv_q;
+          steps_o <= i_q;
+          if (i_q == '0) begin
+            a_o <= '0;
+            den_o <= '0;
+          end else begin
+            a_o <= lhs - rhs;
+            den_o <= (lhs - rhs) + (rhs_p - (lhs - 16'd255));
+          end
+          state_q <= Done;
+        end
+        Done: if (out_ready_i) state_q <= Idle;
+        default: state_q <= Idle;
+      endcase
+    end
+  end
+endmodule
