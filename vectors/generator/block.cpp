@@ -9,6 +9,7 @@ Block make_reciprocal();  // reciprocal_block.cpp
 std::vector<Block> make_gauss_blocks();  // gauss_blocks.cpp
 Block make_pom_layers();  // pom_layers_block.cpp
 Block make_pom_march();   // pom_march_block.cpp
+Block make_iter_parallax();  // iter_parallax_block.cpp
 Block make_persp();       // persp_block.cpp
 Block make_persp_k4();    // persp_block.cpp
 
@@ -19,6 +20,7 @@ const std::vector<Block>& all() {
     for (auto& g : make_gauss_blocks()) b.push_back(std::move(g));
     b.push_back(make_pom_layers());
     b.push_back(make_pom_march());
+    b.push_back(make_iter_parallax());
     b.push_back(make_persp());
     b.push_back(make_persp_k4());
     return b;

@@ -1,0 +1,114 @@
+// Iterative parallax engine (seed 002; docs/blocks/relief.md §7): one iteration per clock.
+//   D = 0; loop: d = depth(T)*257 - D; stop if |d| < IpxEps, or flag nonconv at IpxCap updates;
+//   T -= round(d*(su, sv) / 2^16); D += round(d*sh / 2^16)           (3 multiplies, 4 adds)
+// Outputs fract(T) (16 bits each), the update count and the non-convergence flag.
+// Depth: the same synchronous bricks ROM model as tu_pom_march (uv[14:10]).
+// A pixel takes iters + 3 cycles (accept, iters + 1 tests, output), no stalls.
+module tu_iter_parallax
+(
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+  input  logic                                in_valid_i,
+  output logic                                in_ready_o,
+  input  logic [tu_formats_pkg::PomUvW-1:0]   u_i,
+  input  logic [tu_formats_pkg::PomUvW-1:0]   v_i,
+  input  logic [tu_formats_pkg::PomUvW-1:0]   su_i,
+  input  logic [tu_formats_pkg::PomUvW-1:0]   sv_i,
+  input  logic [tu_formats_pkg::PomUvW-1:0]   sh_i,
+  output logic                                out_valid_o,
+  input  logic                                out_ready_i,
+  output logic [15:0]                         u_o,
+  output logic [15:0]                         v_o,
+  output logic [4:0]                          iters_o,
+  output logic                                nonconv_o
+);
+  localparam int unsigned UvW = tu_formats_pkg::PomUvW;
+  localparam int unsigned TexLsb = tu_formats_pkg::PomUvF - 6;
+
+  typedef enum logic [1:0] {Idle, Run, Done} state_e;
+  state_e state_q;
+
+  logic signed [UvW-1:0] tu_q, tv_q, su_q, sv_q, sh_q, d_acc_q;  // d_acc_q: ray depth D
+  logic [4:0]            i_q;
+  logic [7:0]            h_q;
+
+  function automatic logic [7:0] bricks(input logic [4:0] x, input logic [4:0] y);
+    logic [4:0] xs, xm;
+    logic [3:0] dx, ym, dy, m;
+    xs = x + (y[4] ? 5'd16 : 5'd0);
+    xm = xs;
+    dx = xm[4] ? 4'd15 - xm[3:0] : xm[3:0];
+    ym = y[3:0];
+    dy = (ym < 4'd8) ? ym : 4'd15 - ym;
+    m  = (dx < dy) ? dx : dy;
+    unique case (m)
+      4'd0:    bricks = 8'd255;
+      4'd1:    bricks = 8'd153;
+      4'd2:    bricks = 8'd89;
+      default: bricks = 8'd26;
+    endcase
+  endfunction
+
+  logic signed [UvW-1:0] d, ad, nu, nv, nd;
+  logic signed [63:0]    pu, pv, ph;
+  logic [4:0]            ax, ay;
+  logic                  conv, capped, upd, fire_in;
+
+  assign fire_in = in_valid_i && in_ready_o;
+  assign in_ready_o = (state_q == Idle);
+  assign out_valid_o = (state_q == Done);
+
+  always_comb begin
+    d = $signed({16'd0, h_q, h_q}) - d_acc_q;         // h*257 - D
+    ad = d[UvW-1] ? -d : d;
+    conv = ad < $signed(UvW'(tu_formats_pkg::IpxEps));
+    capped = (32'(i_q) == tu_formats_pkg::IpxCap);
+    upd = (state_q == Run) && !conv && !capped;
+    pu = 64'(d) * 64'(su_q) + 64'sd32768;
+    pv = 64'(d) * 64'(sv_q) + 64'sd32768;
+    ph = 64'(d) * 64'(sh_q) + 64'sd32768;
+    nu = tu_q - UvW'(pu >>> 16);
+    nv = tv_q - UvW'(pv >>> 16);
+    nd = d_acc_q + UvW'(ph >>> 16);
+    if (state_q == Idle) begin
+      ax = u_i[TexLsb +: 5];
+      ay = v_i[TexLsb +: 5];
+    end else begin
+      ax = nu[TexLsb +: 5];
+      ay = nv[TexLsb +: 5];
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      state_q <= Idle;
+      tu_q <= '0; tv_q <= '0; su_q <= '0; sv_q <= '0; sh_q <= '0; d_acc_q <= '0;
+      i_q <= '0; h_q <= '0;
+      u_o <= '0; v_o <= '0; iters_o <= '0; nonconv_o <= 1'b0;
+    end else begin
+      if (state_q == Idle || upd) h_q <= bricks(ax, ay);  // synchronous ROM
+      unique case (state_q)
+        Idle: if (fire_in) begin
+          tu_q <= u_i; tv_q <= v_i; su_q <= su_i; sv_q <= sv_i; sh_q <= sh_i;
+          d_acc_q <= '0;
+          i_q <= '0;
+          state_q <= Run;
+        end
+        Run: if (upd) begin
+          tu_q <= nu;
+          tv_q <= nv;
+          d_acc_q <= nd;
+          i_q <= i_q + 1'b1;
+        end else begin
+          u_o <= tu_q[15:0];
+          v_o <= tv_q[15:0];
+          iters_o <= i_q;
+          nonconv_o <= !conv;
+          state_q <= Done;
+        end
+        Done: if (out_ready_i) state_q <= Idle;
+        default: state_q <= Idle;
+      endcase
+    end
+  end
+endmodule
