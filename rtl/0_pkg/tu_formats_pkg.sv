@@ -76,5 +76,22 @@ package tu_formats_pkg;
   localparam int unsigned TexLodF = 8;  // LOD fraction bits: trilinear blend weight
   localparam int unsigned TexMaxLevels = 13;  // mip levels: up to 4096 texels on a side
   localparam int unsigned PerspLatency = 8;  // per-pixel pipeline latency in cycles, II = 1
+  localparam int unsigned EllNumW = 48;  // derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac
+  localparam int unsigned EllNumF = 32;
+  localparam int unsigned EllDetW = 40;  // det3 of the 3x3 map (per triangle): signed normalised mantissa
+  localparam int unsigned EllDetExpW = 8;  // det3 exponent: signed, det3 = dm * 2^(dexp - (EllDetW - 2))
+  localparam int unsigned EllCoefW = 64;  // Ae', Ce' (unsigned), Be' (signed) codes: exact sums >> EllEexp (floor)
+  localparam int unsigned EllEexpW = 6;  // shared exponent of Ae', Be', Ce': value = code * 2^(eexp - 2 EllNumF)
+  localparam int unsigned EllFmW = 32;  // |f| mantissa (1.31, truncated); Fe' = f^2, f = det3/q
+  localparam int unsigned EllFexpW = 8;  // |f| exponent: signed, |f| = fm * 2^(fexp - 31)
+  localparam int unsigned EllNrmW = 24;  // LOD unit: s = Ae'+Ce' block-normalised to this many bits (floor shifts)
+  localparam int unsigned EllLogMantW = 24;  // log2 unit mantissa (1.23, truncated); EllLogF+1 squarings
+  localparam int unsigned EllLogF = 10;  // log2 of the axes: EllLogF fraction bits (internal EllLogF+1)
+  localparam int unsigned EllLogW = 18;  // log2 major / minor_clamped: signed, EllLogF fraction bits
+  localparam int unsigned EllAnisoW = 14;  // log2(max anisotropy): unsigned, EllLogF fraction bits (default 16:1)
+  localparam int unsigned EllLodW = 12;  // lod: unsigned, EllLodF fraction bits, floor, clamped to [0, max_lod]
+  localparam int unsigned EllLodF = 8;
+  localparam int unsigned EllMaxLodW = 4;  // max_lod (log2 of the texture size): unsigned integer
+  localparam int unsigned EllLatency = 5;  // analytic ellipse/LOD pipeline latency in cycles, II = 1
   /* verilator lint_on UNUSEDPARAM */
 endpackage

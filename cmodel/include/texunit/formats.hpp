@@ -86,7 +86,25 @@
   X(TexWeightF, 8, "bilinear weights out of 2^TexWeightF (truncated from TexUvF bits)")     \
   X(TexLodF, 8, "LOD fraction bits: trilinear blend weight")                                 \
   X(TexMaxLevels, 13, "mip levels: up to 4096 texels on a side")                             \
-  X(PerspLatency, 8, "per-pixel pipeline latency in cycles, II = 1")
+  X(PerspLatency, 8, "per-pixel pipeline latency in cycles, II = 1")                          \
+  /* Ellipse parameters and LOD (docs/blocks/ellipse.md) */                                    \
+  X(EllNumW, 48, "derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac") \
+  X(EllNumF, 32, "")                                                                            \
+  X(EllDetW, 40, "det3 of the 3x3 map (per triangle): signed normalised mantissa")            \
+  X(EllDetExpW, 8, "det3 exponent: signed, det3 = dm * 2^(dexp - (EllDetW - 2))")              \
+  X(EllCoefW, 64, "Ae', Ce' (unsigned), Be' (signed) codes: exact sums >> EllEexp (floor)")     \
+  X(EllEexpW, 6, "shared exponent of Ae', Be', Ce': value = code * 2^(eexp - 2 EllNumF)")      \
+  X(EllFmW, 32, "|f| mantissa (1.31, truncated); Fe' = f^2, f = det3/q")                         \
+  X(EllFexpW, 8, "|f| exponent: signed, |f| = fm * 2^(fexp - 31)")                              \
+  X(EllNrmW, 24, "LOD unit: s = Ae'+Ce' block-normalised to this many bits (floor shifts)")     \
+  X(EllLogMantW, 24, "log2 unit mantissa (1.23, truncated); EllLogF+1 squarings")               \
+  X(EllLogF, 10, "log2 of the axes: EllLogF fraction bits (internal EllLogF+1)")                \
+  X(EllLogW, 18, "log2 major / minor_clamped: signed, EllLogF fraction bits")                   \
+  X(EllAnisoW, 14, "log2(max anisotropy): unsigned, EllLogF fraction bits (default 16:1)")      \
+  X(EllLodW, 12, "lod: unsigned, EllLodF fraction bits, floor, clamped to [0, max_lod]")        \
+  X(EllLodF, 8, "")                                                                             \
+  X(EllMaxLodW, 4, "max_lod (log2 of the texture size): unsigned integer")                      \
+  X(EllLatency, 5, "analytic ellipse/LOD pipeline latency in cycles, II = 1")
 
 namespace tu::fmt {
 #define TU_X_DECLARE(name, value, desc) inline constexpr int k##name = (value);

@@ -1,0 +1,325 @@
+#include "ellipse_fx.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "reciprocal/reciprocal.hpp"
+
+namespace tu::ellipse::fx {
+
+namespace {
+constexpr int kPF = fmt::kPerspF;
+constexpr int kNF = fmt::kEllNumF;
+constexpr int kL1 = fmt::kEllLogF + 1;  // internal log fraction bits
+constexpr int64_t kGuard = int64_t(1) << (kPF - fmt::kPerspGuardLog2);
+
+int msb(u128 x) {  // x > 0
+  const uint64_t hi = static_cast<uint64_t>(x >> 64);
+  return hi ? 127 - std::countl_zero(hi) : 63 - std::countl_zero(static_cast<uint64_t>(x));
+}
+i128 sat(i128 v, int w) {
+  const i128 hi = (i128(1) << (w - 1)) - 1, lo = -(i128(1) << (w - 1));
+  return std::clamp(v, lo, hi);
+}
+i128 rnd(i128 v, int d) { return detail::shift_round(v, d, Round::HalfUp); }
+// Top `w` bits of x > 0 (truncated or zero-filled): a mantissa 1.(w-1).
+u128 top_bits(u128 x, int w) {
+  const int p = msb(x);
+  return p >= w - 1 ? x >> (p - (w - 1)) : x << ((w - 1) - p);
+}
+// Reciprocal of a positive value x (raw): R (u25.24) and e = msb(x) so that 1/x ~ R 2^(-24-e).
+uint64_t recip_of(u128 x, int* e) {
+  *e = msb(x);
+  const u128 m = top_bits(x, fmt::kRecipMantW);
+  return static_cast<uint64_t>(recip::core(recip::Mant::from_raw(static_cast<i128>(m))).raw());
+}
+
+// Ellipse from the numerators (or Jacobian entries): exact sums at 2 NumF fraction bits, output
+// in block floating point: codes = sums >> k (floor), k = max(0, msb(Ae'+Ce') - 61).
+struct Ell {
+  i128 a, b, c;  // exact
+  u128 s;        // a + c
+};
+Ell ellipse_of(int64_t ux, int64_t vx, int64_t uy, int64_t vy) {
+  const i128 a = i128(vx) * vx + i128(vy) * vy, c = i128(ux) * ux + i128(uy) * uy;
+  const i128 b = -2 * (i128(ux) * vx + i128(uy) * vy);
+  return {a, b, c, static_cast<u128>(a) + static_cast<u128>(c)};
+}
+void set_ellipse(const Ell& el, Out* o) {
+  const int k = el.s == 0 ? 0 : std::max(0, msb(el.s) - (fmt::kEllCoefW - 3));
+  o->ae = static_cast<uint64_t>(el.a >> k);
+  o->ce = static_cast<uint64_t>(el.c >> k);
+  o->be = static_cast<int64_t>(el.b >> k);
+  o->eexp = static_cast<uint32_t>(k);
+}
+
+// The shared LOD unit. lf: log2|f| (kL1 fraction bits) or none (f == 0); lq: log2 q (0 for the
+// forward difference, whose ellipse is not scaled).
+void lod_unit(const In& in, const Ell& el, bool f_zero, int64_t lf, int64_t lq, Out* o) {
+  const u128 s = el.s;
+  if (s == 0) {
+    o->flags |= kDegenerate | kMagnify;
+    o->lmaj = o->lmin = kLogNegInf;
+    o->lod = 0;
+    return;
+  }
+  const i128 d = el.a - el.c, b = el.b;
+  const int k = std::max(0, msb(s) - (fmt::kEllNrmW - 1));
+  const i128 sn = static_cast<i128>(s >> k), dn = d >> k, bn = b >> k;
+  const uint64_t r = isqrt(static_cast<u128>(dn * dn + bn * bn));
+  const u128 lam = static_cast<u128>(sn) + r;  // 2 lambda_max, scaled by 2^(k - NumF)
+  const int64_t ll = log2_fx(lam) + int64_t(k - 2 * kNF - 1) * (1 << kL1);  // log2 lambda_max
+  const int64_t lmaj2 = ll - 4 * lq;                                     // 2 log2 major
+  auto to_out = [](int64_t l2) {  // 2 log2 (kL1 frac) -> log2 (EllLogF frac), floor, saturate
+    return static_cast<int32_t>(sat(l2 >> 2, fmt::kEllLogW));
+  };
+  const int32_t lmaj = to_out(lmaj2);
+  const int32_t cap = static_cast<int32_t>(sat(int64_t(lmaj) - in.laniso, fmt::kEllLogW));
+  int32_t lmin;
+  if (f_zero) {
+    o->flags |= kDegenerate | kAnisoClamp;
+    lmin = cap;
+  } else {
+    lmin = to_out(2 * lf - ll);  // 2 log2 minor = log2 Fe' - log2 lambda_max
+    if (cap > lmin) {
+      o->flags |= kAnisoClamp;
+      lmin = cap;
+    }
+  }
+  o->lmaj = lmaj;
+  o->lmin = lmin;
+  const int32_t lod = lmin >> (fmt::kEllLogF - fmt::kEllLodF);
+  const int32_t top = static_cast<int32_t>(in.max_lod) << fmt::kEllLodF;
+  if (lod < 0) {
+    o->flags |= kMagnify;
+    o->lod = 0;
+  } else if (lod > top) {
+    o->flags |= kLodSat;
+    o->lod = static_cast<uint32_t>(top);
+  } else {
+    o->lod = static_cast<uint32_t>(lod);
+  }
+}
+
+void set_f(u128 af, int exp_off, Out* o) {  // |f| = af * 2^exp_off
+  const int p = msb(af);
+  o->fm = static_cast<uint32_t>(top_bits(af, fmt::kEllFmW));
+  o->fexp = std::clamp(p + exp_off, -(1 << (fmt::kEllFexpW - 1)), (1 << (fmt::kEllFexpW - 1)) - 1);
+}
+}  // namespace
+
+ExactNum numerators_direct(const Coefs& c, int x, int y) {
+  const auto s = persp::Unit::direct(c, x, y);
+  const i128 pu = s.pu.raw(), pv = s.pv.raw(), q = s.q.raw();
+  return {c.a.raw() * q - c.g.raw() * pu, c.d.raw() * q - c.g.raw() * pv,
+          c.b.raw() * q - c.h.raw() * pu, c.e.raw() * q - c.h.raw() * pv};
+}
+
+std::vector<ExactNum> numerators_span(const Coefs& c, int x0, int y, int n) {
+  const i128 a = c.a.raw(), b = c.b.raw(), cc = c.c.raw(), d = c.d.raw(), e = c.e.raw(),
+             f = c.f.raw(), g = c.g.raw(), h = c.h.raw(), i = c.i.raw();
+  const i128 m = a * h - b * g, nn = d * h - e * g;  // per triangle
+  // per scanline
+  const i128 nux = a * i - cc * g + m * y, nvx = d * i - f * g + nn * y;
+  i128 nuy = b * i - cc * h - m * x0, nvy = e * i - f * h - nn * x0;
+  std::vector<ExactNum> out;
+  for (int k = 0; k < n; ++k) {  // per pixel
+    out.push_back({nux, nvx, nuy, nvy});
+    nuy -= m;
+    nvy -= nn;
+  }
+  return out;
+}
+
+int64_t round_num(i128 n) { return static_cast<int64_t>(sat(rnd(n, 2 * kPF - kNF), fmt::kEllNumW)); }
+
+namespace {
+// Normalise an exact value v * 2^-f to the det3 float format (truncating the magnitude).
+void det_norm(i128 v, int f, int64_t* dm, int32_t* dexp) {
+  if (v == 0) {
+    *dm = 0;
+    *dexp = 0;
+    return;
+  }
+  const u128 av = static_cast<u128>(v < 0 ? -v : v);
+  const int p = msb(av);
+  const int64_t m = static_cast<int64_t>(top_bits(av, fmt::kEllDetW - 1));
+  *dm = v < 0 ? -m : m;
+  *dexp = p - f;
+}
+}  // namespace
+
+void det3(const Coefs& c, int64_t* dm, int32_t* dexp) {
+  const i128 a = c.a.raw(), b = c.b.raw(), cc = c.c.raw(), d = c.d.raw(), e = c.e.raw(),
+             f = c.f.raw(), g = c.g.raw(), h = c.h.raw(), i = c.i.raw();
+  const i128 m1 = rnd(e * i - f * h, kPF), m2 = rnd(d * i - f * g, kPF), m3 = rnd(d * h - e * g, kPF);
+  det_norm(a * m1 - b * m2 + cc * m3, 2 * kPF, dm, dexp);
+}
+
+double det3_value(const In& in) {
+  return std::ldexp(static_cast<double>(in.dm), in.dexp - (fmt::kEllDetW - 2));
+}
+
+In make_in(const Coefs& c, int x, int y, uint32_t laniso, uint32_t max_lod) {
+  const auto n = numerators_direct(c, x, y);
+  In in;
+  in.nux = round_num(n.nux);
+  in.nvx = round_num(n.nvx);
+  in.nuy = round_num(n.nuy);
+  in.nvy = round_num(n.nvy);
+  in.q = static_cast<int64_t>(persp::Unit::direct(c, x, y).q.raw());
+  det3(c, &in.dm, &in.dexp);
+  in.laniso = laniso;
+  in.max_lod = max_lod;
+  return in;
+}
+
+Coef9 local_map(const Local& l) {
+  // u = pu / q with pu = u q at the pixel: Ux = (A - G u) / q  ->  A = q Ux + G u, etc.
+  return {l.q * l.ux + l.g * l.u, l.q * l.uy + l.h * l.u, l.u * l.q,
+          l.q * l.vx + l.g * l.v, l.q * l.vy + l.h * l.v, l.v * l.q, l.g, l.h, l.q};
+}
+
+namespace {
+int64_t code(double v, int f, int w) {
+  const long double x = std::nearbyint(std::ldexp(static_cast<long double>(v), f));
+  const long double lim = std::ldexp(1.0L, w - 1);
+  if (!(x > -lim)) return static_cast<int64_t>(-lim);
+  if (x > lim - 1) return static_cast<int64_t>(lim - 1);
+  return static_cast<int64_t>(x);
+}
+}  // namespace
+
+int64_t q_code(double v) { return code(v, kPF, fmt::kPerspQW); }
+
+In in_from_map(const Coef9& k, uint32_t laniso, uint32_t max_lod) {
+  const auto n = ellipse::numerators(k, 0, 0);
+  In in;
+  in.nux = code(n.nux, kNF, fmt::kEllNumW);
+  in.nvx = code(n.nvx, kNF, fmt::kEllNumW);
+  in.nuy = code(n.nuy, kNF, fmt::kEllNumW);
+  in.nvy = code(n.nvy, kNF, fmt::kEllNumW);
+  in.q = q_code(n.q);
+  {
+    int ex;
+    const double m = std::frexp(ellipse::det3(k), &ex);  // |m| in [0.5, 1)
+    det_norm(static_cast<i128>(std::ldexp(m, 62)), 62 - ex, &in.dm, &in.dexp);
+  }
+  in.laniso = laniso;
+  in.max_lod = max_lod;
+  return in;
+}
+
+Local random_local(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> U(0, 1);
+  Local l;
+  l.q = std::exp2(-9 * U(rng));
+  const double s1 = std::min(std::exp2(-6 + 20 * U(rng)), std::exp2(13) / (l.q * l.q));
+  const double s2 = s1 * std::exp2(-10 * U(rng) * U(rng));
+  const double t = 2 * M_PI * U(rng), p = 2 * M_PI * U(rng), sg = U(rng) < 0.5 ? -1 : 1;
+  // J = R(t) diag(s1, sg s2) R(p)
+  const double ct = std::cos(t), st = std::sin(t), cp = std::cos(p), sp = std::sin(p);
+  l.ux = ct * s1 * cp - st * sg * s2 * sp;
+  l.uy = -ct * s1 * sp - st * sg * s2 * cp;
+  l.vx = st * s1 * cp + ct * sg * s2 * sp;
+  l.vy = -st * s1 * sp + ct * sg * s2 * cp;
+  l.g = l.q * (U(rng) - 0.5) / 32;
+  l.h = l.q * (U(rng) - 0.5) / 32;
+  l.u = (U(rng) - 0.5) * 8192;
+  l.v = (U(rng) - 0.5) * 8192;
+  return l;
+}
+
+int64_t log2_fx(u128 x) {
+  constexpr int mw = fmt::kEllLogMantW;
+  const int p = msb(x);
+  uint64_t m = static_cast<uint64_t>(top_bits(x, mw));
+  int64_t fr = 0;
+  for (int i = 0; i < kL1; ++i) {
+    m = static_cast<uint64_t>((u128(m) * m) >> (mw - 1));
+    const bool bit = m >> mw;
+    if (bit) m >>= 1;
+    fr = (fr << 1) | (bit ? 1 : 0);
+  }
+  return int64_t(p) * (1 << kL1) + fr;
+}
+
+uint64_t isqrt(u128 x) {
+  u128 r = 0;
+  for (int b = 63; b >= 0; --b) {
+    const u128 t = r | (u128(1) << b);
+    if (t * t <= x) r = t;
+  }
+  return static_cast<uint64_t>(r);
+}
+
+Out analytic(const In& in) {
+  Out o;
+  if (in.q < kGuard) {
+    o.flags = kHorizon;
+    return o;
+  }
+  const Ell el = ellipse_of(in.nux, in.nvx, in.nuy, in.nvy);
+  set_ellipse(el, &o);
+  int e;
+  const uint64_t r = recip_of(static_cast<u128>(in.q), &e);
+  const i128 p = i128(in.dm) * r;  // f = det3 / q = p * 2^(dexp - (DetW-2) - RecipOutF + PerspF - e)
+  const int off = in.dexp - (fmt::kEllDetW - 2) - fmt::kRecipOutF + kPF - e;
+  const u128 ap = static_cast<u128>(p < 0 ? -p : p);
+  int64_t lf = 0;
+  if (ap != 0) {
+    set_f(ap, off, &o);
+    lf = log2_fx(ap) + int64_t(off) * (1 << kL1);
+  }
+  // log2 q from the same (truncated) mantissa B1 uses: q ~ m 2^(e - (MantW-1) - PerspF)
+  const u128 mq = top_bits(static_cast<u128>(in.q), fmt::kRecipMantW);
+  const int64_t lq = log2_fx(mq) + int64_t(e - (fmt::kRecipMantW - 1) - kPF) * (1 << kL1);
+  lod_unit(in, el, ap == 0, lf, lq, &o);
+  return o;
+}
+
+Out forward_difference(const In& in, int64_t g, int64_t h) {
+  Out o;
+  if (in.q < kGuard || in.q + g < kGuard || in.q + h < kGuard) {
+    o.flags = kHorizon;
+    return o;
+  }
+  // U = n * 2^(2 PerspF) / dX, dX = q (q + G) (2 PerspF fraction bits): n R 2^(2 PF - 24 - e)
+  auto col = [&](int64_t qq, int64_t n1, int64_t n2, int64_t* u1, int64_t* u2) {
+    int e;
+    const uint64_t r = recip_of(static_cast<u128>(i128(in.q) * qq), &e);
+    const int sh = fmt::kRecipOutF + e - 2 * kPF;  // >= 4 for every unguarded q
+    *u1 = static_cast<int64_t>(sat(rnd(i128(n1) * r, sh), fmt::kEllNumW));
+    *u2 = static_cast<int64_t>(sat(rnd(i128(n2) * r, sh), fmt::kEllNumW));
+  };
+  int64_t ux, vx, uy, vy;
+  col(in.q + g, in.nux, in.nvx, &ux, &vx);
+  col(in.q + h, in.nuy, in.nvy, &uy, &vy);
+  const Ell el = ellipse_of(ux, vx, uy, vy);
+  set_ellipse(el, &o);
+  const i128 det = i128(ux) * vy - i128(uy) * vx;  // 2 NumF fraction bits
+  const u128 ad = static_cast<u128>(det < 0 ? -det : det);
+  int64_t lf = 0;
+  if (ad != 0) {
+    set_f(ad, -2 * kNF, &o);
+    lf = log2_fx(ad) - int64_t(2 * kNF) * (1 << kL1);
+  }
+  lod_unit(in, el, ad == 0, lf, 0, &o);
+  return o;
+}
+
+double lod_value(const Out& o) { return std::ldexp(double(o.lod), -fmt::kEllLodF); }
+double log_value(int32_t l) { return l == kLogNegInf ? -INFINITY : std::ldexp(double(l), -fmt::kEllLogF); }
+double fe_value(const Out& o) {
+  const double f = std::ldexp(double(o.fm), o.fexp - (fmt::kEllFmW - 1));
+  return f * f;
+}
+
+}  // namespace tu::ellipse::fx
+
+namespace tu::ellipse::fx {
+double coef_value(double code, const Out& o) {
+  return std::ldexp(code, static_cast<int>(o.eexp) - 2 * fmt::kEllNumF);
+}
+}  // namespace tu::ellipse::fx

@@ -1,0 +1,124 @@
+// Pixel footprint (B2), bit-accurate fixed-point model: ellipse coefficients, axes, anisotropy
+// clamp and mip LOD. Two Jacobian variants share everything after the Jacobian:
+//   * Analytic (production, rtl/ellipse/tu_ellipse.sv): numerators nUx, nVx, nUy, nVy of the
+//     derivatives (common denominator q^2), ellipse scaled by q^4, Fe' = (det3 * (1/q))^2: no
+//     division beyond B1's reciprocal of q.
+//   * Forward difference (seed recurrences, corrected): Ux = nUx / (q (q+G)), Uy = nUy / (q (q+H)),
+//     two reciprocals + four multiplies per pixel.
+// Numerators come from the B1 quantised coefficients (persp::Unit::Coefs, PerspF = 40 fraction
+// bits) exactly (80 fraction bits, i128), by direct evaluation or by the seed-001 §2.7
+// recurrences (x-numerators + M, + N per row, y-numerators - M, - N per pixel); both give the same
+// bits (exact integers), then are rounded half up to s(EllNumW).EllNumF.
+//
+// Formats (cmodel/include/texunit/formats.hpp, docs/blocks/ellipse.md):
+//   n*   : s48.32 numerators (analytic) or Jacobian entries (forward difference), texels*q^2 / px
+//   q    : s44.40 (B1 accumulator); horizon guard q < 2^-PerspGuardLog2 (incl. q <= 0)
+//   det3 : per-triangle determinant of [[A,B,C],[D,E,F],[G,H,I]] (set-up), floating point:
+//          det3 = dm * 2^(dexp - (EllDetW - 2)), dm s(EllDetW) normalised (|dm| in [2^(W-2), 2^(W-1))
+//          or 0), dexp s(EllDetExpW)
+//   ae,ce,be: the exact sums n^2 + n^2, -2 (n n + n n) (2 EllNumF fraction bits) in block floating
+//          point: codes (u64, u64, s64) = sum >> eexp (floor), eexp = max(0, msb(Ae'+Ce') - 61),
+//          value = code * 2^(eexp - 2 EllNumF)
+//   f    : |f| = fm * 2^(fexp - 31), fm u32 (1.31, truncated), fexp s8;  Fe' = f^2
+//          analytic f = det3 / q (via 1/q = R 2^(PerspF - e)), forward difference f = det J
+//   LOD unit: s = Ae'+Ce', d = Ae'-Ce', b = Be' (exact sums), block-normalised to EllNrmW bits (floor shifts),
+//          r = isqrt(d^2 + b^2) (floor), lam = s + r (= 2 sigma_max^2, scaled);
+//          L(x) = log2 by leading one + EllLogMantW-bit mantissa + (EllLogF+1) squarings (trunc);
+//          2 log2(major) = L(lam) - 1 - 4 log2(q),  2 log2(minor) = 2 L(f) - L(lam) + 1,
+//          logs kept with EllLogF+1 fraction bits, halved (floor) to s(EllLogW).EllLogF;
+//          minor_c = max(minor, major - log2(max_aniso)); lod = clamp(floor(minor_c), 0, max_lod)
+//          as u(EllLodW).EllLodF.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "ellipse/ellipse_ref.hpp"
+#include "persp/persp.hpp"
+#include "texunit/fixed.hpp"
+#include "texunit/formats.hpp"
+
+namespace tu::ellipse::fx {
+
+using Coefs = persp::Unit::Coefs;
+
+// Exact numerators at 2*PerspF fraction bits.
+struct ExactNum {
+  i128 nux, nvx, nuy, nvy;
+};
+ExactNum numerators_direct(const Coefs& c, int x, int y);
+// The corrected seed recurrences walked over a span [x0, x0 + n) of row y.
+std::vector<ExactNum> numerators_span(const Coefs& c, int x0, int y, int n);
+
+// Block inputs for one pixel (raw codes).
+struct In {
+  int64_t nux = 0, nvx = 0, nuy = 0, nvy = 0;  // s48.32
+  int64_t q = 0;                               // s44.40
+  int64_t dm = 0;                              // det3 mantissa, s40
+  int32_t dexp = 0;                            // det3 exponent, s8
+  uint32_t laniso = 4 << fmt::kEllLogF;         // log2(max aniso), u14.10 (default 16:1)
+  uint32_t max_lod = 12;                       // u4.0
+};
+
+enum Flag : uint32_t {
+  kHorizon = 1,      // q below the guard: no footprint, every other output 0
+  kDegenerate = 2,   // Fe' == 0 (line) or ae == ce == be == 0 (point)
+  kAnisoClamp = 4,   // minor axis grown to major / max_aniso
+  kLodSat = 8,       // footprint larger than the coarsest level: lod = max_lod
+  kMagnify = 16,     // minor_c < 1 texel: lod = 0
+};
+
+struct Out {
+  uint64_t ae = 0, ce = 0;  // block floating point, value = code * 2^(eexp - 2 EllNumF)
+  int64_t be = 0;
+  uint32_t eexp = 0;        // u(EllEexpW)
+  uint32_t fm = 0;          // u32 (1.31)
+  int32_t fexp = 0;         // s8
+  int32_t lmaj = 0, lmin = 0;  // log2 major, log2 minor_clamped, s18.10 (kLogNegInf if none)
+  uint32_t lod = 0;         // u12.8
+  uint32_t flags = 0;
+  friend bool operator==(const Out&, const Out&) = default;
+};
+inline constexpr int32_t kLogNegInf = -(1 << (fmt::kEllLogW - 1));
+
+// Round an exact numerator (2 PerspF fraction bits) to s48.32; saturates.
+int64_t round_num(i128 n);
+// det3 of the quantised coefficients (minors rounded to PerspF fraction bits first), normalised
+// (mantissa truncated toward zero).
+void det3(const Coefs& c, int64_t* dm, int32_t* dexp);
+double det3_value(const In& in);
+In make_in(const Coefs& c, int x, int y, uint32_t laniso = 4 << fmt::kEllLogF, uint32_t max_lod = 12);
+
+// A local projective map around pixel (0, 0): q, Jacobian J (texels per pixel), dq/dx = G,
+// dq/dy = H and (u, v) at the pixel. Any such tuple is the view of some plane.
+struct Local {
+  double q = 1, ux = 1, vx = 0, uy = 0, vy = 1, g = 0, h = 0, u = 0, v = 0;
+};
+Coef9 local_map(const Local& l);
+// Block inputs at pixel (0, 0) of a float map: numerators, q and det3 rounded to nearest (and
+// saturated) to their formats; G, H codes (s44.40) for the forward-difference variant.
+In in_from_map(const Coef9& k, uint32_t laniso = 4 << fmt::kEllLogF, uint32_t max_lod = 12);
+int64_t q_code(double v);
+// Random local map of the random vector set: q in [2^-9, 1], major axis 2^[-6, 14) texels with
+// q^2 major < 2^13, anisotropy up to 1024, random orientation and sign, |G|, |H| <= q/64.
+Local random_local(std::mt19937_64& rng);
+
+// Production (analytic) unit.
+Out analytic(const In& in);
+// Forward-difference unit (corrected seed recurrences): same inputs plus G, H of the triangle
+// (s44.40); n* of `in` are the same numerators.
+Out forward_difference(const In& in, int64_t g, int64_t h);
+
+// Log2 unit: x > 0 -> log2(x) with EllLogF + 1 fraction bits (truncating squarings).
+int64_t log2_fx(u128 x);
+// Integer square root, floor.
+uint64_t isqrt(u128 x);
+
+// Real values of the outputs.
+double lod_value(const Out& o);
+double log_value(int32_t l);  // -inf for kLogNegInf
+double fe_value(const Out& o);  // Fe' = f^2
+double coef_value(double code, const Out& o);
+
+}  // namespace tu::ellipse::fx
