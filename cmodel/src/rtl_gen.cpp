@@ -127,6 +127,35 @@ std::string wtab1d_rom() {
   os << "      default: begin e0_o = '0; e1_o = '0; end\n    endcase\n  end\nendmodule\n";
   return os.str();
 }
+std::string wtab2d_rom() {
+  // 2-D quarter-symmetric Gaussian weight table (docs/blocks/gaussian.md): row {j, i} holds the
+  // four corners of cell (i, j) the bilinear interpolation needs, 0 past the end, one read per pixel.
+  const int l = gauss::kWtab2dRtlLog2N;
+  const gauss::Table2D t(l);
+  const uint32_t n1 = (uint32_t(1) << l) + 1;
+  const int aw = l + 1, iw = 2 * aw, ew = fmt::kWtabEntryW;
+  auto at = [&](uint32_t i, uint32_t j) { return (i < n1 && j < n1) ? t.e[j * n1 + i] : 0u; };
+  std::ostringstream os;
+  os << kBanner << "// Gaussian weight table, 2-D by (|xi|, |eta|), N = " << (1 << l)
+     << " per axis (gauss::Table2D), u" << ew << "." << ew << ", row {j, i}:\n"
+     << "// e00 = w(i/N, j/N), e10 = w((i+1)/N, j/N), e01 = w(i/N, (j+1)/N), e11 = w((i+1)/N, (j+1)/N);\n"
+     << "// 0 outside the disc and past the end.\n"
+     << "module tu_wtab2d_rom (\n"
+     << "  input  logic [" << iw - 1 << ":0]                             idx_i,\n"
+     << "  output logic [tu_formats_pkg::WtabEntryW-1:0] e00_o,\n"
+     << "  output logic [tu_formats_pkg::WtabEntryW-1:0] e10_o,\n"
+     << "  output logic [tu_formats_pkg::WtabEntryW-1:0] e01_o,\n"
+     << "  output logic [tu_formats_pkg::WtabEntryW-1:0] e11_o\n);\n"
+     << "  always_comb begin\n    unique case (idx_i)\n";
+  for (uint32_t j = 0; j < n1; ++j)
+    for (uint32_t i = 0; i < n1; ++i)
+      os << "      " << hex((j << aw) | i, iw) << ": begin e00_o = " << hex(at(i, j), ew)
+         << "; e10_o = " << hex(at(i + 1, j), ew) << "; e01_o = " << hex(at(i, j + 1), ew)
+         << "; e11_o = " << hex(at(i + 1, j + 1), ew) << "; end\n";
+  os << "      default: begin e00_o = '0; e10_o = '0; e01_o = '0; e11_o = '0; end\n"
+     << "    endcase\n  end\nendmodule\n";
+  return os.str();
+}
 }  // namespace
 
 std::map<std::string, std::string> generated_rtl() {
@@ -135,7 +164,8 @@ std::map<std::string, std::string> generated_rtl() {
           {"rtl/generated/tu_clip_seg_mm1.sv", clip_roms(true)},
           {"rtl/generated/tu_pom_f_rom.sv", pom_f_rom()},
           {"rtl/generated/tu_recip_rom.sv", recip_rom()},
-          {"rtl/generated/tu_wtab1d_rom.sv", wtab1d_rom()}};
+          {"rtl/generated/tu_wtab1d_rom.sv", wtab1d_rom()},
+          {"rtl/generated/tu_wtab2d_rom.sv", wtab2d_rom()}};
 }
 
 }  // namespace tu

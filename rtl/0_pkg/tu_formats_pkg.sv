@@ -41,6 +41,8 @@ package tu_formats_pkg;
   localparam int unsigned GaussSqF = 16;
   localparam int unsigned GaussLatency = 3;  // three squarings, one per stage, II = 1
   localparam int unsigned WtabEntryW = 16;  // weight-table entry: unsigned, WtabEntryW fraction bits, saturating
+  localparam int unsigned GaussXiW = 16;  // ellipse-frame coordinates xi, eta (2-D weight table): signed, GaussXiF frac
+  localparam int unsigned GaussXiF = 14;
   localparam int unsigned RecipLatency = 5;  // pipeline latency in cycles, II = 1
   localparam int unsigned PomVzW = 16;  // view-vector z: signed, PomVzF fraction bits (|Vz| > 1 saturates to 1)
   localparam int unsigned PomVzF = 14;

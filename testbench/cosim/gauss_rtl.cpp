@@ -5,6 +5,7 @@
 #include "Vtu_clip_seq.h"
 #include "Vtu_gauss_weight.h"
 #include "Vtu_weight_table_1d.h"
+#include "Vtu_weight_table_2d.h"
 #include "cosim.hpp"
 
 namespace tu::cosim {
@@ -51,6 +52,20 @@ std::vector<RtlBlock> rtl_gauss() {
     return Harness<Vtu_weight_table_1d>(tdrive, tsample).measure_timing(in);
   };
   v.push_back(t);
+  auto t2drive = [](Vtu_weight_table_2d& d, const Row& in) {
+    d.xi_i = static_cast<uint16_t>(in[0]);
+    d.eta_i = static_cast<uint16_t>(in[1]);
+  };
+  auto t2sample = [](Vtu_weight_table_2d& d) { return Row{d.w_o}; };
+  RtlBlock t2;
+  t2.name = "weight_table_2d";
+  t2.run = [=](const std::vector<Row>& in, const RunOptions& o) {
+    return Harness<Vtu_weight_table_2d>(t2drive, t2sample).run(in, o);
+  };
+  t2.timing = [=](const std::vector<Row>& in) {
+    return Harness<Vtu_weight_table_2d>(t2drive, t2sample).measure_timing(in);
+  };
+  v.push_back(t2);
   return v;
 }
 

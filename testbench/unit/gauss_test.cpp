@@ -2,6 +2,7 @@
 // minimax bounds, and the weight-table error against size.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "gauss/clip.hpp"
@@ -98,5 +99,41 @@ TEST(GaussWeight, TablesConvergeWithSize) {
   // |w'| <= 4, plus entry and interpolation rounding.
   EXPECT_LE(gauss::table_stats(0, 6).max_abs_inner,
             14.0 / 8 / 64 / 64 + 4 * std::ldexp(1.0, -15) + 3 * kLsb);
+}
+
+TEST(GaussWeight, Table2DAtRtlSizeNodesSymmetryBounds) {
+  // The 2-D table as built in RTL (N = 32): exact at every node, quarter-symmetric, 0 outside
+  // [-1, 1]^2, and every interpolated value within its cell's corner range (checked on a grid
+  // of odd steps that reaches every cell and both ends of every interpolation).
+  const int l = gauss::kWtab2dRtlLog2N;
+  const gauss::Table2D t(l);
+  const int32_t one = 1 << gauss::kXiF, step = one >> l, n1 = (1 << l) + 1;
+  for (int32_t j = 0; j < n1; ++j)
+    for (int32_t i = 0; i < n1; ++i)
+      ASSERT_EQ(t.lookup(i * step, j * step), t.e[static_cast<size_t>(j * n1 + i)]) << i << " " << j;
+  EXPECT_EQ(t.lookup(0, 0), 0xffffu);
+  EXPECT_EQ(t.lookup(one, 0), t.e[static_cast<size_t>(n1 - 1)]);  // w(1) = 2^-8
+  EXPECT_EQ(t.lookup(one, 0), 256u);
+  EXPECT_EQ(t.lookup(one + 1, 0), 0u);
+  EXPECT_EQ(t.lookup(0, -one - 1), 0u);
+  EXPECT_EQ(t.lookup(-32768, 5), 0u);
+  EXPECT_EQ(t.lookup(one, one), 0u);  // outside the disc
+  int checked = 0;
+  for (int32_t y = 0; y <= one; y += 7)
+    for (int32_t x = 0; x <= one; x += 13) {
+      const uint32_t w = t.lookup(x, y);
+      ASSERT_EQ(w, t.lookup(-x, y));
+      ASSERT_EQ(w, t.lookup(x, -y));
+      ASSERT_EQ(w, t.lookup(-x, -y));
+      const int32_t i = x / step, j = y / step;
+      auto at = [&](int32_t ii, int32_t jj) {
+        return (ii < n1 && jj < n1) ? t.e[static_cast<size_t>(jj * n1 + ii)] : 0u;
+      };
+      const uint32_t c[4] = {at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)};
+      ASSERT_GE(w, *std::min_element(c, c + 4)) << x << " " << y;
+      ASSERT_LE(w, *std::max_element(c, c + 4)) << x << " " << y;
+      ++checked;
+    }
+  EXPECT_GT(checked, 2'000'000);
 }
 }  // namespace

@@ -64,6 +64,7 @@ void area(Row& r, const std::string& root) {
   const std::string rtl = root + "/rtl/";
   std::string files = rtl + "0_pkg/tu_formats_pkg.sv " + rtl + "common/tu_pipe_valid.sv ";
   for (const char* f : {"generated/tu_clip_coef_mm3.sv", "generated/tu_clip_seg_mm1.sv", "generated/tu_wtab1d_rom.sv",
+                        "generated/tu_wtab2d_rom.sv",
                         "gauss/tu_clip_abs.sv", "gauss/tu_clip_fold.sv", "gauss/tu_clip_mulfloor.sv"})
     files += rtl + f + " ";
   files += rtl + "gauss/" + r.rtl_top + ".sv";
@@ -157,17 +158,17 @@ std::vector<Row> table_rows(const std::string& root, bool yosys) {
       Row r;
       r.block = "weight_table";
       r.variant = std::string(kind ? "2d_" : "1d_") + std::to_string(1 << l);
-      r.scheme = kind ? "est_weight_table_2d" : "weight_table_1d";
+      r.scheme = kind ? "weight_table_2d" : "weight_table_1d";
       r.max_abs_err = st.max_abs;
       r.rms_err = st.rms;
       r.max_ulp_err = st.max_abs / std::ldexp(1.0, -fmt::kWtabEntryW);
       cycles(r, r.scheme);
-      // The RTL (tu_weight_table_1d) is built at N = 2^kWtabRtlLog2N only; other sizes have the
-      // same structure (estimate; the ROM depth differs).
-      if (!r.rtl_top.empty() && l != gauss::kWtabRtlLog2N) {
+      // The RTL (tu_weight_table_1d / _2d) is built at N = 2^kWtabRtlLog2N / 2^kWtab2dRtlLog2N
+      // only; other sizes have the same structure (estimate; the ROM depth differs).
+      const int rtl_l = kind ? gauss::kWtab2dRtlLog2N : gauss::kWtabRtlLog2N;
+      if (!r.rtl_top.empty() && l != rtl_l) {
         r.rtl_top.clear();
-        r.cycles_source = "estimated (" + r.scheme + "; RTL has N = " +
-                          std::to_string(1 << gauss::kWtabRtlLog2N) + ")";
+        r.cycles_source = "estimated (" + r.scheme + "; RTL has N = " + std::to_string(1 << rtl_l) + ")";
       }
       if (yosys) area(r, root);
       const gauss::Table1D t1(kind ? 4 : l);

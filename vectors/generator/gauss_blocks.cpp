@@ -3,6 +3,8 @@
 // w u17.16, error |w - (1 - Q/2)^8|).
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "block.hpp"
 #include "gauss/clip.hpp"
@@ -162,6 +164,74 @@ std::vector<Block> make_gauss_blocks() {
   t.latency_cycles = gauss::kWtabRtlLatency;
   t.ii_cycles = 1;
   bs.push_back(t);
+  // 2-D quarter-symmetric weight table by (|xi|, |eta|) at the RTL size (N = 32), bilinear
+  // interpolation; error against the exact weight (1 - (xi^2 + eta^2)/2)^8 of the input codes.
+  Block t2;
+  t2.name = "weight_table_2d";
+  t2.description = "Gaussian weight from a 2-D table by (|xi|, |eta|) (N = 32), bilinear, II = 1";
+  t2.fields = {field("xi", vec::Role::In, "s16.14"), field("eta", vec::Role::In, "s16.14"),
+               field("w", vec::Role::Out, "u16.16"), field("ref", vec::Role::Ref, "f64")};
+  t2.sets = {"golden", "stiff", "random"};
+  t2.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
+    static_assert(gauss::kXiW == 16);
+    std::vector<Row> rows;
+    const int64_t one = int64_t(1) << gauss::kXiF;
+    const int64_t step = one >> gauss::kWtab2dRtlLog2N;  // table node spacing in xi codes
+    auto add = [&](int64_t x, int64_t y) {
+      rows.push_back({static_cast<uint64_t>(x) & 0xffff, static_cast<uint64_t>(y) & 0xffff});
+    };
+    if (set == "golden") {
+      for (const auto& [x, y] : std::vector<std::pair<int64_t, int64_t>>{
+               {0, 0}, {one / 2, 0}, {0, -one / 2}, {one / 2, one / 2}, {-one / 3, one / 4}, {one, 0},
+               {0, one}, {one + 1, 0}, {step / 2, step / 2}, {-12345, 3456}, {32767, -32768}})
+        add(x, y);
+    } else if (set == "stiff") {
+      // every table node (both signs), cell centres, both interpolation ends of every cell
+      for (int64_t j = 0; j <= one; j += step)
+        for (int64_t i = 0; i <= one; i += step) {
+          add(i, j);
+          add(-(i + step / 2), j + 1);
+          add(i + step - 1, -(j + step - 1));
+        }
+      // the edges |xi| or |eta| = 1 and just past, outside the disc inside the square, extremes
+      for (int64_t v : {int64_t(0), one / 2, one - 1, one})
+        for (int64_t e : {one - 1, one, one + 1, int64_t(32767), int64_t(-32768)}) {
+          add(e, v);
+          add(v, e);
+          add(-e, -v);
+        }
+      add(-32768, -32768);
+      add(32767, 32767);
+      add(one, one);
+      add(-one, -one);
+    } else {
+      std::mt19937_64 rng(seed);
+      for (uint64_t i = 0; i < count; ++i) {
+        // 80% in [-1.01, 1.01]^2, 20% anywhere
+        if (rng() % 5) {
+          const int64_t r = one + one / 100;
+          add(static_cast<int64_t>(rng() % (2 * r + 1)) - r, static_cast<int64_t>(rng() % (2 * r + 1)) - r);
+        } else {
+          add(static_cast<int64_t>(rng() & 0xffff), static_cast<int64_t>(rng() & 0xffff));
+        }
+      }
+    }
+    return rows;
+  };
+  t2.model = [](const Row& in) {
+    static const gauss::Table2D tab(gauss::kWtab2dRtlLog2N);
+    return Row{tab.lookup(static_cast<int32_t>(vec::sext(in[0], gauss::kXiW)),
+                          static_cast<int32_t>(vec::sext(in[1], gauss::kXiW)))};
+  };
+  t2.ref = [](const Row& in) {
+    const double x = std::ldexp(static_cast<double>(vec::sext(in[0], gauss::kXiW)), -gauss::kXiF);
+    const double y = std::ldexp(static_cast<double>(vec::sext(in[1], gauss::kXiW)), -gauss::kXiF);
+    return Row{vec::f64_bits(gauss::weight_ref(x * x + y * y))};
+  };
+  t2.error = weight_error(fmt::kWtabEntryW);
+  t2.latency_cycles = gauss::kWtab2dRtlLatency;
+  t2.ii_cycles = 1;
+  bs.push_back(t2);
   return bs;
 }
 

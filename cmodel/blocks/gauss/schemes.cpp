@@ -68,8 +68,8 @@ std::vector<Graph> build() {
     g.add("square3_zero", "mul", 1, {s2});
     gs.push_back(g);
   }
-  // Estimates without RTL: the other Horner degrees, the 16-segment table, the 2-D weight table
-  // (the 1-D weight table has RTL at N = 256, below).
+  // Estimates without RTL: the other Horner degrees, the 16-segment table (the 1-D weight table
+  // has RTL at N = 256, the 2-D table at N = 32, below).
   gs.push_back(horner("est_clip_horner_deg2", 2, false));
   gs.push_back(horner("est_clip_horner_deg4", 4, false));
   gs.push_back(horner("est_clip_seq_deg2", 2, true));
@@ -95,8 +95,9 @@ std::vector<Graph> build() {
   }
   {
     Graph g;
-    g.name = "est_weight_table_2d";
-    g.description = "synchronous ROM (4 entries), two lerps in x, one in y, round";
+    g.name = "weight_table_2d";
+    g.description = "registered ROM read (4 cell corners per row), two x-lerp multiplies, "
+                    "round + y-lerp multiply, round";
     const int r = g.add("rom_read", "rom", 1);
     const int m0 = g.add("lerp_x0", "mul", 1, {r});
     const int m1 = g.add("lerp_x1", "mul", 1, {r});

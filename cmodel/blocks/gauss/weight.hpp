@@ -44,7 +44,7 @@ inline constexpr int kWtabRtlLog2N = 8;
 inline constexpr int kWtabRtlLatency = 3;
 
 // Coordinates in the ellipse frame: xi, eta signed s16.14 (Q = xi^2 + eta^2).
-inline constexpr int kXiW = 16, kXiF = 14;
+inline constexpr int kXiW = fmt::kGaussXiW, kXiF = fmt::kGaussXiF;
 struct Table2D {
   int log2n;
   std::vector<uint32_t> e;  // (N+1) x (N+1), e[j*(N+1)+i] = w(i/N, j/N), 0 outside the disc
@@ -52,6 +52,12 @@ struct Table2D {
   uint32_t lookup(int32_t xi_code, int32_t eta_code) const;  // bilinear on |xi|, |eta|
   uint64_t memory_bits() const { return e.size() * fmt::kWtabEntryW; }
 };
+
+// The 2-D table built in RTL (rtl/gauss/tu_weight_table_2d.sv, generated ROM tu_wtab2d_rom from
+// Table2D(kWtab2dRtlLog2N).e): N = 32 per axis (33 x 33 entries, 17 kbit; gaussian.md), latency 4
+// (registered ROM read of the 4 cell corners, two x-lerp multiplies, y-lerp multiply, round), II = 1.
+inline constexpr int kWtab2dRtlLog2N = 5;
+inline constexpr int kWtab2dRtlLatency = 4;
 
 // Q code of xi^2 + eta^2 for xi, eta codes (s16.14), rounded half up, saturated.
 uint32_t q_of(int32_t xi_code, int32_t eta_code);

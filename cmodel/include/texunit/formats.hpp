@@ -49,6 +49,8 @@
   X(GaussSqF, 16, "")                                                                           \
   X(GaussLatency, 3, "three squarings, one per stage, II = 1")                                  \
   X(WtabEntryW, 16, "weight-table entry: unsigned, WtabEntryW fraction bits, saturating")       \
+  X(GaussXiW, 16, "ellipse-frame coordinates xi, eta (2-D weight table): signed, GaussXiF frac") \
+  X(GaussXiF, 14, "")                                                                           \
   X(RecipLatency, 5, "pipeline latency in cycles, II = 1")                        \
   /* Adaptive POM layer counter (docs/blocks/relief.md) */                                     \
   X(PomVzW, 16, "view-vector z: signed, PomVzF fraction bits (|Vz| > 1 saturates to 1)")        \
