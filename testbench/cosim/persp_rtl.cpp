@@ -1,8 +1,10 @@
 // RTL bindings of the perspective divide unit: rtl/persp/tu_persp.sv (incremental accumulators,
-// block "persp") and rtl/persp/tu_persp_direct.sv (direct evaluation, same ports and vectors).
+// block "persp") and rtl/persp/tu_persp_direct.sv (direct evaluation, same ports and vectors);
+// the per-scanline set-up rtl/persp/tu_persp_setup.sv (block "persp_setup").
 #include "Vtu_persp.h"
 #include "Vtu_persp_direct.h"
 #include "Vtu_persp_klane.h"
+#include "Vtu_persp_setup.h"
 #include "cosim.hpp"
 
 namespace tu::cosim {
@@ -62,6 +64,34 @@ RtlBlock rtl_persp_k4() {
   };
   b.timing = [=](const std::vector<Row>& in) {
     return Harness<Vtu_persp_klane>(drive, sample).measure_timing(in);
+  };
+  return b;
+}
+
+// Per-scanline set-up (rtl/persp/tu_persp_setup.sv): one transaction = one span.
+RtlBlock rtl_persp_setup() {
+  auto drive = [](Vtu_persp_setup& d, const Row& in) {
+    d.a_i = in[0];
+    d.b_i = in[1];
+    d.c_i = in[2];
+    d.d_i = in[3];
+    d.e_i = in[4];
+    d.f_i = in[5];
+    d.g_i = in[6];
+    d.h_i = in[7];
+    d.i_i = in[8];
+    d.x0_i = static_cast<uint16_t>(in[9]);
+    d.x1_i = static_cast<uint16_t>(in[10]);
+    d.y_i = static_cast<uint16_t>(in[11]);
+  };
+  auto sample = [](Vtu_persp_setup& d) { return Row{d.pu_o, d.pv_o, d.q_o, d.ovf_o}; };
+  RtlBlock b;
+  b.name = "persp_setup";
+  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
+    return Harness<Vtu_persp_setup>(drive, sample).run(in, o);
+  };
+  b.timing = [=](const std::vector<Row>& in) {
+    return Harness<Vtu_persp_setup>(drive, sample).measure_timing(in);
   };
   return b;
 }

@@ -271,6 +271,45 @@ TEST(Persp, SetupOverflowNamesTheTriangle) {
                SetupError);
 }
 
+// The hardware set-up's flag (setup_span, vectors of block persp_setup) is the software path's
+// SetupError: same condition, same accumulators, and it names the same failure.
+TEST(Persp, SetupSpanFlagMatchesSetupError) {
+  const auto c3 = Unit::quantise(span_map(0, 0, 4095, 1, 1.5, 0, 8000, 0, 0, 0, 0, 0), "tri#3");
+  const auto s3 = Unit::setup_span(c3, 0, 0, 4095);
+  EXPECT_TRUE(s3.ovf);
+  EXPECT_STREQ(s3.what, "p_u");
+  EXPECT_EQ(s3.at, 4095);
+  std::mt19937_64 rng(5);
+  int flagged = 0, clean = 0;
+  for (int t = 0; t < 2000; ++t) {
+    const int y = static_cast<int>(rng() % 4096), x0 = static_cast<int>(rng() % 4096),
+              x1 = static_cast<int>(rng() % 4096);
+    // defined on [0, 2047]; extrapolated to x = 4095, |p_u| often passes 2^13
+    Coef9 k = span_map(y, 0, 2047, 0.001 + (rng() % 1000) / 1000.0, 0.001 + (rng() % 1000) / 1000.0,
+                       -8000.0 + (rng() % 16000), -8000.0 + (rng() % 16000), 1, 2, 0, 0, 0);
+    Unit::Coefs c;
+    try {
+      c = Unit::quantise(k, "r");
+    } catch (const SetupError&) {
+      continue;
+    }
+    const auto s = Unit::setup_span(c, y, x0, x1);
+    if (s.ovf) {
+      ++flagged;
+      EXPECT_THROW(Unit::setup(c, y, x0, x1, "r"), SetupError);
+    } else {
+      ++clean;
+      const auto a = Unit::setup(c, y, x0, x1, "r");
+      EXPECT_EQ(a.pu.raw(), s.acc.pu.raw());
+      EXPECT_EQ(a.pv.raw(), s.acc.pv.raw());
+      EXPECT_EQ(a.q.raw(), s.acc.q.raw());
+      EXPECT_EQ(s.acc.pu.raw(), Unit::direct(c, x0, y).pu.raw());
+    }
+  }
+  EXPECT_GT(flagged, 100);
+  EXPECT_GT(clean, 100);
+}
+
 TEST(Persp, TriangleReachingTheEyePlaneIsFlagged) {
   // A floor triangle that passes behind the camera: pixels looking at q <= 0 are flagged.
   Camera cam;

@@ -12,6 +12,7 @@ Block make_pom_march();   // pom_march_block.cpp
 Block make_iter_parallax();  // iter_parallax_block.cpp
 Block make_persp();       // persp_block.cpp
 Block make_persp_k4();    // persp_block.cpp
+Block make_persp_setup(); // persp_block.cpp
 Block make_ellipse();     // ellipse_block.cpp
 
 const std::vector<Block>& all() {
@@ -24,6 +25,7 @@ const std::vector<Block>& all() {
     b.push_back(make_iter_parallax());
     b.push_back(make_persp());
     b.push_back(make_persp_k4());
+    b.push_back(make_persp_setup());
     b.push_back(make_ellipse());
     return b;
   }();

@@ -304,3 +304,214 @@ Block make_persp_k4() {
 }
 
 }  // namespace tu::blocks
+
+// ---------------- per-scanline set-up (rtl/persp/tu_persp_setup.sv) ----------------
+// One vector = one span: the quantised coefficients A..I, the span ends x0, x1 and the row y.
+//   out: p_u, p_v, q at x0 (modulo 2^W when they overflow) and the overflow flag
+//        (persp::Model::setup_span: some accumulator at x0 or x1 outside its format)
+//   ref: p_u, p_v, q at x0 as the exact value A x0 + B y + C (i128 -> long double -> f64).
+namespace tu::blocks {
+namespace {
+using SetupRow = Row;  // a..i, x0, x1, y
+
+SetupRow setup_row(const Unit::Coefs& c, int x0, int x1, int y) {
+  return {c.a.bits(), c.b.bits(), c.c.bits(), c.d.bits(), c.e.bits(), c.f.bits(),
+          c.g.bits(), c.h.bits(), c.i.bits(), static_cast<uint64_t>(x0),
+          static_cast<uint64_t>(x1),  static_cast<uint64_t>(y)};
+}
+Unit::Coefs setup_coefs(const Row& in) {
+  return {P::from_bits(in[0]), P::from_bits(in[1]), P::from_bits(in[2]),
+          P::from_bits(in[3]), P::from_bits(in[4]), P::from_bits(in[5]),
+          Q::from_bits(in[6]), Q::from_bits(in[7]), Q::from_bits(in[8])};
+}
+// Independent of the model: exact i128 evaluation of one accumulator (k = 0 p_u, 1 p_v, 2 q).
+i128 setup_exact(const Row& in, int k, uint64_t x) {
+  const int w = k == 2 ? kQW : kPW;
+  return vec::sext(in[3 * k], w) * static_cast<i128>(x) +
+         vec::sext(in[3 * k + 1], w) * static_cast<i128>(in[11]) + vec::sext(in[3 * k + 2], w);
+}
+bool setup_overflows(const Row& in) {
+  for (uint64_t x : {in[9], in[10]})
+    for (int k = 0; k < 3; ++k) {
+      const int w = k == 2 ? kQW : kPW;
+      const i128 v = setup_exact(in, k, x);
+      if (v < -(i128(1) << (w - 1)) || v >= (i128(1) << (w - 1))) return true;
+    }
+  return false;
+}
+
+// Spans of a float map on row y: quantised like the software path (skipped when a coefficient
+// does not fit: that is the per-triangle quantise step, not this block).
+void emit_setup_map(std::vector<Row>& rows, const persp::Coef9& k, int y, int x0, int x1) {
+  try {
+    rows.push_back(setup_row(Unit::quantise(k, "span"), x0, x1, y));
+  } catch (const persp::SetupError&) {
+  }
+}
+
+std::vector<Row> setup_golden() {
+  std::vector<Row> rows;
+  const auto k = persp::coefficients(floor_camera(64, 48), floor_tri());
+  for (int y : {0, 24, 40, 47}) emit_setup_map(rows, k, y, 10, 15);
+  emit_setup_map(rows, persp::span_map(7, 0, 4095, 1.0, 0.001, 3.5, 4000, -100, 2048, 0, 0, 0), 7, 0, 4095);
+  emit_setup_map(rows, persp::span_map(0, 0, 5, 0.002, -0.001, 1, 2, 3, 4, 0, 0, 0), 0, 0, 5);
+  // Fits at x0, p_u overflows at the far end (the unit test's 'tri#3').
+  emit_setup_map(rows, persp::span_map(0, 0, 4095, 1, 1.5, 0, 8000, 0, 0, 0, 0, 0), 0, 0, 4095);
+  return rows;
+}
+
+std::vector<Row> setup_stiff() {
+  std::vector<Row> rows;
+  const P pmax = P::from_raw(P::kMaxRaw), pmin = P::from_raw(P::kMinRaw), p0 = P::from_raw(0);
+  const Q qmax = Q::from_raw(Q::kMaxRaw), qmin = Q::from_raw(Q::kMinRaw), q0 = Q::from_raw(0);
+  const P pv[5] = {pmin, P::from_raw(-1), p0, P::from_raw(1), pmax};
+  const Q qv[5] = {qmin, Q::from_raw(-1), q0, Q::from_raw(1), qmax};
+  const P pc[3] = {pmin, p0, pmax};
+  const Q qc[3] = {qmin, q0, qmax};
+  const int xs[2] = {0, (1 << kN) - 1};
+  // Format limits x {x0, x1, y} in {0, 4095}: every combination for p_u; p_v and q see the same
+  // corners in other combinations (rotated indices).
+  int n = 0;
+  for (int ia = 0; ia < 5; ++ia)
+    for (int ib = 0; ib < 3; ++ib)
+      for (int ic = 0; ic < 3; ++ic)
+        for (int x0 : xs)
+          for (int x1 : xs)
+            for (int y : xs) {
+              ++n;
+              const Unit::Coefs c{pv[ia], pc[ib], pc[ic], pv[(ia + n) % 5], pc[(ib + n) % 3],
+                                  pc[(ic + 2 * n) % 3], qv[(ia + 2 * n) % 5], qc[(ib + 2 * n) % 3],
+                                  qc[(ic + n) % 3]};
+              rows.push_back(setup_row(c, x0, x1, y));
+            }
+  // Exactly at the format boundary and one LSB past it, both signs, at x0 and at x1, for each
+  // accumulator: A x + B y + C = max (fits) / max + 1 (overflow), min / min - 1.
+  for (int k = 0; k < 3; ++k)
+    for (int at = 0; at < 2; ++at)
+      for (int past = 0; past < 2; ++past)
+        for (int sign = 0; sign < 2; ++sign) {
+          const int x = at == 0 ? 0 : 4095, y = 4095;
+          const int w = k == 2 ? kQW : kPW;
+          const i128 lim = sign == 0 ? (i128(1) << (w - 1)) - 1 : -(i128(1) << (w - 1));
+          const i128 slope = sign == 0 ? 1000003 : -999983;  // per pixel, odd
+          const i128 target = lim + (past ? (sign == 0 ? 1 : -1) : 0);
+          // at == 0: the boundary value at x0 = 0, the span moving inward; at == 1: at x1 = 4095.
+          const i128 bslope = sign == 0 ? 7 : -7;  // keeps C inside its format
+          const i128 s = at == 0 ? -slope : slope;
+          const i128 c0 = target - bslope * y - (at == 0 ? 0 : slope * x);
+          Row r = setup_row({p0, p0, p0, p0, p0, p0, q0, q0, q0}, 0, at == 0 ? 5 : 4095, y);
+          const uint64_t mask = (uint64_t(1) << w) - 1;
+          r[3 * k] = static_cast<uint64_t>(s) & mask;
+          r[3 * k + 1] = static_cast<uint64_t>(bslope) & mask;
+          r[3 * k + 2] = static_cast<uint64_t>(c0) & mask;
+          rows.push_back(r);
+        }
+  // Negative coefficients of a real mapping (u, v decreasing, q decreasing), and a map whose
+  // span runs right to left (x1 < x0: both ends are still checked).
+  emit_setup_map(rows, persp::span_map(3000, 0, 4095, 1.0, 0.002, 4095, -4095, 4000, -4000, -1e-5, -0.25, -0.25), 3000, 0, 4095);
+  emit_setup_map(rows, persp::span_map(5, 0, 4095, 0.5, 0.001, 100, -100, -7, 7, 0, 0, 0), 5, 4095, 0);
+  return rows;
+}
+
+std::vector<Row> setup_random(uint64_t count, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::vector<Row> rows;
+  rows.reserve(count);
+  auto rnd_x = [&] { return static_cast<int>(rng() % (1u << kN)); };
+  // Signed raw code of width w with a log-uniform magnitude (1..w-1 bits).
+  auto rnd_code = [&](int w) {
+    const int bits = 1 + static_cast<int>(rng() % static_cast<uint64_t>(w - 1));
+    const uint64_t m = bits >= 64 ? rng() : rng() & ((uint64_t(1) << bits) - 1);
+    const uint64_t mask = (uint64_t(1) << w) - 1;
+    return ((rng() & 1) ? (~m + 1) : m) & mask;
+  };
+  while (rows.size() < count) {
+    const double kind = U(rng);
+    const int y = rnd_x();
+    int x0 = rnd_x(), x1 = rnd_x();
+    if (kind < 0.6) {  // realistic spans of random perspective maps (x0 <= x1)
+      if (x1 < x0) std::swap(x0, x1);
+      const double q0 = std::pow(1000.0, -U(rng)), q1 = U(rng) < 0.1 ? -U(rng) : std::pow(1000.0, -U(rng));
+      emit_setup_map(rows, persp::random_span_map(rng, y, x0, x1, q0, q1), y, x0, x1);
+    } else if (kind < 0.8) {  // random codes of random magnitude: many overflows
+      Row r(12);
+      for (int k = 0; k < 9; ++k) r[k] = rnd_code(k >= 6 ? kQW : kPW);
+      r[9] = static_cast<uint64_t>(x0);
+      r[10] = static_cast<uint64_t>(x1);
+      r[11] = static_cast<uint64_t>(y);
+      rows.push_back(r);
+    } else {  // near a format boundary: C chosen so that one end lands within +-2^10 LSB of it
+      Row r(12);
+      for (int k = 0; k < 9; ++k) r[k] = rnd_code(k >= 6 ? kQW - 14 : kPW - 14);
+      r[9] = static_cast<uint64_t>(x0);
+      r[10] = static_cast<uint64_t>(x1);
+      r[11] = static_cast<uint64_t>(y);
+      const int k = static_cast<int>(rng() % 3), w = k == 2 ? kQW : kPW;
+      const i128 lim = (rng() & 1) ? (i128(1) << (w - 1)) - 1 : -(i128(1) << (w - 1));
+      const i128 target = lim + static_cast<i128>(rng() % 2049) - 1024;
+      const uint64_t x = (rng() & 1) ? r[9] : r[10];
+      const i128 c = target - vec::sext(r[3 * k], w) * static_cast<i128>(x) -
+                     vec::sext(r[3 * k + 1], w) * static_cast<i128>(y);
+      if (c < -(i128(1) << (w - 1)) || c >= (i128(1) << (w - 1))) continue;  // C must fit
+      r[3 * k + 2] = static_cast<uint64_t>(c) & ((uint64_t(1) << w) - 1);
+      rows.push_back(r);
+    }
+  }
+  return rows;
+}
+}  // namespace
+
+Block make_persp_setup() {
+  Block b;
+  b.name = "persp_setup";
+  b.description =
+      "perspective per-scanline set-up: p_u, p_v, q at x0 from A..I (9 exact products), "
+      "overflow flag for either span end, II = 1";
+  auto fmt_s = [](int w, int f) { return "s" + std::to_string(w) + "." + std::to_string(f); };
+  const std::string pf = fmt_s(kPW, fmt::kPerspF), qf = fmt_s(kQW, fmt::kPerspF),
+                    xf = "u" + std::to_string(kN) + ".0";
+  for (const char* n : {"a", "b", "c", "d", "e", "f"}) b.fields.push_back(field(n, vec::Role::In, pf));
+  for (const char* n : {"g", "h", "i"}) b.fields.push_back(field(n, vec::Role::In, qf));
+  for (const char* n : {"x0", "x1", "y"}) b.fields.push_back(field(n, vec::Role::In, xf));
+  b.fields.push_back(field("pu", vec::Role::Out, pf));
+  b.fields.push_back(field("pv", vec::Role::Out, pf));
+  b.fields.push_back(field("q", vec::Role::Out, qf));
+  b.fields.push_back(field("ovf", vec::Role::Out, "u1.0"));
+  for (const char* n : {"puref", "pvref", "qref"}) b.fields.push_back(field(n, vec::Role::Ref, "f64"));
+  b.sets = {"golden", "stiff", "random"};
+  b.inputs = standard_sets(setup_golden, setup_stiff, setup_random);
+  b.model = [](const Row& in) {
+    const auto s = Unit::setup_span(setup_coefs(in), static_cast<int>(in[11]),
+                                    static_cast<int>(in[9]), static_cast<int>(in[10]));
+    return Row{s.acc.pu.bits(), s.acc.pv.bits(), s.acc.q.bits(), s.ovf ? 1u : 0u};
+  };
+  b.ref = [](const Row& in) {
+    Row r;
+    for (int k = 0; k < 3; ++k)
+      r.push_back(vec::f64_bits(static_cast<double>(
+          std::ldexp(static_cast<long double>(setup_exact(in, k, in[9])), -fmt::kPerspF))));
+    return r;
+  };
+  b.error = [](const Row& in, const Row& out, const Row& ref) {
+    ErrPoint e;
+    const bool ovf = setup_overflows(in);
+    if (ovf || out[3] != 0) {  // flagged rows: only the flag is checked against the reference
+      e.valid = !(ovf && out[3] == 1);
+      e.abs = e.ulp = (ovf && out[3] == 1) ? 0 : INFINITY;
+      return e;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int w = k == 2 ? kQW : kPW;
+      const double o = std::ldexp(static_cast<double>(vec::sext(out[k], w)), -fmt::kPerspF);
+      e.abs = std::max(e.abs, std::fabs(o - vec::bits_f64(ref[k])));
+    }
+    e.ulp = std::ldexp(e.abs, fmt::kPerspF);
+    return e;
+  };
+  b.latency_cycles = persp::kSetupLatency;
+  b.ii_cycles = 1;
+  return b;
+}
+
+}  // namespace tu::blocks

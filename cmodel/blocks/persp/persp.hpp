@@ -87,15 +87,40 @@ struct Model {
             (c.g * xf + c.h * yf + c.i).template as<Q>()};
   }
 
-  // Per-scanline set-up: the accumulators at x0, after checking both span ends [x0, x1] fit.
-  static Acc setup(const Coefs& c, int y, int x0, int x1, const std::string& tri) {
+  // Per-scanline set-up of one span as the hardware computes it (rtl/persp/tu_persp_setup.sv):
+  // the accumulators at x0 (exact; wrapped to their formats when they overflow) and a flag set
+  // when p_u, p_v or q at either span end x0, x1 does not fit its format. `what` and `at` name the
+  // first failure (checked in the order x0: p_u, p_v, q; then x1).
+  struct SpanSetup {
+    Acc acc;
+    bool ovf = false;
+    const char* what = nullptr;
+    int at = 0;
+  };
+  static SpanSetup setup_span(const Coefs& c, int y, int x0, int x1) {
+    SpanSetup r{direct(c, x0, y)};
     for (int x : {x0, x1}) {
       const Xy xf = Xy::from_raw(x), yf = Xy::from_raw(y);
-      check<P>(c.a * xf + c.b * yf + c.c, "p_u", x, y, tri);
-      check<P>(c.d * xf + c.e * yf + c.f, "p_v", x, y, tri);
-      check<Q>(c.g * xf + c.h * yf + c.i, "q", x, y, tri);
+      const bool ok[3] = {fits<P>(c.a * xf + c.b * yf + c.c), fits<P>(c.d * xf + c.e * yf + c.f),
+                          fits<Q>(c.g * xf + c.h * yf + c.i)};
+      static constexpr const char* kName[3] = {"p_u", "p_v", "q"};
+      for (int k = 0; k < 3; ++k)
+        if (!ok[k] && !r.ovf) r = {r.acc, true, kName[k], x};
     }
-    return direct(c, x0, y);
+    return r;
+  }
+
+  // Per-scanline set-up (software path): the accumulators at x0, after checking both span ends
+  // [x0, x1] fit; throws SetupError naming the triangle, the accumulator and the pixel.
+  static Acc setup(const Coefs& c, int y, int x0, int x1, const std::string& tri) {
+    const SpanSetup s = setup_span(c, y, x0, x1);
+    if (s.ovf) {
+      const bool q = s.what[0] == 'q';
+      throw SetupError("persp set-up: triangle '" + tri + "': " + s.what + " at pixel (" +
+                       std::to_string(s.at) + ", " + std::to_string(y) + ") overflows s" +
+                       std::to_string(q ? Q::kW : P::kW) + "." + std::to_string(F));
+    }
+    return s.acc;
   }
 
   // Per-pixel evaluation: guard, normalise, reciprocal, two multiplies, round, saturate.
@@ -182,16 +207,16 @@ struct Model {
     return T::template from_double<Round::HalfEven, Ovf::Sat>(x);
   }
   template <class T, class V>
-  static void check(V v, const char* name, int x, int y, const std::string& tri) {
+  static bool fits(V v) {
     const i128 r = static_cast<i128>(v.raw()) >> (V::kF - T::kF);  // same F: shift 0
-    if (r < T::kMinRaw || r > T::kMaxRaw)
-      throw SetupError("persp set-up: triangle '" + tri + "': " + name + " at pixel (" +
-                       std::to_string(x) + ", " + std::to_string(y) + ") overflows s" +
-                       std::to_string(T::kW) + "." + std::to_string(T::kF));
+    return r >= T::kMinRaw && r <= T::kMaxRaw;
   }
 };
 
 using Unit = Model<fmt::kPerspF>;
+
+// Latency in cycles of the per-scanline set-up RTL (rtl/persp/tu_persp_setup.sv), II = 1.
+inline constexpr int kSetupLatency = 2;
 
 // ---------------- float reference (double, GLM) ----------------
 struct Camera {

@@ -52,9 +52,28 @@ Graph build_persp(const std::string& name, bool direct, int lanes) {
   return g;
 }
 
+// Per-scanline set-up (tu_persp_setup): nine registered products (A, D, G times x0 and x1;
+// B, E, H times y), then per accumulator and span end the sum A x + B y + C chained into the
+// registered range check (the x0 sums are also the registered outputs).
+Graph build_setup() {
+  Graph g;
+  g.name = "persp_setup";
+  g.description = "set-up: 9 products, 6 three-input sums, range check (overflow flag)";
+  const char* sig[3] = {"pu", "pv", "q"};
+  for (int k = 0; k < 3; ++k) {
+    const int by = g.add(std::string("mul_y_") + sig[k], "mul", 1);
+    for (const char* end : {"x0", "x1"}) {
+      const int ax = g.add(std::string("mul_") + end + "_" + sig[k], "mul", 1);
+      const int s = g.add(std::string("add_") + sig[k] + "_" + end, "add", 0, {ax, by});
+      g.add(std::string("range_check_") + sig[k] + "_" + end, "cmp", 1, {s});
+    }
+  }
+  return g;
+}
+
 std::vector<Graph> build() {
   return {build_persp("persp", false, 1), build_persp("persp_direct", true, 1),
-          build_persp("persp_k4", false, 4)};
+          build_persp("persp_k4", false, 4), build_setup()};
 }
 }  // namespace
 
