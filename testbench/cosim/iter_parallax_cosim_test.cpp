@@ -6,38 +6,19 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cosim.hpp"
+#include "cosim_checks.hpp"
 #include "pom/pom_march.hpp"
 
 namespace {
 using namespace tu;
 
 TEST(IterParallaxCosim, GoldenStiffRandomWithStalls) {
-  const auto& b = blocks::find("iter_parallax");
-  for (const std::string set : {"golden", "stiff", "random"}) {
-    const auto vf = blocks::generate(b, set, 100000, 2026);
-    cosim::Options opt;
-    opt.run.stall_prob = 0.3;
-    opt.run.seed = 99;
-    const auto rep = cosim::run(vf, opt);
-    SCOPED_TRACE(set);
-    EXPECT_EQ(rep.mismatches, 0u) << rep.first_mismatch;
-    EXPECT_EQ(rep.model_mismatches, 0u) << rep.first_mismatch;
-    EXPECT_EQ(rep.outputs, rep.vectors);
-    EXPECT_EQ(rep.extra_outputs, 0u);
-    EXPECT_FALSE(rep.hung);
-    std::printf("iter_parallax %s: %s\n", set.c_str(), rep.json().c_str());
-  }
+  cosim::checks::for_each_set_with_stalls(blocks::find("iter_parallax"),
+                                          [](const vec::VectorFile&, const cosim::Report&) {});
 }
 
 TEST(IterParallaxCosim, DetectsACorruptedExpectedValue) {
-  const auto& b = blocks::find("iter_parallax");
-  auto vf = blocks::generate(b, "random", 2000, 5);
-  const int out0 = vf.indices(vec::Role::Out)[0];
-  vf.rows[1234][static_cast<size_t>(out0)] ^= 1;
-  const auto rep = cosim::run(vf, cosim::Options{});
-  EXPECT_EQ(rep.mismatches, 1u);
-  EXPECT_FALSE(rep.ok());
+  cosim::checks::expect_corruption_detected("iter_parallax");
 }
 
 TEST(IterParallaxCosim, CyclesPerPixelMatchPredictionAndNonConvergenceRate) {
