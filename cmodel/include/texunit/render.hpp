@@ -19,6 +19,7 @@ struct PixelRecord {
   double lod = 0;       // mip level used (EWA: the walk's level; trilinear: the blend position)
   int texels = 0;       // texels read
   img::Rgba8 color;
+  int relief_n = 0;     // relief materials: layers N of the material's method (0: no relief)
 };
 
 struct Frame {
@@ -37,6 +38,10 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter = {}
 
 // |a - b| per pixel (max over RGB) mapped to a blue-red heat map, `full_scale` levels = red.
 img::Rgba8Image error_heatmap(const img::Rgba8Image& a, const img::Rgba8Image& b, int full_scale);
+
+// Layer-count debug image (the seed's debug mode) when a material has adaptive relief: grey
+// (N - 4) / (Nmax - 4) on that material's pixels, black elsewhere; nullopt otherwise.
+std::optional<img::Gray8> layers_image(const scene::Scene& s, const Frame& f);
 
 // One CSV row per covered pixel: x,y,u,v,lod,texels,r,g,b,a (atomic write).
 void write_dump_csv(const std::string& path, const Frame& f);
