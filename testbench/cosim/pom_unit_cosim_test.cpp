@@ -6,11 +6,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "complexity/complexity.hpp"
 #include "cosim_checks.hpp"
-#include "pom/pom_layers.hpp"
 #include "pom/pom_march.hpp"
-#include "pom/relief_quality.hpp"
+#include "pom_vec_common.hpp"
 
 namespace {
 using namespace tu;
@@ -38,49 +36,28 @@ TEST_P(PomStageCosim, DetectsACorruptedExpectedValue) {
 
 INSTANTIATE_TEST_SUITE_P(Pom, PomStageCosim, ::testing::Values("pom_setup", "pom_refine", "pom_unit"));
 
-// A 64x64-pixel tile of the bricks map (the engine's ROM), S = 0.05, azimuth 30 degrees: fixed N
-// and adaptive N (pom::layers of the map's complexity), no stalls.
+// The scene stream (pomvec::scene_vectors: 64x64 pixels of the bricks map, S = 0.05, azimuth 30
+// degrees), fixed N and adaptive N, no stalls.
 TEST(PomUnitCosim, CyclesPerPixelMatchTheEstimator) {
-  const auto& b = blocks::find("pom_unit");
-  const img::Gray8 depth = pom::map_bricks(64);
-  const img::Gray8 cmap = complexity::complexity_map(depth);
   for (double ang : {45.0, 80.0})
-    for (int n_fixed : {8, 32, 0}) {  // 0: adaptive
-      pom::View vw;
-      const double th = ang * M_PI / 180, ph = M_PI / 6;
-      vw.vx = static_cast<int32_t>(std::lround(std::sin(th) * std::cos(ph) * 16384));
-      vw.vy = static_cast<int32_t>(std::lround(std::sin(th) * std::sin(ph) * 16384));
-      vw.vz = static_cast<int32_t>(std::lround(std::cos(th) * 16384));
-      vw.scale = 3277;
-      vec::VectorFile vf;
-      vf.block = b.name;
-      vf.set = "scene";
-      vf.fields = b.fields;
-      std::vector<uint32_t> steps;
-      for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) {
-          const int64_t u = (2 * x + 1) << 9, v = (2 * y + 1) << 9;
-          const uint32_t n = n_fixed ? uint32_t(n_fixed) : pom::layers(vw.vz, pom::tex_nearest(cmap, u, v)).n;
-          blocks::Row row = {uint64_t(u), uint64_t(v), uint64_t(vw.vx) & 0xffff, uint64_t(vw.vy) & 0xffff,
-                             uint64_t(vw.vz) & 0xffff, vw.scale, n, 1};
-          const auto out = b.model(row);
-          const auto ref = b.ref(row);
-          steps.push_back(static_cast<uint32_t>(out[2]));
-          row.insert(row.end(), out.begin(), out.end());
-          row.insert(row.end(), ref.begin(), ref.end());
-          vf.rows.push_back(row);
-        }
+    for (int n : {8, 32, 0}) {  // 0: adaptive
+      const auto vf = blocks::pomvec::scene_vectors("pom_unit", ang, n);
       cosim::Options opt;
       opt.run.stall_prob = 0;
       const auto rep = cosim::run(vf, opt);
       EXPECT_EQ(rep.mismatches, 0u) << rep.first_mismatch;
+      const int steps_col = vf.indices(vec::Role::Out)[2];
+      std::vector<uint32_t> steps;
+      double k = 0;
+      for (const auto& r : vf.rows) {
+        steps.push_back(static_cast<uint32_t>(r[static_cast<size_t>(steps_col)]));
+        k += steps.back();
+      }
       const double np = double(vf.rows.size()), measured = double(rep.sim_cycles);
       const double predicted = double(pom::unit_cycles(steps));
-      double k = 0;
-      for (uint32_t s : steps) k += s;
       std::printf("pom_unit scene %g deg N=%s: steps/px %.3f, cycles/px measured %.3f predicted "
-                  "%.3f (%.2f %%)\n", ang, n_fixed ? std::to_string(n_fixed).c_str() : "adaptive",
-                  k / np, measured / np, predicted / np, 100 * (measured / predicted - 1));
+                  "%.3f (%.2f %%)\n", ang, n ? std::to_string(n).c_str() : "adaptive", k / np,
+                  measured / np, predicted / np, 100 * (measured / predicted - 1));
       EXPECT_NEAR(measured / predicted, 1.0, 0.05);
     }
 }

@@ -4,6 +4,9 @@
 // weight a/den; pom::march_ref at the same N. Errors in uv LSB (2^-16).
 #include <random>
 
+#include "complexity/complexity.hpp"
+#include "pom/pom_layers.hpp"
+
 #include "block.hpp"
 #include "pom_vec_common.hpp"
 
@@ -282,6 +285,36 @@ Block make_unit() {
   return b;
 }
 }  // namespace
+
+vec::VectorFile pomvec::scene_vectors(const std::string& block, double deg, int n) {
+  const Block& b = find(block);
+  static const img::Gray8 cmap = complexity::complexity_map(pom::map_bricks(64));
+  const pom::View vw = view(deg, 30, 0.05);
+  vec::VectorFile vf;
+  vf.block = b.name;
+  vf.set = "scene";
+  vf.fields = b.fields;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const int64_t u = (2 * x + 1) << 9, v = (2 * y + 1) << 9;
+      const uint32_t nn = n > 0 ? uint32_t(n) : pom::layers(vw.vz, pom::tex_nearest(cmap, u, v)).n;
+      Row row;
+      if (block == "iter_parallax") {
+        const auto d = n ? pom::ipx_dir_normalised(vw) : pom::ipx_dir_seed(vw);
+        row = {uint64_t(u), uint64_t(v), c32(d.su), c32(d.sv), c32(d.sh)};
+      } else if (block == "pom_march") {
+        const auto s = pom::setup(vw, nn);
+        row = {uint64_t(u), uint64_t(v), c32(s.du), c32(s.dv), nn};
+      } else {
+        row = unit_row(u, v, vw, nn, true);
+      }
+      const Row out = b.model(row), ref = b.ref(row);
+      row.insert(row.end(), out.begin(), out.end());
+      row.insert(row.end(), ref.begin(), ref.end());
+      vf.rows.push_back(std::move(row));
+    }
+  return vf;
+}
 
 std::vector<Block> make_pom_unit_blocks() { return {make_setup(), make_refine(), make_unit()}; }
 

@@ -40,4 +40,11 @@ inline double wrapped_lsb(double a, double b) {
   return std::min(x, 1 - x) * 65536.0;
 }
 
+// The scene pixel stream of the cycle tests and the report: a 64x64-pixel tile of the bricks map
+// (texel centres), S = 0.05, azimuth 30 degrees, view angle `deg`. Rows hold inputs, C-model
+// outputs and references of `block`: pom_unit and pom_march with N = n (n = 0: adaptive, N from
+// pom::layers of the map's complexity, 4..32); iter_parallax with the seed direction (n = 0) or
+// the P-normalised one (n = 1).
+vec::VectorFile scene_vectors(const std::string& block, double deg, int n);
+
 }  // namespace tu::blocks::pomvec
