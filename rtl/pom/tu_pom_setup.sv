@@ -38,8 +38,7 @@ module tu_pom_setup #(
   localparam int unsigned PW  = tu_formats_pkg::RecipShiftW;
   localparam int unsigned RF  = tu_formats_pkg::RecipOutF;
   localparam int unsigned XsW = VzW + SW + 1;   // S*Vx: signed
-  localparam int unsigned Pr1W = XsW + RW + 1;  // S*Vx * R_a
-  localparam int unsigned Pr2W = UvW + RW + 1;  // P * R_n
+  localparam int unsigned PrW = XsW + RW + 1;   // S*Vx * R_a, P * R_n (P fits in XsW)
   localparam int unsigned CoreLat = 4;
 
   logic en;
@@ -107,36 +106,29 @@ module tu_pom_setup #(
   tu_recip_core u_core_a (.clk_i, .en_i(en), .m_i(ma_q), .r_o(ra));
   tu_recip_core u_core_n (.clk_i, .en_i(en), .m_i(mn_q), .r_o(rn));
 
-  // ---- Stage 5: P = S*Vxy / a ----------------------------------------------------------------
-  logic signed [Pr1W-1:0] pu_full, pv_full;
-  logic signed [UvW-1:0]  pu_q, pv_q;
-  logic [6:0]             sh1, sh2;
-  always_comb begin
-    sh1 = 7'(pa_q[CoreLat]) + 7'(RF);
-    pu_full = Pr1W'(xs_q[CoreLat]) * $signed({1'b0, ra});
-    pv_full = Pr1W'(ys_q[CoreLat]) * $signed({1'b0, ra});
-    pu_full = (pu_full + (Pr1W'(1) <<< (sh1 - 7'd1))) >>> sh1;
-    pv_full = (pv_full + (Pr1W'(1) <<< (sh1 - 7'd1))) >>> sh1;
-  end
+  // round_half_up(x * R / 2^sh), the C model's mul_recip (x signed, R unsigned)
+  function automatic logic [UvW-1:0] mul_rsh(input logic signed [XsW-1:0] x,
+                                             input logic [RW-1:0] r, input logic [6:0] sh);
+    logic signed [PrW-1:0] p;
+    p = PrW'(x) * $signed({1'b0, r});
+    p = (p + (PrW'(1) <<< (sh - 7'd1))) >>> sh;
+    mul_rsh = UvW'(p);
+  endfunction
 
-  // ---- Stage 6: dT = P / N -------------------------------------------------------------------
-  logic signed [Pr2W-1:0] du_full, dv_full;
-  logic signed [UvW-1:0]  du_q, dv_q;
-  always_comb begin
-    sh2 = 7'(pn_q[CoreLat+1]) + 7'(RF);
-    du_full = Pr2W'(pu_q) * $signed({1'b0, rn_q5});
-    dv_full = Pr2W'(pv_q) * $signed({1'b0, rn_q5});
-    du_full = (du_full + (Pr2W'(1) <<< (sh2 - 7'd1))) >>> sh2;
-    dv_full = (dv_full + (Pr2W'(1) <<< (sh2 - 7'd1))) >>> sh2;
-  end
+  // ---- Stage 5: P = S*Vxy / a;  stage 6: dT = P / N ------------------------------------------
+  logic [6:0]            sh_a, sh_n;
+  logic signed [UvW-1:0] pu_q, pv_q;
+  logic [UvW-1:0]        du_q, dv_q;
+  assign sh_a = 7'(pa_q[CoreLat]) + 7'(RF);
+  assign sh_n = 7'(pn_q[CoreLat+1]) + 7'(RF);
 
   always_ff @(posedge clk_i) begin
     if (en) begin
-      pu_q  <= UvW'(pu_full);
-      pv_q  <= UvW'(pv_full);
+      pu_q  <= mul_rsh(xs_q[CoreLat], ra, sh_a);
+      pv_q  <= mul_rsh(ys_q[CoreLat], ra, sh_a);
       rn_q5 <= rn;
-      du_q  <= UvW'(du_full);
-      dv_q  <= UvW'(dv_full);
+      du_q  <= mul_rsh(XsW'(pu_q), rn_q5, sh_n);
+      dv_q  <= mul_rsh(XsW'(pv_q), rn_q5, sh_n);
     end
   end
 

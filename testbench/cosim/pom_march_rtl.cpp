@@ -15,15 +15,7 @@ RtlBlock rtl_pom_march() {
   auto sample = [](Vtu_pom_march& d) {
     return Row{d.u_o, d.v_o, d.steps_o, d.a_o, d.den_o};
   };
-  RtlBlock b;
-  b.name = "pom_march";
-  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<Vtu_pom_march>(drive, sample).run(in, o);
-  };
-  b.timing = [=](const std::vector<Row>& in) {
-    return Harness<Vtu_pom_march>(drive, sample).measure_timing(in);
-  };
-  return b;
+  return make_rtl<Vtu_pom_march>("pom_march", drive, sample);
 }
 
 }  // namespace tu::cosim

@@ -6,19 +6,6 @@
 
 namespace tu::cosim {
 
-namespace {
-template <class V, class Drive, class Sample>
-RtlBlock bind(const char* name, Drive drive, Sample sample) {
-  RtlBlock b;
-  b.name = name;
-  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<V>(drive, sample).run(in, o);
-  };
-  b.timing = [=](const std::vector<Row>& in) { return Harness<V>(drive, sample).measure_timing(in); };
-  return b;
-}
-}  // namespace
-
 std::vector<RtlBlock> rtl_pom_unit() {
   auto setup_drive = [](Vtu_pom_setup& d, const Row& in) {
     d.vx_i = static_cast<uint16_t>(in[0]);
@@ -58,9 +45,9 @@ std::vector<RtlBlock> rtl_pom_unit() {
   auto unit_sample = [](Vtu_pom_unit& d) {
     return Row{d.u_o, d.v_o, d.steps_o, d.w_o, d.discard_o, d.back_o, d.clamped_o};
   };
-  return {bind<Vtu_pom_setup>("pom_setup", setup_drive, setup_sample),
-          bind<Vtu_pom_refine>("pom_refine", refine_drive, refine_sample),
-          bind<Vtu_pom_unit>("pom_unit", unit_drive, unit_sample)};
+  return {make_rtl<Vtu_pom_setup>("pom_setup", setup_drive, setup_sample),
+          make_rtl<Vtu_pom_refine>("pom_refine", refine_drive, refine_sample),
+          make_rtl<Vtu_pom_unit>("pom_unit", unit_drive, unit_sample)};
 }
 
 }  // namespace tu::cosim

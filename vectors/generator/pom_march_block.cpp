@@ -8,18 +8,12 @@
 #include <random>
 
 #include "block.hpp"
-#include "pom/pom_march.hpp"
-#include "pom/relief_quality.hpp"
+#include "pom_vec_common.hpp"
 
 namespace tu::blocks {
 
 namespace {
-const uint64_t kM32 = 0xffffffffull;
-uint64_t c32(int64_t v) { return static_cast<uint64_t>(v) & kM32; }
-const img::Gray8& depth() {
-  static const img::Gray8 d = pom::map_bricks(64);
-  return d;
-}
+using namespace pomvec;
 
 std::vector<Row> golden_inputs() {
   std::vector<Row> rows;
@@ -58,7 +52,6 @@ std::vector<Row> random_inputs(uint64_t count, uint64_t seed) {
   return rows;
 }
 
-int64_t s32(uint64_t x) { return vec::sext(x, 32); }
 }  // namespace
 
 Block make_pom_march() {
