@@ -42,7 +42,8 @@ Maps make_maps(const scene::Scene& s, const std::string& material) {
   const auto& rel = s.materials.at(material).relief.value();
   const auto& spec = s.textures.at(rel.height_texture);
   const img::Gray8 height = spec.builtin == "bricks" ? tex::bricks(spec.size).height : [&] {
-    const auto& im = scene::build_texture(s, rel.height_texture).levels[0];
+    const tex::Texture t = scene::build_texture(s, rel.height_texture);
+    const auto& im = t.levels[0];
     img::Gray8 g(im.width, im.height);
     for (size_t i = 0; i < im.px.size(); ++i) g.px[i] = im.px[i].r;
     return g;
