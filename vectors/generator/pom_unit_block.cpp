@@ -64,6 +64,26 @@ pom::View random_view(std::mt19937_64& rng) {
 
 const uint64_t kGoldenN[] = {1, 4, 8, 16, 24, 32, 63};
 
+// Golden pixels of the refinement and the unit: views x N x 3 uv (one without wrap: discard).
+template <class MakeRow>
+std::vector<Row> golden_pixels(MakeRow make_row) {
+  std::vector<Row> rows;
+  for (const auto& v : golden_views())
+    for (uint64_t n : kGoldenN)
+      for (int64_t u : {int64_t(512), int64_t(20992), int64_t(65000)})
+        rows.push_back(make_row(u, u / 3 + 777, v, n, u != 512));
+  return rows;
+}
+
+// uv error in LSB, modulo 1 (wrapped outputs and the fract-wrapped march_ref).
+ErrPoint uv_error(const Row&, const Row& out, const Row& ref) {
+  ErrPoint e;
+  e.abs = std::max(wrapped_lsb(s32(out[0]) / 65536.0, vec::bits_f64(ref[0])),
+                   wrapped_lsb(s32(out[1]) / 65536.0, vec::bits_f64(ref[1])));
+  e.ulp = e.abs;
+  return e;
+}
+
 // ---- pom_setup ---------------------------------------------------------------------------------
 Row setup_row(const pom::View& v, uint64_t n) {
   Row r = view_row(v);
@@ -150,12 +170,9 @@ Block make_refine() {
   b.sets = {"golden", "stiff", "random"};
   b.inputs = standard_sets(
       [] {
-        std::vector<Row> rows;
-        for (const auto& v : golden_views())
-          for (uint64_t n : kGoldenN)
-            for (int64_t u : {int64_t(512), int64_t(20992), int64_t(65000)})
-              rows.push_back(refine_row(u, u / 3 + 777, v, static_cast<uint32_t>(n), u != 512));
-        return rows;
+        return golden_pixels([](int64_t u, int64_t v, const pom::View& vw, uint64_t n, bool wrap) {
+          return refine_row(u, v, vw, static_cast<uint32_t>(n), wrap);
+        });
       },
       [] {
         std::vector<Row> rows;
@@ -199,13 +216,7 @@ Block make_refine() {
     }
     return Row{vec::f64_bits(u), vec::f64_bits(v)};
   };
-  b.error = [](const Row&, const Row& out, const Row& ref) {
-    ErrPoint e;
-    e.abs = std::max(wrapped_lsb(s32(out[0]) / 65536.0, vec::bits_f64(ref[0])),
-                     wrapped_lsb(s32(out[1]) / 65536.0, vec::bits_f64(ref[1])));
-    e.ulp = e.abs;
-    return e;
-  };
+  b.error = uv_error;
   b.latency_cycles = fmt::kPomRefineLatency;
   b.ii_cycles = 1;
   return b;
@@ -232,14 +243,7 @@ Block make_unit() {
               F("ref_u", Ref, "f64"),     F("ref_v", Ref, "f64")};
   b.sets = {"golden", "stiff", "random"};
   b.inputs = standard_sets(
-      [] {
-        std::vector<Row> rows;
-        for (const auto& v : golden_views())
-          for (uint64_t n : kGoldenN)
-            for (int64_t u : {int64_t(512), int64_t(20992), int64_t(65000)})
-              rows.push_back(unit_row(u, u / 3 + 777, v, n, u != 512));
-        return rows;
-      },
+      [] { return golden_pixels(unit_row); },
       [] {
         std::vector<Row> rows;
         for (const auto& v : stiff_views())
@@ -271,13 +275,7 @@ Block make_unit() {
                                   v.scale / 65536.0, static_cast<uint32_t>(in[6]));
     return Row{vec::f64_bits(r.u), vec::f64_bits(r.v)};
   };
-  b.error = [](const Row&, const Row& out, const Row& ref) {
-    ErrPoint e;  // march_ref is fract-wrapped: compare modulo 1
-    e.abs = std::max(wrapped_lsb(s32(out[0]) / 65536.0, vec::bits_f64(ref[0])),
-                     wrapped_lsb(s32(out[1]) / 65536.0, vec::bits_f64(ref[1])));
-    e.ulp = e.abs;
-    return e;
-  };
+  b.error = uv_error;
   // k = 0 pixel alone: set-up + accept, compare, output + refinement; data dependent (k + 3 per
   // pixel in the engine), see pom_unit_sched
   b.latency_cycles = fmt::kPomSetupLatency + 2 + fmt::kPomRefineLatency;
