@@ -1,10 +1,10 @@
 // Per-pixel POM unit (docs/blocks/relief.md §8; C model pom::march):
 //   tu_pom_setup (II 1, 7 cycles) -> tu_pom_march (one layer step per clock, k + 3 cycles per
 //   pixel, one pixel in flight) -> tu_pom_refine (II 1, 7 cycles).
-// Set-up and refinement overlap the march of neighbouring pixels, so a stream of pixels costs
-// sum(k + 3) + PomSetupLatency + PomRefineLatency cycles without stalls.
-// dT, wrap and the flags of the pixel inside the march engine wait in one register: the engine
-// holds one pixel and accepts the next only after its output was taken.
+// Set-up and refinement overlap the march of neighbouring pixels, and the engine accepts the next
+// pixel in the last compare cycle of the previous one, so a stream of pixels costs
+// sum(k + 1) + PomSetupLatency + PomRefineLatency + 2 cycles without stalls (pom::unit_cycles).
+// dT, wrap and the flags travel through the engine with their pixel (its side port).
 module tu_pom_unit
 (
   input  logic                                clk_i,
@@ -46,34 +46,26 @@ module tu_pom_unit
     .du_o(s_du), .dv_o(s_dv), .n_o(s_n), .back_o(s_back), .clamped_o(s_clamped), .side_o(s_side)
   );
 
-  // ---- March ---------------------------------------------------------------------------------
-  logic           m_valid, m_ready;
-  logic [UvW-1:0] m_u, m_v;
-  logic [NW-1:0]  m_steps;
-  logic [DW-1:0]  m_a, m_den;
-  tu_pom_march u_march (
+  // ---- March ----------------------------------------------------------------------------------
+  localparam int unsigned MSideW = 2 * UvW + 3;  // dT, wrap, back, clamped
+  logic              m_valid, m_ready;
+  logic [UvW-1:0]    m_u, m_v;
+  logic [NW-1:0]     m_steps;
+  logic [DW-1:0]     m_a, m_den;
+  logic [MSideW-1:0] m_side;
+  tu_pom_march #(.SideW(MSideW)) u_march (
     .clk_i, .rst_ni, .in_valid_i(s_valid), .in_ready_o(s_ready),
     .u_i(s_side[SideW-1 -: UvW]), .v_i(s_side[1 +: UvW]), .du_i(s_du), .dv_i(s_dv), .n_i(s_n),
+    .side_i({s_du, s_dv, s_side[0], s_back, s_clamped}),
     .out_valid_o(m_valid), .out_ready_i(m_ready),
-    .u_o(m_u), .v_o(m_v), .steps_o(m_steps), .a_o(m_a), .den_o(m_den)
+    .u_o(m_u), .v_o(m_v), .steps_o(m_steps), .a_o(m_a), .den_o(m_den), .side_o(m_side)
   );
-
-  // dT, wrap and flags of the pixel in the engine.
-  logic [UvW-1:0] du_q, dv_q;
-  logic           wrap_q, back_q, clamped_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      du_q <= '0; dv_q <= '0; wrap_q <= 1'b0; back_q <= 1'b0; clamped_q <= 1'b0;
-    end else if (s_valid && s_ready) begin
-      du_q <= s_du; dv_q <= s_dv; wrap_q <= s_side[0]; back_q <= s_back; clamped_q <= s_clamped;
-    end
-  end
 
   // ---- Refinement ----------------------------------------------------------------------------
   tu_pom_refine #(.SideW(2)) u_refine (
     .clk_i, .rst_ni, .in_valid_i(m_valid), .in_ready_o(m_ready),
-    .u_i(m_u), .v_i(m_v), .du_i(du_q), .dv_i(dv_q), .steps_i(m_steps), .a_i(m_a), .den_i(m_den),
-    .wrap_i(wrap_q), .side_i({back_q, clamped_q}),
+    .u_i(m_u), .v_i(m_v), .du_i(m_side[MSideW-1 -: UvW]), .dv_i(m_side[3 +: UvW]),
+    .steps_i(m_steps), .a_i(m_a), .den_i(m_den), .wrap_i(m_side[2]), .side_i(m_side[1:0]),
     .out_valid_o, .out_ready_i,
     .u_o, .v_o, .steps_o, .w_o, .discard_o, .side_o({back_o, clamped_o})
   );

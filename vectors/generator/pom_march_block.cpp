@@ -92,8 +92,8 @@ Block make_pom_march() {
     e.ulp = e.abs;  // steps
     return e;
   };
-  b.latency_cycles = 3;  // k = 0; a pixel takes steps + 3 cycles (data dependent)
-  b.ii_cycles = 3;
+  b.latency_cycles = 2;  // k = 0 (output in cycle k + 2); a stream takes k + 1 cycles per pixel
+  b.ii_cycles = 1;
   return b;
 }
 

@@ -276,10 +276,10 @@ Block make_unit() {
     return Row{vec::f64_bits(r.u), vec::f64_bits(r.v)};
   };
   b.error = uv_error;
-  // k = 0 pixel alone: set-up + accept, compare, output + refinement; data dependent (k + 3 per
-  // pixel in the engine), see pom_unit_sched
+  // k = 0 pixel alone: set-up, engine (accept, compare, output register), refinement; a stream
+  // takes k + 1 cycles per pixel (pom::unit_cycles)
   b.latency_cycles = fmt::kPomSetupLatency + 2 + fmt::kPomRefineLatency;
-  b.ii_cycles = 3;
+  b.ii_cycles = 1;
   return b;
 }
 }  // namespace

@@ -96,10 +96,14 @@ MarchOut march(const img::Gray8& depth, int64_t u, int64_t v, const View& view, 
   return o;
 }
 
-uint64_t unit_cycles(const std::vector<uint32_t>& steps) {
-  uint64_t c = fmt::kPomSetupLatency + fmt::kPomRefineLatency;
-  for (uint32_t k : steps) c += k + 3;
+uint64_t march_cycles(const std::vector<uint32_t>& steps) {
+  uint64_t c = 2;
+  for (uint32_t k : steps) c += k + 1;
   return c;
+}
+
+uint64_t unit_cycles(const std::vector<uint32_t>& steps) {
+  return march_cycles(steps) + fmt::kPomSetupLatency + fmt::kPomRefineLatency;
 }
 
 MarchCore march_core(const img::Gray8& depth, int64_t u, int64_t v, int64_t du, int64_t dv,

@@ -80,10 +80,13 @@ Setup setup(const View& view, uint32_t n);
 // T'' = T_k + w*dT, then wrap (fract) or the discard test. Sets u, v, steps, w, discard.
 MarchOut refine(const MarchCore& c, int64_t du, int64_t dv, bool wrap);
 
-// Cycle estimator of tu_pom_unit for a stream of pixels with march steps k_i, no stalls: the
-// engine takes k + 3 cycles per pixel (accept, k + 1 compares, output) and set-up / refinement of
-// other pixels overlap it, so only the first set-up and the last refinement add:
-//   cycles = sum(k_i + 3) + PomSetupLatency + PomRefineLatency.
+// Cycle estimators for a stream of pixels with march steps k_i, no stalls, counted up to and
+// including the last output's cycle. tu_pom_march: k + 1 compares per pixel, the next pixel is
+// accepted in the last compare cycle of the previous one, the last output registers 2 cycles
+// later:  march_cycles = sum(k_i + 1) + 2.  tu_pom_unit: set-up and refinement of other pixels
+// overlap the march, so only the first set-up and the last refinement add:
+//   unit_cycles = march_cycles + PomSetupLatency + PomRefineLatency.
+uint64_t march_cycles(const std::vector<uint32_t>& steps);
 uint64_t unit_cycles(const std::vector<uint32_t>& steps);
 
 // Float reference (double): the same |Vz| guard, P = Vxy/a*S and dT = P/N unquantised, the same
