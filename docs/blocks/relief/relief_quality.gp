@@ -16,7 +16,7 @@ do for [m=1:3] {
 }
 unset multiplot
 set output '/tmp/relief_h3_plots/relief_psnr_vs_cycles.png'
-set xlabel 'cycles per pixel (k + 3)'
+set xlabel 'cycles per pixel (POM k + 1, iterative k + 3)'
 set multiplot layout 1,3
 do for [m=1:3] {
   set title word(maps, m)
