@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "ewa/ewa_ref.hpp"
+#include "pom/pom_layers.hpp"
+#include "pom/relief.hpp"
 #include "texunit/render.hpp"
 
 namespace tu::render {
@@ -16,6 +18,26 @@ constexpr img::Rgba8 kBackground{0, 0, 80, 255};
 
 uint8_t to8(double x) { return static_cast<uint8_t>(std::clamp(std::lround(x), 0L, 255L)); }
 img::Rgba8 to8(const tex::RgbaF& c) { return {to8(c.r), to8(c.g), to8(c.b), to8(c.a)}; }
+
+// Relief: (u, v) (level-0 texels) shifted by the 256-layer exact march in the tangent frame of
+// the covered triangle; the footprint (ellipse) stays that of the unshifted surface. Records N of
+// the material's method (the layer-count debug image).
+void shift_relief(const scene::Scene& s, const Cover& c, const relief::Maps& maps, const tex::Texture& tx,
+                  int x, int y, double* u, double* v, PixelRecord* rec) {
+  const auto& obj = s.objects[static_cast<size_t>(c.object)];
+  const auto& tri = obj.triangles[static_cast<size_t>(c.triangle)];
+  const auto& rel = *s.materials.at(obj.material).relief;
+  persp::Hit hit;
+  relief::TangentView tv;
+  if (!persp::ray_hit(s.camera, tri, x, y, &hit) || !relief::tangent_view(tri, s.camera.pos, hit.s, hit.r, &tv))
+    return;
+  const double W = tx.levels[0].width, H = tx.levels[0].height, one = std::ldexp(1.0, fmt::kPomUvF);
+  rec->relief_n = static_cast<int>(relief::layers_at(maps, std::llround(*u / W * one), std::llround(*v / H * one),
+                                                     relief::quantise(tv, rel.scale), rel.method, rel.layers));
+  const auto r = relief::shift_uv_ref(maps, *u / W, *v / H, tv, rel.scale);
+  *u = r.u * W;
+  *v = r.v * H;
+}
 }  // namespace
 
 std::vector<Cover> visibility(const scene::Scene& s) {
@@ -59,6 +81,11 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
       k.push_back(persp::coefficients(s.camera, t));
     coefs.push_back(std::move(k));
   }
+  // Per object with relief: depth / complexity maps (docs/blocks/relief.md §9).
+  std::vector<std::optional<relief::Maps>> reliefs;
+  for (const auto& o : s.objects)
+    reliefs.push_back(s.materials.at(o.material).relief ? std::optional(relief::make_maps(s, o.material))
+                                                        : std::nullopt);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const Cover c = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)];
@@ -69,6 +96,7 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
       double u, v, q;
       persp::eval_ref(k, x, y, &u, &v, &q);
       PixelRecord rec;
+      if (const auto& maps = reliefs[static_cast<size_t>(c.object)]) shift_relief(s, c, *maps, tx, x, y, &u, &v, &rec);
       rec.x = x, rec.y = y, rec.object = c.object, rec.u = u, rec.v = v;
       const auto j = ellipse::analytic(k, x, y);
       const ellipse::FootprintParams fp{m.max_aniso, static_cast<double>(tx.num_levels() - 1)};
@@ -99,6 +127,21 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
     }
   }
   return f;
+}
+
+std::optional<img::Gray8> layers_image(const scene::Scene& s, const Frame& f) {
+  std::vector<int> nmax;  // per object: Nmax of adaptive relief, 0 otherwise
+  for (const auto& o : s.objects) {
+    const auto& rel = s.materials.at(o.material).relief;
+    nmax.push_back(rel && rel->method == scene::ReliefMethod::PomAdaptive ? std::clamp(rel->layers, 1, 63) : 0);
+  }
+  if (std::all_of(nmax.begin(), nmax.end(), [](int n) { return n == 0; })) return std::nullopt;
+  img::Gray8 g(f.image.width, f.image.height);
+  for (const auto& p : f.pixels) {
+    const int n = nmax[static_cast<size_t>(p.object)], lo = static_cast<int>(pom::kDefaultNmin);
+    if (n > 0 && p.relief_n > 0) g.at(p.x, p.y) = to8(n > lo ? 255.0 * (p.relief_n - lo) / (n - lo) : 255.0);
+  }
+  return g;
 }
 
 img::Rgba8Image error_heatmap(const img::Rgba8Image& a, const img::Rgba8Image& b, int full_scale) {

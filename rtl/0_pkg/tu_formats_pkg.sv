@@ -64,6 +64,11 @@ package tu_formats_pkg;
   localparam int unsigned PomSF = 16;  // height scale S: unsigned u0.PomSF (S < 1)
   localparam int unsigned PomVzMin = 512;  // |Vz| guard: |Vz| clamped to >= PomVzMin * 2^-PomVzF (2^-5, 88.2 deg)
   localparam int unsigned PomWF = 16;  // refinement weight w = a/(a+b) in [0,1]: unsigned, PomWF fraction bits
+  localparam int unsigned PomWW = 17;  // w code 0..2^PomWF
+  localparam int unsigned PomSW = 16;  // height scale S code: unsigned, PomSF fraction bits
+  localparam int unsigned PomDenW = 16;  // refinement operands a, den = a + b: unsigned integers < 2^15
+  localparam int unsigned PomSetupLatency = 7;  // tu_pom_setup: normalise, 4 reciprocal stages, P, dT; II = 1
+  localparam int unsigned PomRefineLatency = 7;  // tu_pom_refine: normalise, 4 reciprocal stages, w, T''; II = 1
   localparam int unsigned IpxCap = 16;  // iterative parallax: default iteration cap
   localparam int unsigned IpxEps = 256;  // iterative parallax: default threshold |d| < IpxEps * 2^-PomUvF (2^-8)
   localparam int unsigned PerspXyW = 12;  // pixel indices x, y and span offset n: unsigned, 0..4095

@@ -5,10 +5,14 @@
 // Depth map: a synchronous 8-bit ROM model (nearest, REPEAT: texel = uv[15:10] of a 64x64 map)
 // holding the procedural bricks map pom::map_bricks(64) (flat faces 26, bevels 153 / 89, mortar
 // 255); that map repeats every 32 texels, so the ROM is addressed by uv[14:10].
-// The address of T_{i+1} = T_i - dT is issued every RUN cycle, so the sample is ready on the
-// next cycle: a pixel takes k + 3 cycles (accept, k + 1 compares, output), no stalls.
-module tu_pom_march
-(
+// The address of T_{i+1} = T_i - dT is issued every Run cycle, so the sample is ready on the
+// next cycle. The result moves to the output registers in the pixel's last compare cycle, and the
+// next pixel is accepted in that same cycle (its first depth address replaces the unused next
+// one), so a stream of pixels takes k + 1 cycles per pixel (k + 1 compares) without stalls;
+// one pixel alone: accepted in cycle 0, output in cycle k + 2.
+module tu_pom_march #(
+  parameter int unsigned SideW = 1  // carried with the pixel (the unit's dT and flags)
+) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
   input  logic                                in_valid_i,
@@ -18,24 +22,28 @@ module tu_pom_march
   input  logic [tu_formats_pkg::PomUvW-1:0]   du_i,
   input  logic [tu_formats_pkg::PomUvW-1:0]   dv_i,
   input  logic [tu_formats_pkg::PomNW-1:0]    n_i,
+  input  logic [SideW-1:0]                    side_i,
   output logic                                out_valid_o,
   input  logic                                out_ready_i,
   output logic [tu_formats_pkg::PomUvW-1:0]   u_o,
   output logic [tu_formats_pkg::PomUvW-1:0]   v_o,
   output logic [tu_formats_pkg::PomNW-1:0]    steps_o,
   output logic [15:0]                         a_o,
-  output logic [15:0]                         den_o
+  output logic [15:0]                         den_o,
+  output logic [SideW-1:0]                    side_o
 );
   localparam int unsigned UvW = tu_formats_pkg::PomUvW;
   localparam int unsigned NW = tu_formats_pkg::PomNW;
   localparam int unsigned TexLsb = tu_formats_pkg::PomUvF - 6;
 
-  typedef enum logic [1:0] {Idle, Run, Done} state_e;
+  typedef enum logic {Idle, Run} state_e;
   state_e state_q;
 
   logic [UvW-1:0] tu_q, tv_q, du_q, dv_q;
   logic [NW-1:0]  n_q, i_q;
   logic [7:0]     h_q, hp_q;  // h_q: ROM output = depth(T_i); hp_q: depth(T_{i-1})
+  logic           out_valid_q;
+  logic [SideW-1:0] side_q;
 
   // Depth ROM (bricks 64x64), combinational part.
   function automatic logic [7:0] bricks(input logic [4:0] x, input logic [4:0] y);
@@ -59,12 +67,18 @@ module tu_pom_march
   logic [UvW-1:0] nu, nv;         // next T
   logic [4:0]     ax, ay;         // ROM address (the 64x64 bricks map has period 32)
   logic           go;             // continue marching
+  logic           finish;         // last compare of the pixel in Run
+  logic           out_free;       // the output registers can take a result this cycle
+  logic           take_in;        // accept a pixel (Idle, or the previous pixel's last compare)
   logic [15:0]    lhs, rhs, rhs_p;   // 255*i, h*N, h_prev*N (< 2^14)
   logic           fire_in;
 
-  assign fire_in = in_valid_i && in_ready_o;
-  assign in_ready_o = (state_q == Idle);
-  assign out_valid_o = (state_q == Done);
+  assign out_free    = !out_valid_q || out_ready_i;
+  assign finish      = (state_q == Run) && !go;
+  assign take_in     = (state_q == Idle) || (finish && out_free);
+  assign in_ready_o  = take_in;
+  assign fire_in     = in_valid_i && take_in;
+  assign out_valid_o = out_valid_q;
 
   always_comb begin
     nu = tu_q - du_q;
@@ -73,7 +87,7 @@ module tu_pom_march
     rhs = 16'(h_q * n_q);
     rhs_p = 16'(hp_q * n_q);
     go = lhs < rhs;
-    if (state_q == Idle) begin
+    if (take_in) begin
       ax = u_i[TexLsb +: 5];
       ay = v_i[TexLsb +: 5];
     end else begin
@@ -87,37 +101,42 @@ module tu_pom_march
       state_q <= Idle;
       tu_q <= '0; tv_q <= '0; du_q <= '0; dv_q <= '0;
       n_q <= '0; i_q <= '0; h_q <= '0; hp_q <= '0;
+      out_valid_q <= 1'b0;
+      side_q <= '0; side_o <= '0;
       u_o <= '0; v_o <= '0; steps_o <= '0; a_o <= '0; den_o <= '0;
     end else begin
-      // synchronous ROM: the address of this cycle is read at the edge
-      if (state_q == Idle || (state_q == Run && go)) h_q <= bricks(ax, ay);
-      unique case (state_q)
-        Idle: if (fire_in) begin
-          tu_q <= u_i; tv_q <= v_i; du_q <= du_i; dv_q <= dv_i; n_q <= n_i;
-          i_q <= '0;
-          state_q <= Run;
-        end
-        Run: if (go) begin
-          hp_q <= h_q;
-          tu_q <= nu;
-          tv_q <= nv;
-          i_q <= i_q + 1'b1;
+      // synchronous ROM: the address of this cycle is read at the edge (kept while stalled)
+      if (fire_in || (state_q == Run && go)) h_q <= bricks(ax, ay);
+      // output registers
+      if (finish && out_free) begin
+        u_o <= tu_q;
+        v_o <= tv_q;
+        side_o <= side_q;
+        steps_o <= i_q;
+        if (i_q == '0) begin
+          a_o <= '0;
+          den_o <= '0;
         end else begin
-          u_o <= tu_q;
-          v_o <= tv_q;
-          steps_o <= i_q;
-          if (i_q == '0) begin
-            a_o <= '0;
-            den_o <= '0;
-          end else begin
-            a_o <= lhs - rhs;
-            den_o <= (lhs - rhs) + (rhs_p - (lhs - 16'd255));
-          end
-          state_q <= Done;
+          a_o <= lhs - rhs;
+          den_o <= (lhs - rhs) + (rhs_p - (lhs - 16'd255));
         end
-        Done: if (out_ready_i) state_q <= Idle;
-        default: state_q <= Idle;
-      endcase
+        out_valid_q <= 1'b1;
+      end else if (out_ready_i) begin
+        out_valid_q <= 1'b0;
+      end
+      // march state
+      if (fire_in) begin
+        tu_q <= u_i; tv_q <= v_i; du_q <= du_i; dv_q <= dv_i; n_q <= n_i; side_q <= side_i;
+        i_q <= '0;
+        state_q <= Run;
+      end else if (state_q == Run && go) begin
+        hp_q <= h_q;
+        tu_q <= nu;
+        tv_q <= nv;
+        i_q <= i_q + 1'b1;
+      end else if (finish && out_free) begin
+        state_q <= Idle;
+      end
     end
   end
 endmodule

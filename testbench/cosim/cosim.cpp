@@ -16,6 +16,7 @@ RtlBlock rtl_persp_setup(); // persp_rtl.cpp
 RtlBlock rtl_pom_layers();  // pom_layers_rtl.cpp
 RtlBlock rtl_pom_march();   // pom_march_rtl.cpp
 RtlBlock rtl_iter_parallax();  // iter_parallax_rtl.cpp
+std::vector<RtlBlock> rtl_pom_unit();  // pom_unit_rtl.cpp
 RtlBlock rtl_ellipse();     // ellipse_rtl.cpp
 
 const RtlBlock& find_rtl(const std::string& name) {
@@ -25,6 +26,9 @@ const RtlBlock& find_rtl(const std::string& name) {
     if (r.name == name) return r;
   static const std::vector<RtlBlock> gauss = rtl_gauss();
   for (const auto& r : gauss)
+    if (r.name == name) return r;
+  static const std::vector<RtlBlock> pom_unit = rtl_pom_unit();
+  for (const auto& r : pom_unit)
     if (r.name == name) return r;
   throw std::invalid_argument("block '" + name + "' has no RTL co-simulation model");
 }

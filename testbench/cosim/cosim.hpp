@@ -21,6 +21,18 @@ struct RtlBlock {
 
 const RtlBlock& find_rtl(const std::string& name);  // throws std::invalid_argument
 
+// An RtlBlock for the Verilated model V from its `drive` and `sample` functions.
+template <class V, class Drive, class Sample>
+RtlBlock make_rtl(const std::string& name, Drive drive, Sample sample) {
+  RtlBlock b;
+  b.name = name;
+  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
+    return Harness<V>(drive, sample).run(in, o);
+  };
+  b.timing = [=](const std::vector<Row>& in) { return Harness<V>(drive, sample).measure_timing(in); };
+  return b;
+}
+
 struct Report {
   std::string block;
   uint64_t vectors = 0;

@@ -15,15 +15,7 @@ RtlBlock rtl_iter_parallax() {
   auto sample = [](Vtu_iter_parallax& d) {
     return Row{d.u_o, d.v_o, d.iters_o, d.nonconv_o};
   };
-  RtlBlock b;
-  b.name = "iter_parallax";
-  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<Vtu_iter_parallax>(drive, sample).run(in, o);
-  };
-  b.timing = [=](const std::vector<Row>& in) {
-    return Harness<Vtu_iter_parallax>(drive, sample).measure_timing(in);
-  };
-  return b;
+  return make_rtl<Vtu_iter_parallax>("iter_parallax", drive, sample);
 }
 
 }  // namespace tu::cosim

@@ -11,19 +11,12 @@ RtlBlock rtl_pom_march() {
     d.du_i = static_cast<uint32_t>(in[2]);
     d.dv_i = static_cast<uint32_t>(in[3]);
     d.n_i = static_cast<uint8_t>(in[4]);
+    d.side_i = 0;
   };
   auto sample = [](Vtu_pom_march& d) {
     return Row{d.u_o, d.v_o, d.steps_o, d.a_o, d.den_o};
   };
-  RtlBlock b;
-  b.name = "pom_march";
-  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<Vtu_pom_march>(drive, sample).run(in, o);
-  };
-  b.timing = [=](const std::vector<Row>& in) {
-    return Harness<Vtu_pom_march>(drive, sample).measure_timing(in);
-  };
-  return b;
+  return make_rtl<Vtu_pom_march>("pom_march", drive, sample);
 }
 
 }  // namespace tu::cosim

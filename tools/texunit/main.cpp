@@ -195,7 +195,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> rep_blocks;
   std::string rep_json, rep_plots;
   auto* rep = app.add_subcommand("report", "error / cycles / area per block variant (docs/blocks/gaussian.md)");
-  rep->add_option("--blocks", rep_blocks, "clip_volume,gauss_weight,weight_table")->delimiter(',')->required();
+  rep->add_option("--blocks", rep_blocks, "clip_volume,gauss_weight,weight_table,pom_layers,pom_march,iter_parallax,pom_unit")->delimiter(',')->required();
   rep->add_option("--json", rep_json, "write the rows as a JSON array");
   rep->add_option("--plots", rep_plots, "directory for error_vs_cycles.png / error_vs_cells.png");
   rep->add_option("--root", root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);

@@ -38,6 +38,11 @@ int run_render(const RenderArgs& a) {
   const std::string png = (std::filesystem::path(a.out_dir) / (a.engine + ".png")).string();
   img::write_png_rgba(png, frame.image);
   std::cerr << "wrote " << png << " (" << frame.pixels.size() << " covered pixels)\n";
+  if (const auto layers = render::layers_image(s, frame)) {
+    const std::string lp = (std::filesystem::path(a.out_dir) / "layers.png").string();
+    img::write_png_gray(lp, *layers);
+    std::cerr << "wrote " << lp << " (adaptive relief: N per pixel, (N - 4) / (Nmax - 4) as grey)\n";
+  }
   if (!a.dump.empty()) {
     render::write_dump_csv(a.dump, frame);
     std::cerr << "wrote " << a.dump << "\n";

@@ -2,6 +2,7 @@
 // first piece of the project-wide "error against run time" report. Generic rows: a block adds a
 // row producer to `producers()`.
 #include "report.hpp"
+#include "report_relief.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -212,7 +213,8 @@ std::string Row::json() const {
          jstr(cycles_source) + ", \"cells\": " + jint(cells) + ", \"flip_flops\": " +
          jint(flip_flops) + ", \"multipliers\": " + jint(multipliers) + ", \"area_source\": " +
          jstr(area_source) + ", \"memory_bits\": " + jint(memory_bits) +
-         ", \"cmodel_ns_per_item\": " + jnum(cmodel_ns_per_item) + ", \"notes\": " + jstr(notes) + "}";
+         ", \"cmodel_ns_per_item\": " + jnum(cmodel_ns_per_item) + ", \"rtl_sim_items_per_s\": " +
+         jnum(rtl_sim_items_per_s) + ", \"err_unit\": " + jstr(err_unit) + ", \"notes\": " + jstr(notes) + "}";
 }
 
 std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string& root, bool yosys) {
@@ -222,7 +224,8 @@ std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string&
     if (b == "clip_volume") r = clip_rows(root, yosys);
     else if (b == "gauss_weight") r = weight_rows(root, yosys);
     else if (b == "weight_table") r = table_rows(root, yosys);
-    else throw std::invalid_argument("report: unknown block '" + b + "' (known: clip_volume, gauss_weight, weight_table)");
+    else if (is_relief_block(b)) r = relief_rows({b}, root, yosys);  // report_relief.cpp
+    else throw std::invalid_argument("report: unknown block '" + b + "' (known: clip_volume, gauss_weight, weight_table, pom_layers, pom_march, iter_parallax, pom_unit)");
     out.insert(out.end(), r.begin(), r.end());
   }
   return out;
@@ -271,6 +274,12 @@ int run(const std::vector<std::string>& blocks, const std::string& json, const s
         << "set xlabel 'Yosys cells (synth, generic)'\n"
         << "plot '" << dat << "' using ($5 > 0 ? $5 : 1/0):2 with points pt 7, '' using ($5 > 0 ? $5 : 1/0):2:1 with labels font ',7' offset 0,0.7\n";
     }
+    for (const auto& b : blocks)
+      if (is_relief_block(b)) {
+        std::cerr << (relief_plot(plots) ? "wrote " + plots + "/relief_psnr_vs_steps.png, relief_psnr_vs_cycles.png\n"
+                                         : std::string("gnuplot failed (relief plots skipped)\n"));
+        break;
+      }
     if (std::system(("gnuplot " + gp).c_str()) != 0) std::cerr << "gnuplot failed (plots skipped)\n";
     else std::cerr << "wrote " << plots << "/error_vs_cycles.png, error_vs_cells.png\n";
   }

@@ -16,6 +16,9 @@ struct Row {
   int64_t cells = -1, flip_flops = -1, multipliers = -1, memory_bits = -1;
   std::string area_source = "n/a", rtl_top, notes;
   double cmodel_ns_per_item = 0;
+  double rtl_sim_items_per_s = -1;  // -1: not measured (rtl_sim_source says why)
+  std::string rtl_sim_source = "not measured: no RTL";
+  std::string err_unit;             // what max_abs_err is measured in
   std::string json() const;
 };
 

@@ -10,6 +10,7 @@ std::vector<Block> make_gauss_blocks();  // gauss_blocks.cpp
 Block make_pom_layers();  // pom_layers_block.cpp
 Block make_pom_march();   // pom_march_block.cpp
 Block make_iter_parallax();  // iter_parallax_block.cpp
+std::vector<Block> make_pom_unit_blocks();  // pom_unit_block.cpp
 Block make_persp();       // persp_block.cpp
 Block make_persp_k4();    // persp_block.cpp
 Block make_persp_setup(); // persp_block.cpp
@@ -24,6 +25,7 @@ const std::vector<Block>& all() {
     b.push_back(make_pom_layers());
     b.push_back(make_pom_march());
     b.push_back(make_iter_parallax());
+    for (auto& p : make_pom_unit_blocks()) b.push_back(std::move(p));
     b.push_back(make_persp());
     b.push_back(make_persp_k4());
     b.push_back(make_persp_setup());

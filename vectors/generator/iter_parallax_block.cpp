@@ -7,28 +7,12 @@
 #include <random>
 
 #include "block.hpp"
-#include "pom/pom_march.hpp"
-#include "pom/relief_quality.hpp"
+#include "pom_vec_common.hpp"
 
 namespace tu::blocks {
 
 namespace {
-const uint64_t kM32 = 0xffffffffull;
-uint64_t c32(int64_t v) { return static_cast<uint64_t>(v) & kM32; }
-int64_t s32(uint64_t x) { return vec::sext(x, 32); }
-const img::Gray8& depth() {
-  static const img::Gray8 d = pom::map_bricks(64);
-  return d;
-}
-pom::View view(double th_deg, double ph_deg, double s) {
-  const double th = th_deg * M_PI / 180, ph = ph_deg * M_PI / 180;
-  pom::View v;
-  v.vx = static_cast<int32_t>(std::lround(std::sin(th) * std::cos(ph) * 16384));
-  v.vy = static_cast<int32_t>(std::lround(std::sin(th) * std::sin(ph) * 16384));
-  v.vz = static_cast<int32_t>(std::lround(std::cos(th) * 16384));
-  v.scale = static_cast<uint32_t>(std::lround(s * 65536));
-  return v;
-}
+using namespace pomvec;
 Row row(uint64_t u, uint64_t v, const pom::IpxDir& d) {
   return {u & 0xffff, v & 0xffff, c32(d.su), c32(d.sv), c32(d.sh)};
 }

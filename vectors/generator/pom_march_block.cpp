@@ -8,18 +8,12 @@
 #include <random>
 
 #include "block.hpp"
-#include "pom/pom_march.hpp"
-#include "pom/relief_quality.hpp"
+#include "pom_vec_common.hpp"
 
 namespace tu::blocks {
 
 namespace {
-const uint64_t kM32 = 0xffffffffull;
-uint64_t c32(int64_t v) { return static_cast<uint64_t>(v) & kM32; }
-const img::Gray8& depth() {
-  static const img::Gray8 d = pom::map_bricks(64);
-  return d;
-}
+using namespace pomvec;
 
 std::vector<Row> golden_inputs() {
   std::vector<Row> rows;
@@ -58,7 +52,6 @@ std::vector<Row> random_inputs(uint64_t count, uint64_t seed) {
   return rows;
 }
 
-int64_t s32(uint64_t x) { return vec::sext(x, 32); }
 }  // namespace
 
 Block make_pom_march() {
@@ -99,8 +92,8 @@ Block make_pom_march() {
     e.ulp = e.abs;  // steps
     return e;
   };
-  b.latency_cycles = 3;  // k = 0; a pixel takes steps + 3 cycles (data dependent)
-  b.ii_cycles = 3;
+  b.latency_cycles = 2;  // k = 0 (output in cycle k + 2); a stream takes k + 1 cycles per pixel
+  b.ii_cycles = 1;
   return b;
 }
 

@@ -59,15 +59,14 @@ Parallax parallax(const View& vw) {
   return p;
 }
 
-MarchOut march(const img::Gray8& depth, int64_t u, int64_t v, const View& view, uint32_t n,
-               bool wrap) {
-  if (n < 1 || n > 63) throw std::invalid_argument("pom::march: n must be 1..63");
+Setup setup(const View& view, uint32_t n) {
+  if (n < 1 || n > 63) throw std::invalid_argument("pom::setup: n must be 1..63");
   const Parallax p = parallax(view);
+  return {mul_recip(p.pu, n), mul_recip(p.pv, n), p.back, p.clamped};
+}
+
+MarchOut refine(const MarchCore& c, int64_t du, int64_t dv, bool wrap) {
   MarchOut o;
-  o.back = p.back;
-  o.clamped = p.clamped;
-  const int64_t du = mul_recip(p.pu, n), dv = mul_recip(p.pv, n);
-  const MarchCore c = march_core(depth, u, v, du, dv, n);
   o.steps = c.steps;
   int64_t tu = c.u, tv = c.v;
   if (c.steps > 0) {
@@ -86,6 +85,25 @@ MarchOut march(const img::Gray8& depth, int64_t u, int64_t v, const View& view, 
   o.u = tu;
   o.v = tv;
   return o;
+}
+
+MarchOut march(const img::Gray8& depth, int64_t u, int64_t v, const View& view, uint32_t n,
+               bool wrap) {
+  const Setup s = setup(view, n);
+  MarchOut o = refine(march_core(depth, u, v, s.du, s.dv, n), s.du, s.dv, wrap);
+  o.back = s.back;
+  o.clamped = s.clamped;
+  return o;
+}
+
+uint64_t march_cycles(const std::vector<uint32_t>& steps) {
+  uint64_t c = 2;
+  for (uint32_t k : steps) c += k + 1;
+  return c;
+}
+
+uint64_t unit_cycles(const std::vector<uint32_t>& steps) {
+  return march_cycles(steps) + fmt::kPomSetupLatency + fmt::kPomRefineLatency;
 }
 
 MarchCore march_core(const img::Gray8& depth, int64_t u, int64_t v, int64_t du, int64_t dv,
@@ -135,6 +153,8 @@ MarchRef march_ref(const img::Gray8& depth, double u, double v, double vx, doubl
     tu += w * du;
     tv += w * dv;
   }
+  r.tu = tu;
+  r.tv = tv;
   r.u = tu - std::floor(tu);
   r.v = tv - std::floor(tv);
   return r;

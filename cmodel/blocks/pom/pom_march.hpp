@@ -21,6 +21,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "texunit/formats.hpp"
 #include "texunit/image.hpp"
@@ -53,7 +54,8 @@ struct MarchOut {
   bool back = false, clamped = false;
 };
 
-// The bit-accurate march. u, v: PomUvF bits. n: 1..63.
+// The bit-accurate march = setup -> march_core -> refine (the three RTL stages of tu_pom_unit).
+// u, v: PomUvF bits. n: 1..63.
 MarchOut march(const img::Gray8& depth, int64_t u, int64_t v, const View& view, uint32_t n,
                bool wrap);
 
@@ -67,10 +69,31 @@ struct MarchCore {
 MarchCore march_core(const img::Gray8& depth, int64_t u, int64_t v, int64_t du, int64_t dv,
                      uint32_t n);
 
+// Set-up (RTL tu_pom_setup): a = max(|Vz|, PomVzMin), P = Vxy*S/a, dT = P*recip(N), flags.
+struct Setup {
+  int64_t du = 0, dv = 0;  // dT, PomUvF bits
+  bool back = false, clamped = false;
+};
+Setup setup(const View& view, uint32_t n);
+
+// Refinement (RTL tu_pom_refine): from the march result and dT: w = a*recip(den) (k > 0),
+// T'' = T_k + w*dT, then wrap (fract) or the discard test. Sets u, v, steps, w, discard.
+MarchOut refine(const MarchCore& c, int64_t du, int64_t dv, bool wrap);
+
+// Cycle estimators for a stream of pixels with march steps k_i, no stalls, counted up to and
+// including the last output's cycle. tu_pom_march: k + 1 compares per pixel, the next pixel is
+// accepted in the last compare cycle of the previous one, the last output registers 2 cycles
+// later:  march_cycles = sum(k_i + 1) + 2.  tu_pom_unit: set-up and refinement of other pixels
+// overlap the march, so only the first set-up and the last refinement add:
+//   unit_cycles = march_cycles + PomSetupLatency + PomRefineLatency.
+uint64_t march_cycles(const std::vector<uint32_t>& steps);
+uint64_t unit_cycles(const std::vector<uint32_t>& steps);
+
 // Float reference (double): the same |Vz| guard, P = Vxy/a*S and dT = P/N unquantised, the same
 // exact loop rule, exact refinement weight. Any n >= 1 (the quality reference uses 256).
 struct MarchRef {
-  double u = 0, v = 0;
+  double u = 0, v = 0;    // T'' wrapped to [0,1)
+  double tu = 0, tv = 0;  // T'' before the wrap
   uint32_t steps = 0;
 };
 MarchRef march_ref(const img::Gray8& depth, double u, double v, double vx, double vy, double vz,

@@ -73,6 +73,11 @@
   X(PomSF, 16, "height scale S: unsigned u0.PomSF (S < 1)")                                   \
   X(PomVzMin, 512, "|Vz| guard: |Vz| clamped to >= PomVzMin * 2^-PomVzF (2^-5, 88.2 deg)")    \
   X(PomWF, 16, "refinement weight w = a/(a+b) in [0,1]: unsigned, PomWF fraction bits")        \
+  X(PomWW, kPomWF + 1, "w code 0..2^PomWF")                                                   \
+  X(PomSW, 16, "height scale S code: unsigned, PomSF fraction bits")                          \
+  X(PomDenW, 16, "refinement operands a, den = a + b: unsigned integers < 2^15")              \
+  X(PomSetupLatency, 7, "tu_pom_setup: normalise, 4 reciprocal stages, P, dT; II = 1")        \
+  X(PomRefineLatency, 7, "tu_pom_refine: normalise, 4 reciprocal stages, w, T''; II = 1")     \
   X(IpxCap, 16, "iterative parallax: default iteration cap")                                  \
   X(IpxEps, 256, "iterative parallax: default threshold |d| < IpxEps * 2^-PomUvF (2^-8)")      \
   /* Perspective divide (docs/blocks/persp.md) */                                               \

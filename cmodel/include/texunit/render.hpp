@@ -24,6 +24,7 @@ struct PixelRecord {
   uint32_t b2_flags = 0;   // C-model engine: B2 flags (ellipse_fx.hpp; kHorizon = B1 guard)
   uint32_t ewa_flags = 0;  // C-model engine, EWA: ewa::fx flags (ewa_fx.hpp)
   img::Rgba8 color;
+  int relief_n = 0;     // relief materials: layers N of the material's method (0: no relief)
 };
 
 struct Frame {
@@ -56,6 +57,10 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter =
 
 // |a - b| per pixel (max over RGB) mapped to a blue-red heat map, `full_scale` levels = red.
 img::Rgba8Image error_heatmap(const img::Rgba8Image& a, const img::Rgba8Image& b, int full_scale);
+
+// Layer-count debug image (the seed's debug mode) when a material has adaptive relief: grey
+// (N - 4) / (Nmax - 4) on that material's pixels, black elsewhere; nullopt otherwise.
+std::optional<img::Gray8> layers_image(const scene::Scene& s, const Frame& f);
 
 // One CSV row per covered pixel: x,y,u,v,lod,texels,r,g,b,a (atomic write).
 void write_dump_csv(const std::string& path, const Frame& f);

@@ -1,0 +1,138 @@
+#include "pom/relief.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "complexity/complexity.hpp"
+#include "pom/pom_layers.hpp"
+
+namespace tu::relief {
+
+namespace {
+void sub(const double a[3], const double b[3], double o[3]) {
+  for (int i = 0; i < 3; ++i) o[i] = a[i] - b[i];
+}
+void cross(const double a[3], const double b[3], double o[3]) {
+  o[0] = a[1] * b[2] - a[2] * b[1];
+  o[1] = a[2] * b[0] - a[0] * b[2];
+  o[2] = a[0] * b[1] - a[1] * b[0];
+}
+double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double det3(const double a[3], const double b[3], const double c[3]) {
+  double x[3];
+  cross(b, c, x);
+  return dot(a, x);
+}
+}  // namespace
+
+Maps make_maps(const img::Gray8& height) {
+  auto pow2 = [](int n) { return n > 0 && (n & (n - 1)) == 0; };
+  if (!pow2(height.width) || !pow2(height.height))
+    throw std::invalid_argument("relief height map: sides must be powers of two (got " +
+                                std::to_string(height.width) + "x" + std::to_string(height.height) + ")");
+  Maps m;
+  m.depth = height;
+  for (auto& p : m.depth.px) p = static_cast<uint8_t>(255 - p);
+  m.complexity = complexity::complexity_map(height);
+  return m;
+}
+
+Maps make_maps(const scene::Scene& s, const std::string& material) {
+  const auto& rel = s.materials.at(material).relief.value();
+  const auto& spec = s.textures.at(rel.height_texture);
+  const img::Gray8 height = spec.builtin == "bricks" ? tex::bricks(spec.size).height : [&] {
+    const tex::Texture t = scene::build_texture(s, rel.height_texture);
+    const auto& im = t.levels[0];
+    img::Gray8 g(im.width, im.height);
+    for (size_t i = 0; i < im.px.size(); ++i) g.px[i] = im.px[i].r;
+    return g;
+  }();
+  try {
+    return make_maps(height);
+  } catch (const std::invalid_argument& e) {
+    throw scene::SceneError(s.source + ": /materials/" + material + "/relief/height: " + e.what());
+  }
+}
+
+bool tangent_view(const persp::Triangle& t, const double eye[3], double s, double r,
+                  TangentView* out) {
+  double e1[3], e2[3], n[3], p[3], vv[3], tt[3], bb[3], hh[3];
+  sub(t.v[1].p, t.v[0].p, e1);
+  sub(t.v[2].p, t.v[0].p, e2);
+  const double du1 = t.v[1].uv[0] - t.v[0].uv[0], dv1 = t.v[1].uv[1] - t.v[0].uv[1];
+  const double du2 = t.v[2].uv[0] - t.v[0].uv[0], dv2 = t.v[2].uv[1] - t.v[0].uv[1];
+  const double det = du1 * dv2 - du2 * dv1;
+  if (std::fabs(det) < 1e-300) return false;
+  for (int i = 0; i < 3; ++i) {
+    tt[i] = (e1[i] * dv2 - e2[i] * dv1) / det;  // dP/du
+    bb[i] = (e2[i] * du1 - e1[i] * du2) / det;  // dP/dv
+    p[i] = t.v[0].p[i] + s * e1[i] + r * e2[i];
+  }
+  sub(eye, p, vv);
+  cross(e1, e2, n);
+  const double nl = std::sqrt(dot(n, n));
+  double tb[3];
+  cross(tt, bb, tb);
+  const double ell = std::sqrt(std::sqrt(dot(tb, tb)));  // world length of one repeat
+  if (nl == 0 || ell == 0) return false;
+  const double side = dot(n, vv) < 0 ? -1.0 : 1.0;      // normal towards the eye
+  for (int i = 0; i < 3; ++i) hh[i] = side * n[i] / nl * ell;
+  // V = a T + b B + c H (Cramer)
+  const double d = det3(tt, bb, hh);
+  if (std::fabs(d) < 1e-300) return false;
+  const double a = det3(vv, bb, hh) / d, b = det3(tt, vv, hh) / d, c = det3(tt, bb, vv) / d;
+  const double len = std::sqrt(a * a + b * b + c * c);
+  if (len == 0) return false;
+  *out = {a / len, b / len, c / len};
+  return true;
+}
+
+pom::View quantise(const TangentView& v, double scale) {
+  const double one = std::ldexp(1.0, fmt::kPomVzF);
+  pom::View q;
+  q.vx = static_cast<int32_t>(std::lround(v.x * one));
+  q.vy = static_cast<int32_t>(std::lround(v.y * one));
+  q.vz = static_cast<int32_t>(std::lround(v.z * one));
+  q.scale = static_cast<uint32_t>(
+      std::clamp<long>(std::lround(scale * std::ldexp(1.0, fmt::kPomSF)), 0, (1L << fmt::kPomSF) - 1));
+  return q;
+}
+
+RefShift shift_uv_ref(const Maps& m, double u, double v, const TangentView& view, double scale) {
+  const auto r = pom::march_ref(m.depth, u, v, view.x, view.y, view.z, scale, 256);
+  return {r.tu, r.tv, r.steps};
+}
+
+uint32_t layers_at(const Maps& m, int64_t u, int64_t v, const pom::View& view, Method method,
+                   int layers) {
+  const auto n = static_cast<uint32_t>(std::clamp(layers, 1, 63));
+  if (method != Method::PomAdaptive) return n;
+  return pom::layers(view.vz, pom::tex_nearest(m.complexity, u, v), pom::kDefaultNmin, n).n;
+}
+
+FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, Method method,
+                    int layers, bool wrap) {
+  const auto n = static_cast<uint32_t>(std::clamp(layers, 1, 63));
+  // The march works inside one texture repeat; the integer part is put back afterwards.
+  const int64_t iu = u & ~(pom::kUvOne - 1), iv = v & ~(pom::kUvOne - 1);
+  FxShift o;
+  if (method == Method::Iterative) {
+    const auto r = pom::iter_parallax(m.depth, u - iu, v - iv, pom::ipx_dir_normalised(view), n);
+    o.u = iu + r.u;
+    o.v = iv + r.v;
+    o.steps = r.iters;
+    o.n = n;
+    o.nonconv = r.nonconv;
+    return o;
+  }
+  o.n = layers_at(m, u, v, view, method, layers);
+  const auto r = pom::march(m.depth, u - iu, v - iv, view, o.n, wrap);
+  o.u = iu + r.u;
+  o.v = iv + r.v;
+  o.steps = r.steps;
+  o.discard = r.discard;
+  return o;
+}
+
+}  // namespace tu::relief

@@ -1,0 +1,77 @@
+// Relief in the render path (docs/blocks/relief.md §9): a material's height map shifts (u, v)
+// before filtering.
+//
+//  * Tangent frame (float): from the triangle's uv mapping, T = dP/du, B = dP/dv (uv in texture
+//    repeats) and the unit normal N facing the eye; the height axis is N * sqrt(|T x B|) (one
+//    texture repeat of depth, the unit of the material's `scale`). The view vector (towards the
+//    eye) in that basis, normalised, is the tangent-space view V.
+//  * Float reference: pom::march_ref with 256 layers and the exact refinement (whatever the
+//    material's method: it is the ideal the methods are measured against).
+//  * Bit-accurate: shift_uv_fx, the per-pixel function of the C-model render engine, running the
+//    material's method on codes (the RTL tu_pom_unit / tu_iter_parallax arithmetic).
+#pragma once
+
+#include <cstdint>
+
+#include "persp/persp.hpp"
+#include "pom/pom_march.hpp"
+#include "texunit/image.hpp"
+#include "texunit/scene.hpp"
+
+namespace tu::relief {
+
+using Method = scene::ReliefMethod;
+
+// Depth map (255 - height: POM's convention, 0 = top) and its complexity map (adaptive N).
+// Sides must be powers of two (std::invalid_argument otherwise).
+struct Maps {
+  img::Gray8 depth, complexity;
+};
+Maps make_maps(const img::Gray8& height);
+// The maps of a material's relief: the builtin bricks texture gives its height map, any other
+// texture its first channel (level 0). A SceneError names the material's field when the sides
+// are not powers of two.
+Maps make_maps(const scene::Scene& s, const std::string& material);
+
+// Tangent-space view (unit vector, towards the eye) at the point p0 + s e1 + r e2 of triangle t
+// (uv in texture repeats) seen from `eye`. Returns false for a degenerate uv mapping.
+struct TangentView {
+  double x = 0, y = 0, z = 1;
+};
+bool tangent_view(const persp::Triangle& t, const double eye[3], double s, double r,
+                  TangentView* out);
+
+// The view as the fixed-point unit takes it: s16.14 components, S in u0.16 (clamped to < 1).
+pom::View quantise(const TangentView& v, double scale);
+
+// Float reference: shifted (u, v) in texture repeats (not wrapped: u + shift).
+struct RefShift {
+  double u = 0, v = 0;
+  uint32_t steps = 0;  // of the 256-layer march
+};
+RefShift shift_uv_ref(const Maps& m, double u, double v, const TangentView& view, double scale);
+
+// Layers N of a POM method at (u, v) (PomUvF codes): PomFixed: layers; PomAdaptive:
+// pom::layers(Vz, complexity(u, v), 4, layers); layers clamped to 1..63. Iterative: the cap.
+uint32_t layers_at(const Maps& m, int64_t u, int64_t v, const pom::View& view, Method method,
+                   int layers);
+
+// Bit-accurate per-pixel shift.
+// In : u, v  texture coordinates in texture repeats, PomUvF (16) fraction bits, any integer part
+//      view  pom::View (s16.14 tangent-space view, S u0.16), e.g. quantise(tangent_view(...))
+//      method, layers: PomFixed N = layers; PomAdaptive Nmin = 4, Nmax = layers, N from
+//      pom::layers(Vz, complexity at (u, v)); Iterative: cap = layers, direction (P, 1).
+//      layers is clamped to 1..63 (the unit's PomNW bits).
+// Out: u, v  shifted coordinates (same units; the integer part of the input is kept, so a
+//      REPEAT texture lookup is unchanged by the wrap of the march), steps = march steps or
+//      iterations, n = layers used (POM) or the cap, discard = the shifted point left the
+//      texture's [0,1]^2 (only when wrap = false), nonconv = iterative cap hit.
+struct FxShift {
+  int64_t u = 0, v = 0;
+  uint32_t steps = 0, n = 0;
+  bool discard = false, nonconv = false;
+};
+FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, Method method,
+                    int layers, bool wrap = true);
+
+}  // namespace tu::relief

@@ -1,0 +1,144 @@
+// POM per-pixel set-up (docs/blocks/relief.md §8; C model pom::setup), II = 1, latency
+// PomSetupLatency (7):
+//   stage 0    : a = max(|Vz|, PomVzMin) (clamped, back = Vz < 0); normalise a and N for the
+//                reciprocal; S*Vx, S*Vy (exact)
+//   stages 1-4 : two tu_recip_core (1/a and 1/N)
+//   stage 5    : P  = round_half_up(S*Vxy * R_a >> (p_a + RecipOutF))
+//   stage 6    : dT = round_half_up(P * R_n >> (p_n + RecipOutF))
+// side_i is carried along unchanged (the unit passes the pixel's T and wrap through it).
+module tu_pom_setup #(
+  parameter int unsigned SideW = 1
+) (
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+  input  logic                                in_valid_i,
+  output logic                                in_ready_o,
+  input  logic [tu_formats_pkg::PomVzW-1:0]   vx_i,
+  input  logic [tu_formats_pkg::PomVzW-1:0]   vy_i,
+  input  logic [tu_formats_pkg::PomVzW-1:0]   vz_i,
+  input  logic [tu_formats_pkg::PomSW-1:0]    s_i,
+  input  logic [tu_formats_pkg::PomNW-1:0]    n_i,
+  input  logic [SideW-1:0]                    side_i,
+  output logic                                out_valid_o,
+  input  logic                                out_ready_i,
+  output logic [tu_formats_pkg::PomUvW-1:0]   du_o,
+  output logic [tu_formats_pkg::PomUvW-1:0]   dv_o,
+  output logic [tu_formats_pkg::PomNW-1:0]    n_o,
+  output logic                                back_o,
+  output logic                                clamped_o,
+  output logic [SideW-1:0]                    side_o
+);
+  localparam int unsigned Lat = tu_formats_pkg::PomSetupLatency;
+  localparam int unsigned VzW = tu_formats_pkg::PomVzW;
+  localparam int unsigned UvW = tu_formats_pkg::PomUvW;
+  localparam int unsigned NW  = tu_formats_pkg::PomNW;
+  localparam int unsigned SW  = tu_formats_pkg::PomSW;
+  localparam int unsigned MW  = tu_formats_pkg::RecipMantW;
+  localparam int unsigned RW  = tu_formats_pkg::RecipOutW;
+  localparam int unsigned PW  = tu_formats_pkg::RecipShiftW;
+  localparam int unsigned RF  = tu_formats_pkg::RecipOutF;
+  localparam int unsigned XsW = VzW + SW + 1;   // S*Vx: signed
+  localparam int unsigned PrW = XsW + RW + 1;   // S*Vx * R_a, P * R_n (P fits in XsW)
+  localparam int unsigned CoreLat = 4;
+
+  logic en;
+  logic [Lat-1:0] stage_valid;
+  tu_pipe_valid #(.Depth(Lat)) u_ctrl (
+    .clk_i, .rst_ni, .in_valid_i, .in_ready_o, .out_valid_o, .out_ready_i,
+    .en_o(en), .stage_valid_o(stage_valid)
+  );
+
+  // ---- Stage 0 -----------------------------------------------------------------------------
+  logic [VzW:0]  vz_abs, a;  // one extra bit: |-2^15| = 2^15
+  logic          clamped_d;
+  logic [MW-1:0] ma_d, mn_d;
+  logic [PW-1:0] pa_d, pn_d;
+  logic signed [XsW-1:0] xs_d, ys_d;
+  always_comb begin
+    vz_abs    = vz_i[VzW-1] ? (VzW+1)'(-$signed(vz_i)) : (VzW+1)'(vz_i);
+    clamped_d = vz_abs < (VzW+1)'(tu_formats_pkg::PomVzMin);
+    a         = clamped_d ? (VzW+1)'(tu_formats_pkg::PomVzMin) : vz_abs;
+    xs_d      = XsW'($signed(vx_i) * $signed({1'b0, s_i}));
+    ys_d      = XsW'($signed(vy_i) * $signed({1'b0, s_i}));
+  end
+  tu_recip_norm #(.InW(VzW + 1)) u_norm_a (.q_i(a),   .m_o(ma_d), .p_o(pa_d));
+  tu_recip_norm #(.InW(NW))      u_norm_n (.q_i(n_i), .m_o(mn_d), .p_o(pn_d));
+
+  // Operands delayed alongside the reciprocal cores (stages 0 .. CoreLat).
+  logic [MW-1:0]         ma_q, mn_q;
+  logic [PW-1:0]         pa_q [CoreLat+1];
+  logic [PW-1:0]         pn_q [CoreLat+2];
+  logic signed [XsW-1:0] xs_q [CoreLat+1];
+  logic signed [XsW-1:0] ys_q [CoreLat+1];
+  logic [NW-1:0]         n_q [Lat];
+  logic                  back_q [Lat];
+  logic                  clamped_q [Lat];
+  logic [SideW-1:0]      side_q [Lat];
+  always_ff @(posedge clk_i) begin
+    if (en) begin
+      ma_q <= ma_d;
+      mn_q <= mn_d;
+      pa_q[0] <= pa_d;
+      pn_q[0] <= pn_d;
+      xs_q[0] <= xs_d;
+      ys_q[0] <= ys_d;
+      n_q[0] <= n_i;
+      back_q[0] <= vz_i[VzW-1];
+      clamped_q[0] <= clamped_d;
+      side_q[0] <= side_i;
+      for (int i = 1; i <= CoreLat; i++) begin
+        pa_q[i] <= pa_q[i-1];
+        xs_q[i] <= xs_q[i-1];
+        ys_q[i] <= ys_q[i-1];
+      end
+      for (int i = 1; i <= CoreLat + 1; i++) pn_q[i] <= pn_q[i-1];
+      for (int i = 1; i < Lat; i++) begin
+        n_q[i] <= n_q[i-1];
+        back_q[i] <= back_q[i-1];
+        clamped_q[i] <= clamped_q[i-1];
+        side_q[i] <= side_q[i-1];
+      end
+    end
+  end
+
+  // ---- Stages 1-4: reciprocals (outputs line up with stage CoreLat) ------------------------
+  logic [RW-1:0] ra, rn, rn_q5;
+  tu_recip_core u_core_a (.clk_i, .en_i(en), .m_i(ma_q), .r_o(ra));
+  tu_recip_core u_core_n (.clk_i, .en_i(en), .m_i(mn_q), .r_o(rn));
+
+  // round_half_up(x * R / 2^sh), the C model's mul_recip (x signed, R unsigned)
+  function automatic logic [UvW-1:0] mul_rsh(input logic signed [XsW-1:0] x,
+                                             input logic [RW-1:0] r, input logic [6:0] sh);
+    logic signed [PrW-1:0] p;
+    p = PrW'(x) * $signed({1'b0, r});
+    p = (p + (PrW'(1) <<< (sh - 7'd1))) >>> sh;
+    mul_rsh = UvW'(p);
+  endfunction
+
+  // ---- Stage 5: P = S*Vxy / a;  stage 6: dT = P / N ------------------------------------------
+  logic [6:0]            sh_a, sh_n;
+  logic signed [UvW-1:0] pu_q, pv_q;
+  logic [UvW-1:0]        du_q, dv_q;
+  assign sh_a = 7'(pa_q[CoreLat]) + 7'(RF);
+  assign sh_n = 7'(pn_q[CoreLat+1]) + 7'(RF);
+
+  always_ff @(posedge clk_i) begin
+    if (en) begin
+      pu_q  <= mul_rsh(xs_q[CoreLat], ra, sh_a);
+      pv_q  <= mul_rsh(ys_q[CoreLat], ra, sh_a);
+      rn_q5 <= rn;
+      du_q  <= mul_rsh(XsW'(pu_q), rn_q5, sh_n);
+      dv_q  <= mul_rsh(XsW'(pv_q), rn_q5, sh_n);
+    end
+  end
+
+  assign du_o      = du_q;
+  assign dv_o      = dv_q;
+  assign n_o       = n_q[Lat-1];
+  assign back_o    = back_q[Lat-1];
+  assign clamped_o = clamped_q[Lat-1];
+  assign side_o    = side_q[Lat-1];
+
+  logic unused_stage_valid;
+  assign unused_stage_valid = ^stage_valid;
+endmodule
