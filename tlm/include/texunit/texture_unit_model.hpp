@@ -1,0 +1,27 @@
+// The texture unit as a sysmodel pipeline, and a scene's pixel stream with its per-pixel work.
+#pragma once
+
+#include <string>
+
+#include "texunit/render.hpp"
+#include "texunit/scene.hpp"
+#include "texunit/sysmodel.hpp"
+
+namespace tu::sysmodel {
+
+// Spans of a scene: per row, maximal runs of consecutive covered pixels of one triangle, in
+// row-major order (the order the render engines feed the unit). `frame` supplies the per-pixel
+// work (its pixels are the covered pixels, row-major); its size must match the coverage.
+Workload scene_workload(const scene::Scene& s, const render::Frame& frame);
+
+// Buffer depths of the unit (the RTL's FIFOs).
+struct UnitConfig {
+  int span_fifo = 2;   // spans waiting for the per-scanline set-up
+  int pixel_fifo = 4;  // B2 -> filter FIFO (tu_fifo): decouples the fixed pipes from the walk
+};
+
+// span set-up -> B1 (span walker + tu_persp) -> B2 (tu_ellipse) -> FIFO -> B5 EWA filter.
+// Latencies and IIs come from formats.hpp and the blocks' scheduler graphs.
+Pipeline texture_unit(const UnitConfig& c = {});
+
+}  // namespace tu::sysmodel

@@ -1,0 +1,263 @@
+// SystemC kernel side of the system model: Source -> Stage ... Stage -> Sink over sc_fifos.
+#include <systemc>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <deque>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "texunit/sysmodel.hpp"
+
+namespace tu::sysmodel {
+
+namespace {
+using sc_core::sc_time;
+using sc_core::SC_NS;
+using sc_core::SC_ZERO_TIME;
+
+const sc_time kClk(1, SC_NS);
+
+uint64_t cycles(const sc_time& t) { return static_cast<uint64_t>(std::llround(t / kClk)); }
+
+// A span (stage 0 up to the expanding stage) or a pixel (after it). `ready`: the earliest cycle
+// the consumer may take it (the producer's handshake plus the link's registers).
+struct Token {
+  uint32_t idx = 0;
+  bool span = false;
+  sc_time ready;
+  bool operator==(const Token& o) const { return idx == o.idx && span == o.span && ready == o.ready; }
+};
+std::ostream& operator<<(std::ostream& os, const Token& t) {
+  return os << (t.span ? "span " : "pixel ") << t.idx;
+}
+
+struct Source : sc_core::sc_module {
+  sc_core::sc_fifo_out<Token> out;
+  const Workload& wl;
+  SC_HAS_PROCESS(Source);
+  Source(sc_core::sc_module_name n, const Workload& w) : sc_module(n), wl(w) { SC_THREAD(run); }
+  void run() {
+    for (uint32_t i = 0; i < wl.spans.size(); ++i) out.write(Token{i, true, SC_ZERO_TIME});
+  }
+};
+
+// One block: an accept thread (waits for room and input, issues an item every ii cycles) and an
+// emit thread (hands each item downstream in order once its latency has passed, waiting for room).
+struct Stage : sc_core::sc_module {
+  sc_core::sc_fifo_in<Token> in;
+  sc_core::sc_fifo_out<Token> out;
+  const StageSpec spec;
+  const Workload& wl;
+  BlockStats& st;
+  sc_time next_link;  // registers between this stage and the next
+  std::deque<std::pair<Token, sc_time>> flight;
+  sc_core::sc_event pushed, freed;
+
+  SC_HAS_PROCESS(Stage);
+  Stage(sc_core::sc_module_name n, const StageSpec& s, const Workload& w, BlockStats& stats,
+        int next_link_latency)
+      : sc_module(n), spec(s), wl(w), st(stats), next_link(next_link_latency * kClk) {
+    SC_THREAD(accept);
+    SC_THREAD(emit);
+  }
+
+  void wait_room() {
+    while (static_cast<int>(flight.size()) >= spec.capacity) wait(freed);
+  }
+
+  void issue(const Token& t) {
+    int lat = spec.lat0, ii = spec.ii0;
+    if (!t.span) {
+      const PixelWork& p = wl.pixels[t.idx];
+      const auto w = static_cast<int>(work_of(p, spec.work));
+      if (spec.relief_only && !p.relief) {
+        lat = spec.bypass_latency, ii = 1;
+      } else {
+        lat += spec.lat_per_work * w, ii += spec.ii_per_work * w;
+        st.work += static_cast<uint64_t>(w);
+      }
+    }
+    ++st.items;
+    st.busy += static_cast<uint64_t>(ii);
+    flight.emplace_back(t, sc_core::sc_time_stamp() + lat * kClk);
+    pushed.notify(SC_ZERO_TIME);
+    wait(ii * kClk);
+  }
+
+  void accept() {
+    for (;;) {
+      wait_room();
+      const sc_time t0 = sc_core::sc_time_stamp();
+      Token t = in.read();
+      if (t.ready > sc_core::sc_time_stamp()) wait(t.ready - sc_core::sc_time_stamp());
+      st.starved += cycles(sc_core::sc_time_stamp() - t0);
+      if (spec.expand && t.span) {
+        const Span& s = wl.spans[t.idx];
+        for (uint32_t k = 0; k < s.count; ++k) {
+          wait_room();
+          issue(Token{s.first + k, false, SC_ZERO_TIME});
+        }
+      } else {
+        issue(t);
+      }
+    }
+  }
+
+  void emit() {
+    for (;;) {
+      while (flight.empty()) wait(pushed);
+      Token t = flight.front().first;
+      const sc_time due = flight.front().second;
+      if (due > sc_core::sc_time_stamp()) wait(due - sc_core::sc_time_stamp());
+      t.ready = sc_core::sc_time_stamp() + next_link;
+      const sc_time t0 = sc_core::sc_time_stamp();
+      out.write(t);
+      st.stalled += cycles(sc_core::sc_time_stamp() - t0);
+      flight.pop_front();
+      freed.notify(SC_ZERO_TIME);
+    }
+  }
+};
+
+struct Sink : sc_core::sc_module {
+  sc_core::sc_fifo_in<Token> in;
+  uint64_t expected, got = 0, last = 0;
+  SC_HAS_PROCESS(Sink);
+  Sink(sc_core::sc_module_name n, uint64_t exp) : sc_module(n), expected(exp) { SC_THREAD(run); }
+  void run() {
+    for (;;) {
+      const Token t = in.read();
+      // In-order, one output per pixel: anything else is a model error, not a measurement.
+      if (t.span || t.idx != got)
+        throw std::logic_error("sysmodel: sink received " + std::string(t.span ? "span " : "pixel ") +
+                               std::to_string(t.idx) + ", expected pixel " + std::to_string(got));
+      last = cycles(sc_core::sc_time_stamp());
+      ++got;
+    }
+  }
+};
+
+void validate(const Pipeline& p, const Workload& w) {
+  if (p.stages.empty()) throw std::invalid_argument(p.name + ": pipeline has no stages");
+  int expanders = 0;
+  for (const auto& s : p.stages) {
+    const std::string where = p.name + ": stage '" + s.name + "': ";
+    if (s.capacity < 1) throw std::invalid_argument(where + "capacity must be >= 1");
+    if (s.fifo_depth < 1) throw std::invalid_argument(where + "fifo_depth must be >= 1");
+    if (s.ii0 < 0 || s.lat0 < 0 || s.lat_per_work < 0 || s.ii_per_work < 0 || s.link_latency < 0 ||
+        s.bypass_latency < 0)
+      throw std::invalid_argument(where + "negative latency or ii");
+    if (s.ii0 + s.ii_per_work < 1) throw std::invalid_argument(where + "ii must be >= 1");
+    expanders += s.expand ? 1 : 0;
+  }
+  if (expanders != 1) throw std::invalid_argument(p.name + ": exactly one stage must expand spans");
+  uint64_t n = 0;
+  for (const auto& s : w.spans) {
+    if (s.count == 0 || s.first != n) throw std::invalid_argument("workload: spans must be non-empty and consecutive");
+    n += s.count;
+  }
+  if (n != w.pixels.size()) throw std::invalid_argument("workload: span pixels != pixel records");
+}
+
+// A fresh simulation context per run (SystemC allows one elaboration per context).
+struct Context {
+  Context() {
+    setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
+    sc_core::sc_curr_simcontext = new sc_core::sc_simcontext;
+    sc_core::sc_default_global_context = sc_core::sc_curr_simcontext;
+  }
+  ~Context() {
+    delete sc_core::sc_curr_simcontext;
+    sc_core::sc_curr_simcontext = nullptr;
+    sc_core::sc_default_global_context = nullptr;
+  }
+};
+
+}  // namespace
+
+uint32_t work_of(const PixelWork& w, Work kind) {
+  switch (kind) {
+    case Work::None: return 0;
+    case Work::Texels: return w.texels;
+    case Work::Levels: return w.levels;
+    case Work::Steps: return w.steps;
+  }
+  return 0;
+}
+
+Result simulate(const Pipeline& p, const Workload& w) {
+  validate(p, w);
+  Result r;
+  r.pixels = w.pixels.size();
+  r.blocks.resize(p.stages.size());
+  for (size_t i = 0; i < p.stages.size(); ++i) r.blocks[i].name = p.stages[i].name;
+  Context ctx;
+  {
+    std::vector<std::unique_ptr<sc_core::sc_fifo<Token>>> fifos;
+    std::vector<std::unique_ptr<Stage>> stages;
+    Source src("source", w);
+    Sink sink("sink", w.pixels.size());
+    for (size_t i = 0; i < p.stages.size(); ++i)
+      fifos.push_back(std::make_unique<sc_core::sc_fifo<Token>>(
+          ("fifo_" + p.stages[i].name).c_str(), p.stages[i].fifo_depth));
+    fifos.push_back(std::make_unique<sc_core::sc_fifo<Token>>("fifo_sink", 1));
+    src.out(*fifos[0]);
+    for (size_t i = 0; i < p.stages.size(); ++i) {
+      const int next = i + 1 < p.stages.size() ? p.stages[i + 1].link_latency : 0;
+      stages.push_back(std::make_unique<Stage>(p.stages[i].name.c_str(), p.stages[i], w, r.blocks[i], next));
+      stages.back()->in(*fifos[i]);
+      stages.back()->out(*fifos[i + 1]);
+    }
+    sink.in(*fifos.back());
+    const auto t0 = std::chrono::steady_clock::now();
+    sc_core::sc_start();  // runs until no process can move: every pixel has reached the sink
+    r.sim_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (sink.got != w.pixels.size())
+      throw std::logic_error("sysmodel: " + std::to_string(sink.got) + " of " +
+                             std::to_string(w.pixels.size()) + " pixels reached the sink");
+    r.total_cycles = sink.last;
+  }
+  return r;
+}
+
+std::string table(const Result& r) {
+  std::ostringstream os;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "%-16s %9s %10s %7s %10s %10s %12s\n", "block", "items", "busy",
+                "util%", "stalled", "starved", "work");
+  os << buf;
+  for (const auto& b : r.blocks) {
+    const double u = r.total_cycles ? 100.0 * static_cast<double>(b.busy) / static_cast<double>(r.total_cycles) : 0;
+    std::snprintf(buf, sizeof buf, "%-16s %9llu %10llu %7.2f %10llu %10llu %12llu\n", b.name.c_str(),
+                  static_cast<unsigned long long>(b.items), static_cast<unsigned long long>(b.busy), u,
+                  static_cast<unsigned long long>(b.stalled), static_cast<unsigned long long>(b.starved),
+                  static_cast<unsigned long long>(b.work));
+    os << buf;
+  }
+  std::snprintf(buf, sizeof buf, "total %llu cycles for %llu pixels (%.3f cycles/pixel), SystemC %.3f s\n",
+                static_cast<unsigned long long>(r.total_cycles), static_cast<unsigned long long>(r.pixels),
+                r.pixels ? static_cast<double>(r.total_cycles) / static_cast<double>(r.pixels) : 0.0,
+                r.sim_seconds);
+  os << buf;
+  return os.str();
+}
+
+nlohmann::json to_json(const Result& r) {
+  nlohmann::json j;
+  j["total_cycles"] = r.total_cycles;
+  j["pixels"] = r.pixels;
+  j["sim_seconds"] = r.sim_seconds;
+  for (const auto& b : r.blocks) {
+    j["blocks"].push_back({{"name", b.name}, {"items", b.items}, {"busy", b.busy},
+                           {"utilisation", r.total_cycles ? static_cast<double>(b.busy) / static_cast<double>(r.total_cycles) : 0.0},
+                           {"stalled", b.stalled}, {"starved", b.starved}, {"work", b.work}});
+  }
+  return j;
+}
+
+}  // namespace tu::sysmodel

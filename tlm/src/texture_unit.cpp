@@ -1,0 +1,70 @@
+#include <stdexcept>
+
+#include "ellipse/ellipse_scheme.hpp"
+#include "persp/schemes.hpp"
+#include "texunit/formats.hpp"
+#include "texunit/sched.hpp"
+#include "texunit/texture_unit_model.hpp"
+
+namespace tu::sysmodel {
+
+Workload scene_workload(const scene::Scene& s, const render::Frame& frame) {
+  const auto cov = render::visibility(s);
+  const int w = s.camera.width;
+  Workload wl;
+  for (int y = 0; y < s.camera.height; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const auto& c = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)];
+      if (c.object < 0) continue;
+      const bool extend = x > 0 && !wl.spans.empty() && wl.spans.back().y == y &&
+                          wl.spans.back().object == c.object &&
+                          wl.spans.back().triangle == c.triangle &&
+                          wl.spans.back().x0 + static_cast<int>(wl.spans.back().count) == x;
+      if (extend) {
+        ++wl.spans.back().count;
+      } else {
+        wl.spans.push_back(Span{c.object, c.triangle, y, x, static_cast<uint32_t>(wl.pixels.size()), 1});
+      }
+      const size_t i = wl.pixels.size();
+      if (i >= frame.pixels.size() || frame.pixels[i].x != x || frame.pixels[i].y != y)
+        throw std::invalid_argument("scene_workload: the frame's pixels do not match the coverage at (" +
+                                    std::to_string(x) + ", " + std::to_string(y) + ")");
+      PixelWork p;
+      p.texels = static_cast<uint32_t>(frame.pixels[i].texels);
+      p.levels = 1;
+      wl.pixels.push_back(p);
+    }
+  }
+  if (wl.pixels.size() != frame.pixels.size())
+    throw std::invalid_argument("scene_workload: the frame has more pixels than the coverage");
+  return wl;
+}
+
+Pipeline texture_unit(const UnitConfig& c) {
+  const auto setup = sched::schedule(persp::scheme("persp_setup"));
+  const auto ell = sched::schedule(ellipse::scheme());
+  Pipeline p;
+  p.name = "texture_unit";
+  // Fixed pipelines (tu_pipe_valid) hold one item per register stage.
+  StageSpec s;
+  s.name = "persp_setup";
+  s.lat0 = setup.latency, s.ii0 = setup.ii, s.capacity = setup.latency, s.fifo_depth = c.span_fifo;
+  p.stages.push_back(s);
+  s = {};
+  s.name = "persp";
+  s.lat0 = fmt::kPerspLatency, s.ii0 = 1, s.capacity = fmt::kPerspLatency, s.expand = true;
+  s.fifo_depth = 1;
+  p.stages.push_back(s);
+  s = {};
+  s.name = "ellipse";
+  s.lat0 = ell.latency, s.ii0 = ell.ii, s.capacity = ell.latency, s.fifo_depth = 1;
+  p.stages.push_back(s);
+  s = {};
+  s.name = "ewa";
+  s.lat0 = 1, s.ii0 = 0, s.lat_per_work = 1, s.ii_per_work = 1, s.work = Work::Texels;
+  s.capacity = 1, s.fifo_depth = c.pixel_fifo, s.link_latency = 1;
+  p.stages.push_back(s);
+  return p;
+}
+
+}  // namespace tu::sysmodel
