@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "texunit/sysmodel.hpp"
+#include "texunit/texture_unit_model.hpp"
 
 namespace {
 using namespace tu::sysmodel;
@@ -97,6 +98,38 @@ TEST(Sysmodel, RejectsMalformedPipelines) {
   Workload bad = one_span({0, 0});
   bad.pixels.pop_back();
   EXPECT_THROW(simulate(Pipeline{"ok", {pipe("a", 3, true)}}, bad), std::invalid_argument);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Sysmodel, DefaultSceneStreamCoversEveryPixelOnce) {
+  const auto s = tu::scene::default_scene();
+  const auto frame = tu::render::render_ref(s);
+  const auto wl = scene_workload(s, frame);
+  ASSERT_FALSE(wl.spans.empty());
+  ASSERT_EQ(wl.pixels.size(), frame.pixels.size());
+  uint64_t walked = 0;
+  for (size_t i = 0; i < wl.spans.size(); ++i) {
+    const auto& sp = wl.spans[i];
+    for (uint32_t k = 0; k < sp.count; ++k) {
+      const auto& p = frame.pixels[sp.first + k];
+      EXPECT_EQ(p.y, sp.y);
+      EXPECT_EQ(p.x, sp.x0 + static_cast<int>(k));
+    }
+    if (i > 0 && wl.spans[i - 1].y == sp.y)  // a new span on the same row: a new triangle or a gap
+      EXPECT_TRUE(wl.spans[i - 1].x0 + static_cast<int>(wl.spans[i - 1].count) < sp.x0 ||
+                  wl.spans[i - 1].triangle != sp.triangle || wl.spans[i - 1].object != sp.object);
+  }
+  for (const auto& p : wl.pixels) walked += p.texels;
+  const auto r = simulate(texture_unit(), wl);
+  // The filter walks one texel per clock with one pixel in flight: it bounds the run from below.
+  EXPECT_GE(r.total_cycles, walked);
+  std::printf("default scene: %zu spans, %zu pixels, %llu texels, %llu cycles, %.3f s\n",
+              wl.spans.size(), wl.pixels.size(), (unsigned long long)walked,
+              (unsigned long long)r.total_cycles, r.sim_seconds);
+  std::fputs(table(r).c_str(), stdout);
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <stdexcept>
 
 #include "ellipse/ellipse_scheme.hpp"
@@ -45,20 +46,29 @@ Pipeline texture_unit(const UnitConfig& c) {
   const auto ell = sched::schedule(ellipse::scheme());
   Pipeline p;
   p.name = "texture_unit";
-  // Fixed pipelines (tu_pipe_valid) hold one item per register stage.
+  // tu_texture_unit (rtl/top): span -> [tu_persp_setup || tu_num_setup] -> tu_span_expand ->
+  // [tu_persp || tu_ellipse || sideband FIFO] -> tu_fifo -> filter.
+  // The two span set-ups have the same latency and II (tu_num_setup mirrors tu_persp_setup);
+  // fixed pipelines (tu_pipe_valid) hold one item per register stage.
   StageSpec s;
-  s.name = "persp_setup";
+  s.name = "span_setup";
   s.lat0 = setup.latency, s.ii0 = setup.ii, s.capacity = setup.latency, s.fifo_depth = c.span_fifo;
   p.stages.push_back(s);
+  // The expander registers the span and emits one pixel per clock from the next cycle; it takes
+  // the next span in the cycle its last pixel leaves.
   s = {};
-  s.name = "persp";
-  s.lat0 = fmt::kPerspLatency, s.ii0 = 1, s.capacity = fmt::kPerspLatency, s.expand = true;
-  s.fifo_depth = 1;
+  s.name = "span_expand";
+  s.lat0 = 1, s.ii0 = 1, s.capacity = 1, s.expand = true, s.fifo_depth = 1;
   p.stages.push_back(s);
+  // B1 and B2 fork from the expander and join at the filter FIFO: the join waits for the longer
+  // (B1), and the shorter pipe (B2) stalls as a whole once its last stage holds a pixel the join
+  // cannot take yet, so at most its latency's worth of pixels are in flight.
   s = {};
-  s.name = "ellipse";
-  s.lat0 = ell.latency, s.ii0 = ell.ii, s.capacity = ell.latency, s.fifo_depth = 1;
+  s.name = "persp_ellipse";
+  s.lat0 = std::max(fmt::kPerspLatency, ell.latency), s.ii0 = std::max(1, ell.ii);
+  s.capacity = std::min(fmt::kPerspLatency, ell.latency), s.fifo_depth = 1;
   p.stages.push_back(s);
+  // tu_fifo: registered storage, a pushed pixel is visible the next cycle.
   s = {};
   s.name = "ewa";
   s.lat0 = 1, s.ii0 = 0, s.lat_per_work = 1, s.ii_per_work = 1, s.work = Work::Texels;

@@ -12,6 +12,7 @@
 #include "pom/relief_quality.hpp"
 #include "cosim.hpp"
 #include "render_cmd.hpp"
+#include "sysmodel_cmd.hpp"
 #include "report.hpp"
 #include "texunit/rtl_gen.hpp"
 #include "vector_file.hpp"
@@ -196,11 +197,14 @@ int main(int argc, char** argv) {
 
   tu::cli::RenderArgs render_args;
   auto* rnd = tu::cli::add_render(app, render_args);
+  tu::cli::SysmodelArgs sysmodel_args;
+  auto* sysm = tu::cli::add_sysmodel(app, sysmodel_args);
 
   CLI11_PARSE(app, argc, argv);
   try {
     if (*vec) return cmd_vectors(block, set, count, seed, out);
     if (*rnd) return tu::cli::run_render(render_args);
+    if (*sysm) return tu::cli::run_sysmodel(sysmodel_args);
     if (*cos) return cmd_cosim(block, file, stall, seed, fst, json);
     if (*gen) return cmd_gen_rtl(root, check);
     if (*rep) return tu::report::run(rep_blocks, rep_json, rep_plots, root);
