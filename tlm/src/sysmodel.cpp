@@ -1,6 +1,7 @@
 // SystemC kernel side of the system model: Source -> Stage ... Stage -> Sink over sc_fifos.
 #include <systemc>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -78,14 +79,20 @@ struct Stage : sc_core::sc_module {
       if (spec.relief_only && !p.relief) {
         lat = spec.bypass_latency, ii = 1;
       } else {
-        lat += spec.lat_per_work * w, ii += spec.ii_per_work * w;
+        if (spec.timing) {
+          const Timing tm = spec.timing(p);
+          lat = tm.latency, ii = tm.ii;
+        } else {
+          lat += spec.lat_per_work * w, ii += spec.ii_per_work * w;
+        }
         st.work += static_cast<uint64_t>(w);
       }
     }
+    ii = std::max(ii, 1);  // a block takes at most one item per clock
     ++st.items;
     st.busy += static_cast<uint64_t>(ii);
     flight.emplace_back(t, sc_core::sc_time_stamp() + lat * kClk);
-    pushed.notify(SC_ZERO_TIME);
+    pushed.notify();  // immediate: the emit thread re-checks the queue, nothing is lost
     wait(ii * kClk);
   }
 
@@ -119,7 +126,7 @@ struct Stage : sc_core::sc_module {
       out.write(t);
       st.stalled += cycles(sc_core::sc_time_stamp() - t0);
       flight.pop_front();
-      freed.notify(SC_ZERO_TIME);
+      freed.notify();
     }
   }
 };
@@ -152,7 +159,6 @@ void validate(const Pipeline& p, const Workload& w) {
     if (s.ii0 < 0 || s.lat0 < 0 || s.lat_per_work < 0 || s.ii_per_work < 0 || s.link_latency < 0 ||
         s.bypass_latency < 0)
       throw std::invalid_argument(where + "negative latency or ii");
-    if (s.ii0 + s.ii_per_work < 1) throw std::invalid_argument(where + "ii must be >= 1");
     expanders += s.expand ? 1 : 0;
   }
   if (expanders != 1) throw std::invalid_argument(p.name + ": exactly one stage must expand spans");

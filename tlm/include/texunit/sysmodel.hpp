@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@ struct PixelWork {
   uint32_t levels = 0;   // EWA: mip levels tried (cap fallback re-walks)
   uint32_t steps = 0;    // relief: march steps (0: no relief on this pixel)
   bool relief = false;   // the pixel's material has relief (it enters the relief unit)
+  bool no_weight = false;  // EWA: no texel had weight (the walker's nearest-texel fallback)
 };
 
 // A run of covered pixels on one scanline of one triangle: the unit of set-up.
@@ -41,6 +43,10 @@ struct Span {
 struct Workload {
   std::vector<Span> spans;
   std::vector<PixelWork> pixels;  // spans' pixels, in order
+};
+
+struct Timing {
+  int latency = 0, ii = 1;
 };
 
 // Which per-pixel quantity drives a data-dependent stage.
@@ -57,6 +63,9 @@ struct StageSpec {
   int bypass_latency = 0;
   int fifo_depth = 2;        // depth of the sc_fifo in front of the stage
   int link_latency = 0;      // registers between the previous stage and this one
+  // When set, a pixel's {latency, ii} come from this cycle model (e.g. a block's exact FSM
+  // count) instead of the affine form; `work` still names what it reports as work.
+  std::function<Timing(const PixelWork&)> timing;
 };
 
 struct Pipeline {
