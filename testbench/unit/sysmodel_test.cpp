@@ -89,6 +89,24 @@ TEST(Sysmodel, FifoAbsorbsBurstsAndLinkRegistersAddLatency) {
   EXPECT_EQ(r.total_cycles, 5u + 1 + 200 - 3 + 3);
 }
 
+TEST(Sysmodel, ReliefOnlyStageLetsOtherPixelsPass) {
+  // A POM-like engine (k + 3 clocks per pixel, one in flight) used by relief pixels only; the
+  // others pass in `bypass_latency` at one per clock, in order behind the relief pixel in flight.
+  Workload w = one_span({0, 0, 0, 0});
+  w.pixels[1].relief = true, w.pixels[1].steps = 6;
+  StageSpec e;
+  e.name = "relief";
+  e.lat0 = 2, e.ii0 = 3, e.lat_per_work = 1, e.ii_per_work = 1, e.work = Work::Steps;
+  e.capacity = 1, e.relief_only = true, e.bypass_latency = 1;
+  Pipeline p{"relief", {pipe("walk", 1, true), e}};
+  const auto r = simulate(p, w);
+  // px0 in at 1, out at 2; px1 in at 2 (ii 1 of the bypass), out at 2 + 2 + 6 = 10, next accepted
+  // at 2 + 9 = 11; px2 out at 12, px3 in at 12, out at 13.
+  EXPECT_EQ(r.total_cycles, 13u);
+  EXPECT_EQ(r.blocks[1].work, 6u);
+  EXPECT_EQ(r.blocks[1].busy, 1u + 9 + 1 + 1);
+}
+
 TEST(Sysmodel, RejectsMalformedPipelines) {
   Pipeline none{"none", {pipe("a", 3)}};
   EXPECT_THROW(simulate(none, one_span({0})), std::invalid_argument);
