@@ -107,6 +107,37 @@ TEST(Sysmodel, ReliefOnlyStageLetsOtherPixelsPass) {
   EXPECT_EQ(r.blocks[1].busy, 1u + 9 + 1 + 1);
 }
 
+TEST(Sysmodel, HandOverBetweenTwoEnginesFollowsTheRecurrence) {
+  // A set-up FSM (S cycles, accepts again one clock after the hand-over) feeding a walker
+  // (W cycles to its output, free the clock after) over a direct link: pixel i+1's set-up
+  // overlaps pixel i's walk. Known answer: the recurrence
+  //   h_i = max(a_i + S_i, walker_free), o_i = h_i + W_i, a_{i+1} = h_i + 1, walker_free = o_i + 1.
+  std::vector<uint32_t> texels = {40, 3, 3, 3, 90, 1, 0, 25, 7, 60};
+  Workload w = one_span(texels);
+  for (size_t i = 0; i < texels.size(); ++i) w.pixels[i].levels = 1 + static_cast<uint32_t>(i % 3);
+  auto S = [](const PixelWork& p) { return 10 + 5 * static_cast<int>(p.levels); };
+  auto W = [](const PixelWork& p) { return 12 + static_cast<int>(p.texels); };
+  StageSpec su;
+  su.name = "setup";
+  su.capacity = 1, su.fifo_depth = 64, su.release = 1, su.work = Work::Levels;
+  su.timing = [&](const PixelWork& p) { return Timing{S(p), S(p) + 1}; };
+  StageSpec wk;
+  wk.name = "walker";
+  wk.capacity = 1, wk.direct = true, wk.fifo_depth = 1, wk.work = Work::Texels;
+  wk.timing = [&](const PixelWork& p) { return Timing{W(p), W(p) + 1}; };
+  Pipeline p{"engine", {pipe("front", 3, true), su, wk}};
+  p.stages[0].capacity = 16;
+  const auto r = simulate(p, w);
+  uint64_t a = 3, walker_free = 0, o = 0;  // the first pixel reaches the set-up at cycle 3
+  for (const auto& px : w.pixels) {
+    const uint64_t h = std::max<uint64_t>(a + S(px), walker_free);
+    o = h + W(px);
+    a = h + 1, walker_free = o + 1;
+  }
+  EXPECT_EQ(r.total_cycles, o);
+  EXPECT_GT(r.blocks[1].stalled, 0u);  // the 90-texel walk holds the next record back
+}
+
 TEST(Sysmodel, RejectsMalformedPipelines) {
   Pipeline none{"none", {pipe("a", 3)}};
   EXPECT_THROW(simulate(none, one_span({0})), std::invalid_argument);

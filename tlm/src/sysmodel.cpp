@@ -56,13 +56,15 @@ struct Stage : sc_core::sc_module {
   const Workload& wl;
   BlockStats& st;
   sc_time next_link;  // registers between this stage and the next
+  bool next_direct;   // the link to the next stage has no buffer
   std::deque<std::pair<Token, sc_time>> flight;
   sc_core::sc_event pushed, freed;
 
   SC_HAS_PROCESS(Stage);
   Stage(sc_core::sc_module_name n, const StageSpec& s, const Workload& w, BlockStats& stats,
-        int next_link_latency)
-      : sc_module(n), spec(s), wl(w), st(stats), next_link(next_link_latency * kClk) {
+        const StageSpec* next)
+      : sc_module(n), spec(s), wl(w), st(stats),
+        next_link((next ? next->link_latency : 0) * kClk), next_direct(next && next->direct) {
     SC_THREAD(accept);
     SC_THREAD(emit);
   }
@@ -124,7 +126,10 @@ struct Stage : sc_core::sc_module {
       t.ready = sc_core::sc_time_stamp() + next_link;
       const sc_time t0 = sc_core::sc_time_stamp();
       out.write(t);
+      // A direct link has no storage: the item is ours until the consumer has read it.
+      while (next_direct && out->num_free() == 0) wait(out->data_read_event());
       st.stalled += cycles(sc_core::sc_time_stamp() - t0);
+      if (spec.release > 0) wait(spec.release * kClk);
       flight.pop_front();
       freed.notify();
     }
@@ -156,8 +161,9 @@ void validate(const Pipeline& p, const Workload& w) {
     const std::string where = p.name + ": stage '" + s.name + "': ";
     if (s.capacity < 1) throw std::invalid_argument(where + "capacity must be >= 1");
     if (s.fifo_depth < 1) throw std::invalid_argument(where + "fifo_depth must be >= 1");
+    if (s.direct && s.fifo_depth != 1) throw std::invalid_argument(where + "a direct link has fifo_depth 1");
     if (s.ii0 < 0 || s.lat0 < 0 || s.lat_per_work < 0 || s.ii_per_work < 0 || s.link_latency < 0 ||
-        s.bypass_latency < 0)
+        s.bypass_latency < 0 || s.release < 0)
       throw std::invalid_argument(where + "negative latency or ii");
     expanders += s.expand ? 1 : 0;
   }
@@ -214,7 +220,7 @@ Result simulate(const Pipeline& p, const Workload& w) {
     fifos.push_back(std::make_unique<sc_core::sc_fifo<Token>>("fifo_sink", 1));
     src.out(*fifos[0]);
     for (size_t i = 0; i < p.stages.size(); ++i) {
-      const int next = i + 1 < p.stages.size() ? p.stages[i + 1].link_latency : 0;
+      const StageSpec* next = i + 1 < p.stages.size() ? &p.stages[i + 1] : nullptr;
       stages.push_back(std::make_unique<Stage>(p.stages[i].name.c_str(), p.stages[i], w, r.blocks[i], next));
       stages.back()->in(*fifos[i]);
       stages.back()->out(*fifos[i + 1]);

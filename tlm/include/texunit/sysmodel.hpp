@@ -63,6 +63,11 @@ struct StageSpec {
   int bypass_latency = 0;
   int fifo_depth = 2;        // depth of the sc_fifo in front of the stage
   int link_latency = 0;      // registers between the previous stage and this one
+  // Direct valid/ready link from the previous stage (no buffer): the producer keeps the item
+  // (and its slot) until this stage takes it, and frees the slot `release` cycles after that
+  // (e.g. an FSM that returns to its accept state one clock after the hand-over).
+  bool direct = false;
+  int release = 0;           // of this stage's own slot after its consumer took an item
   // When set, a pixel's {latency, ii} come from this cycle model (e.g. a block's exact FSM
   // count) instead of the affine form; `work` still names what it reports as work.
   std::function<Timing(const PixelWork&)> timing;
