@@ -94,6 +94,10 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           rec.texels = static_cast<int>(r.texels_visited);
           rec.texels_inside = static_cast<int>(r.texels_inside);
           rec.flags = r.flags;
+          // The set-up's first level: 0 for the unit disc, else B2's integer lod clamped to the
+          // top; each texel-cap raise tries one more (the set-up FSM's data-dependent loop).
+          rec.levels = r.level + 1 -
+                       ((r.flags & ewa::fx::kUnitDisc) ? 0 : std::min(static_cast<int>(in.b2.lod >> fmt::kEllLodF), top));
           break;
         }
       }

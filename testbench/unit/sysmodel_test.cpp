@@ -155,7 +155,7 @@ namespace {
 
 TEST(Sysmodel, DefaultSceneStreamCoversEveryPixelOnce) {
   const auto s = tu::scene::default_scene();
-  const auto frame = tu::render::render_ref(s);
+  const auto frame = tu::render::render_cmodel(s);
   const auto wl = scene_workload(s, frame);
   ASSERT_FALSE(wl.spans.empty());
   ASSERT_EQ(wl.pixels.size(), frame.pixels.size());

@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "ellipse/ellipse_scheme.hpp"
+#include "ewa/ewa_fx.hpp"
 #include "persp/schemes.hpp"
 #include "texunit/formats.hpp"
 #include "texunit/sched.hpp"
@@ -30,9 +31,11 @@ Workload scene_workload(const scene::Scene& s, const render::Frame& frame) {
       if (i >= frame.pixels.size() || frame.pixels[i].x != x || frame.pixels[i].y != y)
         throw std::invalid_argument("scene_workload: the frame's pixels do not match the coverage at (" +
                                     std::to_string(x) + ", " + std::to_string(y) + ")");
+      const auto& rec = frame.pixels[i];
       PixelWork p;
-      p.texels = static_cast<uint32_t>(frame.pixels[i].texels);
-      p.levels = 1;
+      p.texels = static_cast<uint32_t>(rec.texels);
+      p.levels = static_cast<uint32_t>(rec.levels);
+      p.no_weight = rec.levels > 0 && (rec.flags & ewa::fx::kNoWeight) != 0;
       wl.pixels.push_back(p);
     }
   }

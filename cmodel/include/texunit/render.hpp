@@ -22,6 +22,7 @@ struct PixelRecord {
   int texels = 0;       // texels read
   int texels_inside = 0;  // EWA: texels with a non-zero weight (cycle-independent count)
   uint32_t flags = 0;     // C-model engine: EWA flags (ewa_fx.hpp), else B2 flags (ellipse_fx.hpp)
+  int levels = 0;         // C-model engine, EWA: mip levels tried (1 + texel-cap raises); else 0
   img::Rgba8 color;
 };
 
