@@ -20,7 +20,8 @@ module tu_ewa_cordic #(
   localparam int unsigned AngW = tu_formats_pkg::EwaAngW;
   logic [AngW-1:0] at [Unroll];
   for (genvar j = 0; j < Unroll; j++) begin : g_rom
-    tu_ewa_atan_rom u_rom (.idx_i(4'(i0_i + 5'(j))), .atan_o(at[j]));
+    logic [tu_formats_pkg::EwaCordW-1:0] gain_unused;  // the rotation start value: read by the set-up
+    tu_ewa_atan_rom u_rom (.i_i(4'(i0_i + 5'(j))), .atan_o(at[j]), .gain_o(gain_unused));
   end
   always_comb begin
     logic signed [XW-1:0] x, y, xs, ys;

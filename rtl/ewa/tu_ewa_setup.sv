@@ -135,8 +135,9 @@ module tu_ewa_setup #(
     .rotate_i(st_q == StRot), .i0_i(it_q), .x_i(cx_q), .y_i(cy_q), .z_i(cz_q),
     .x_o(cx_d), .y_o(cy_d), .z_o(cz_d)
   );
-  logic [AngW-1:0] gain;
-  tu_ewa_gain u_gain (.gain_o(gain));
+  logic [CW-1:0]   gain;  // round(CORDIC gain 2^(EwaCordW-3)): the rotation's start x
+  logic [AngW-1:0] atan_unused;
+  tu_ewa_atan_rom u_gain (.i_i('0), .atan_o(atan_unused), .gain_o(gain));
   // theta from 2 phi (wrapped to AngW bits): phi + 1/4 turn reduced to [-1/4, 1/4) turn
   logic signed [ZW-1:0] two_phi, theta;
   always_comb begin
@@ -424,5 +425,5 @@ module tu_ewa_setup #(
   assign cv_o    = cv_q;
   assign flags_o = fl_q;
   logic unused;
-  assign unused = ^{lod_i[tu_formats_pkg::EllLodW-5:0], eflags_i[4:1]};
+  assign unused = ^{lod_i[tu_formats_pkg::EllLodW-5:0], eflags_i[4:1], atan_unused};
 endmodule
