@@ -171,10 +171,20 @@ TEST(Sysmodel, DefaultSceneStreamCoversEveryPixelOnce) {
       EXPECT_TRUE(wl.spans[i - 1].x0 + static_cast<int>(wl.spans[i - 1].count) < sp.x0 ||
                   wl.spans[i - 1].triangle != sp.triangle || wl.spans[i - 1].object != sp.object);
   }
-  for (const auto& p : wl.pixels) walked += p.texels;
+  std::vector<tu::ewa::PixelCost> costs;
+  for (const auto& p : wl.pixels) {
+    walked += p.texels;
+    costs.push_back({static_cast<int>(p.levels), p.texels, p.no_weight});
+  }
   const auto r = simulate(texture_unit(), wl);
   // The filter walks one texel per clock with one pixel in flight: it bounds the run from below.
   EXPECT_GE(r.total_cycles, walked);
+  // The EWA engine's own stream recurrence (ewa::stream_cycles: pixels always waiting, the first
+  // after the front-end latency; it counts to the cycle after the last output). The front end
+  // (5 pixels per 8 clocks at worst) always keeps the FIFO ahead of a >= 12-clock walk, so the
+  // whole-unit model must land on it exactly.
+  EXPECT_EQ(r.total_cycles + 1,
+            tu::ewa::stream_cycles(costs, static_cast<uint64_t>(tu::ewa::texture_unit_front_latency())));
   std::printf("default scene: %zu spans, %zu pixels, %llu texels, %llu cycles, %.3f s\n",
               wl.spans.size(), wl.pixels.size(), (unsigned long long)walked,
               (unsigned long long)r.total_cycles, r.sim_seconds);

@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "ellipse/ellipse_scheme.hpp"
+#include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
 #include "persp/schemes.hpp"
 #include "texunit/formats.hpp"
@@ -71,11 +72,28 @@ Pipeline texture_unit(const UnitConfig& c) {
   s.lat0 = std::max(fmt::kPerspLatency, ell.latency), s.ii0 = std::max(1, ell.ii);
   s.capacity = std::min(fmt::kPerspLatency, ell.latency), s.fifo_depth = 1;
   p.stages.push_back(s);
-  // tu_fifo: registered storage, a pushed pixel is visible the next cycle.
+  // tu_fifo in front of the filter: registered storage, a pushed pixel is visible the next cycle.
+  // tu_ewa: a set-up FSM (one pixel; its level loop repeats per texel-cap raise) hands a record
+  // to the walker (one texel per clock, drain, normalise) over a direct link and accepts again
+  // one clock after the hand-over, so pixel i+1's set-up overlaps pixel i's walk. Per-pixel
+  // clocks are the RTL cycle model's (ewa_cycles.hpp), applied to the C model's counts.
+  const ewa::EngineParams ep = c.ewa;
   s = {};
-  s.name = "ewa";
-  s.lat0 = 1, s.ii0 = 0, s.lat_per_work = 1, s.ii_per_work = 1, s.work = Work::Texels;
-  s.capacity = 1, s.fifo_depth = c.pixel_fifo, s.link_latency = 1;
+  s.name = "ewa_setup";
+  s.capacity = 1, s.fifo_depth = c.pixel_fifo, s.link_latency = 1, s.release = 1;
+  s.work = Work::Levels;
+  s.timing = [ep](const PixelWork& w) {
+    const int n = ewa::setup_cycles(static_cast<int>(std::max(w.levels, 1u)), ep);
+    return Timing{n, n + 1};
+  };
+  p.stages.push_back(s);
+  s = {};
+  s.name = "ewa_walk";
+  s.capacity = 1, s.direct = true, s.fifo_depth = 1, s.work = Work::Texels;
+  s.timing = [](const PixelWork& w) {
+    const int n = ewa::walk_cycles(ewa::PixelCost{static_cast<int>(std::max(w.levels, 1u)), w.texels, w.no_weight});
+    return Timing{n, n + 1};  // output valid and taken in its last clock, free the clock after
+  };
   p.stages.push_back(s);
   return p;
 }

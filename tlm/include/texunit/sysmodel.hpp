@@ -27,7 +27,7 @@ namespace tu::sysmodel {
 // Per-pixel work, from the C model (one entry per covered pixel, stream order).
 struct PixelWork {
   uint32_t texels = 0;   // EWA: bounding-box texels walked (the walker's clocks)
-  uint32_t levels = 0;   // EWA: mip levels tried (cap fallback re-walks)
+  uint32_t levels = 0;   // EWA: mip levels the set-up tried (1 + texel-cap raises)
   uint32_t steps = 0;    // relief: march steps (0: no relief on this pixel)
   bool relief = false;   // the pixel's material has relief (it enters the relief unit)
   bool no_weight = false;  // EWA: no texel had weight (the walker's nearest-texel fallback)

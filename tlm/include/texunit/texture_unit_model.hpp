@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "ewa/ewa_cycles.hpp"
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
 #include "texunit/sysmodel.hpp"
@@ -18,10 +19,11 @@ Workload scene_workload(const scene::Scene& s, const render::Frame& frame);
 // Buffer depths of the unit (the RTL's FIFOs).
 struct UnitConfig {
   int span_fifo = 2;   // spans waiting for the per-scanline set-up
-  int pixel_fifo = 4;  // B2 -> filter FIFO (tu_fifo): decouples the fixed pipes from the walk
+  int pixel_fifo = 4;  // B2 -> filter FIFO (tu_fifo FifoDepth): decouples the fixed pipes from the walk
+  ewa::EngineParams ewa;  // tu_ewa structure parameters (CORDIC unroll, square-root step)
 };
 
-// span set-up -> B1 (span walker + tu_persp) -> B2 (tu_ellipse) -> FIFO -> B5 EWA filter.
+// span set-up -> expander -> B1 || B2 -> FIFO -> EWA set-up -> EWA walker (tu_texture_unit).
 // Latencies and IIs come from formats.hpp and the blocks' scheduler graphs.
 Pipeline texture_unit(const UnitConfig& c = {});
 
