@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "ewa/ewa_fx.hpp"
 #include "pom/pom_layers.hpp"
 #include "gauss/clip.hpp"
 #include "gauss/weight.hpp"
@@ -156,12 +157,48 @@ std::string wtab2d_rom() {
      << "    endcase\n  end\nendmodule\n";
   return os.str();
 }
+std::string ewa_exp2_rom() {
+  // EWA semi-axes (docs/blocks/ewa.md): 2^f for the EwaExpF-bit fraction f of log2 a.
+  const auto& t = ewa::fx::exp2_table();
+  std::ostringstream os;
+  os << kBanner << "// EWA exp2 ROM: e = round(2^(idx/2^EwaExpF) * 2^EwaE2F), u1." << fmt::kEwaE2F << ".\n"
+     << "module tu_ewa_exp2_rom (\n"
+     << "  input  logic [tu_formats_pkg::EwaExpF-1:0] idx_i,\n"
+     << "  output logic [tu_formats_pkg::EwaE2W-1:0]  e_o\n);\n"
+     << "  always_comb begin\n    unique case (idx_i)\n";
+  for (size_t k = 0; k < t.size(); ++k)
+    os << "      " << hex(k, fmt::kEwaExpF) << ": e_o = " << hex(t[k], fmt::kEwaE2W) << ";\n";
+  os << "      default: e_o = '0;\n    endcase\n  end\nendmodule\n";
+  return os.str();
+}
+std::string ewa_atan_rom() {
+  // EWA direction CORDIC (docs/blocks/ewa.md): per-iteration angles and the rotation start value.
+  const auto& t = ewa::fx::atan_table();
+  int iw = 1;
+  while ((1 << iw) < fmt::kEwaCordIter) ++iw;
+  std::ostringstream os;
+  os << kBanner
+     << "// EWA CORDIC ROM: atan_o = round(atan(2^-i) / (2 pi) * 2^EwaAngW) (binary angle);\n"
+     << "// gain_o = round(prod_i 1/sqrt(1 + 2^-2i) * 2^(EwaCordW-3)), the rotation's start x.\n"
+     << "module tu_ewa_atan_rom (\n"
+     << "  input  logic [" << iw - 1 << ":0]                       i_i,\n"
+     << "  output logic [tu_formats_pkg::EwaAngW-1:0]  atan_o,\n"
+     << "  output logic [tu_formats_pkg::EwaCordW-1:0] gain_o\n);\n"
+     << "  assign gain_o = " << hex(static_cast<uint64_t>(ewa::fx::cordic_gain_code()), fmt::kEwaCordW)
+     << ";\n  always_comb begin\n    unique case (i_i)\n";
+  for (size_t k = 0; k < t.size(); ++k)
+    os << "      " << hex(k, iw) << ": atan_o = " << hex(static_cast<uint64_t>(t[k]), fmt::kEwaAngW) << ";\n";
+  os << "      default: atan_o = '0;\n    endcase\n  end\nendmodule\n";
+  return os.str();
+}
 }  // namespace
 
 std::map<std::string, std::string> generated_rtl() {
   return {{"rtl/0_pkg/tu_formats_pkg.sv", formats_pkg()},
           {"rtl/generated/tu_clip_coef_mm3.sv", clip_roms(false)},
           {"rtl/generated/tu_clip_seg_mm1.sv", clip_roms(true)},
+          {"rtl/generated/tu_ewa_atan_rom.sv", ewa_atan_rom()},
+          {"rtl/generated/tu_ewa_exp2_rom.sv", ewa_exp2_rom()},
           {"rtl/generated/tu_pom_f_rom.sv", pom_f_rom()},
           {"rtl/generated/tu_recip_rom.sv", recip_rom()},
           {"rtl/generated/tu_wtab1d_rom.sv", wtab1d_rom()},

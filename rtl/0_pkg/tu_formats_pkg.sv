@@ -95,5 +95,26 @@ package tu_formats_pkg;
   localparam int unsigned EllLodF = 8;
   localparam int unsigned EllMaxLodW = 4;  // max_lod (log2 of the texture size): unsigned integer
   localparam int unsigned EllLatency = 5;  // analytic ellipse/LOD pipeline latency in cycles, II = 1
+  localparam int unsigned EwaCordW = 24;  // CORDIC x, y datapath: signed; d = Ae'-Ce', b = Be' block-normalised to W-3 bits
+  localparam int unsigned EwaCordIter = 16;  // CORDIC iterations (vectoring and rotation)
+  localparam int unsigned EwaAngW = 18;  // binary angle: signed, 2 pi = 2^EwaAngW (wraps), atan table entries
+  localparam int unsigned EwaCsW = 16;  // cos / sin of the major-axis angle: signed, EwaCsF fraction bits (s1.14)
+  localparam int unsigned EwaCsF = 14;
+  localparam int unsigned EwaExpF = 8;  // log2 of the semi-axes at the walk level: EwaExpF fraction bits (truncated)
+  localparam int unsigned EwaAxisMaxLog2 = 7;  // semi-axes clamped to 2^EwaAxisMaxLog2 texels (flag)
+  localparam int unsigned EwaE2W = 17;  // exp2 ROM entry 2^(i/2^EwaExpF): unsigned, EwaE2F fraction bits (u1.16)
+  localparam int unsigned EwaE2F = 16;
+  localparam int unsigned EwaAW = 24;  // semi-axes a, b = 2^ea (box only): unsigned, EwaE2F fraction bits
+  localparam int unsigned EwaKW = 18;  // frame coefficients kxu, kxv, kyu, kyv: signed, EwaKF fraction bits, half up
+  localparam int unsigned EwaKF = 16;
+  localparam int unsigned EwaPosF = 6;  // texel-space centre cu, cv, half extents hu, hv and offsets du, dv: frac bits
+  localparam int unsigned EwaDW = 16;  // offsets du, dv from the centre: signed, EwaPosF fraction bits
+  localparam int unsigned EwaHW = 15;  // half extents hu, hv (rounded up + margin): unsigned, EwaPosF fraction bits
+  localparam int unsigned EwaXiW = 32;  // xi, eta = k . (du, dv): signed, EwaKF + EwaPosF fraction bits (exact)
+  localparam int unsigned EwaQW = 63;  // Q = xi^2 + eta^2, ddQ: unsigned; dQ: signed EwaQW+1; 2 (EwaKF + EwaPosF) frac, exact
+  localparam int unsigned EwaCountW = 17;  // texel counters (box, inside) and the max_texels cap: unsigned integers
+  localparam int unsigned EwaWsumW = 33;  // weight sum: unsigned, GaussSqF fraction bits (exact)
+  localparam int unsigned EwaAccW = 41;  // per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)
+  localparam int unsigned EwaNrmW = 23;  // weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1
   /* verilator lint_on UNUSEDPARAM */
 endpackage

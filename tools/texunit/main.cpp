@@ -112,6 +112,12 @@ int cmd_demo(uint64_t count, const std::string& out_dir) {
               "outputs", "mismatch", "max_ulp", "rms_err", "latency", "II", "cycles");
   bool ok = true;
   for (const auto& b : tu::blocks::all()) {
+    try {
+      tu::cosim::find_rtl(b.name);
+    } catch (const std::invalid_argument&) {  // C model and vectors ahead of the block's RTL
+      std::printf("%-12s (C model only: no RTL co-simulation model yet)\n", b.name.c_str());
+      continue;
+    }
     for (const auto& set : b.sets) {
       const auto vf = tu::blocks::generate(b, set, count, 2026);
       tu::cosim::Options opt;

@@ -14,6 +14,7 @@ Block make_persp();       // persp_block.cpp
 Block make_persp_k4();    // persp_block.cpp
 Block make_persp_setup(); // persp_block.cpp
 Block make_ellipse();     // ellipse_block.cpp
+Block make_ewa();         // ewa_block.cpp
 
 const std::vector<Block>& all() {
   static const std::vector<Block> blocks = [] {
@@ -27,6 +28,7 @@ const std::vector<Block>& all() {
     b.push_back(make_persp_k4());
     b.push_back(make_persp_setup());
     b.push_back(make_ellipse());
+    b.push_back(make_ewa());
     return b;
   }();
   return blocks;

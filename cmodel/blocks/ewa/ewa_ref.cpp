@@ -16,6 +16,11 @@ Result filter_ref(const tex::Texture& t, double u, double v, const ellipse::Jaco
   double s2 = s1 > 0 ? det / s1 : 0;
   const double theta = 0.5 * std::atan2(2 * a12, a11 - a22);  // major axis angle in (u, v)
   s2 = std::max(s2, s1 / p.max_aniso);
+  return filter_axes(t, u, v, s1, s2, theta, p);
+}
+
+Result filter_axes(const tex::Texture& t, double u, double v, double s1, double s2, double theta,
+                   const Params& p) {
   const int max_level = t.num_levels() - 1;
   int level = s2 > 1 ? std::clamp(static_cast<int>(std::floor(std::log2(s2))), 0, max_level) : 0;
   const double c = std::cos(theta), s = std::sin(theta);

@@ -33,6 +33,12 @@ struct Result {
 Result filter_ref(const tex::Texture& t, double u, double v, const ellipse::Jacobian& j,
                   const Params& p);
 
+// The same filter from the footprint's semi-axes s1 >= s2 (level-0 texels, s2 already grown by
+// the anisotropy clamp) and the major-axis angle theta (radians, in (u, v)). filter_ref calls it;
+// the bit-accurate model's vectors use it on B2's axes (ewa_fx.hpp).
+Result filter_axes(const tex::Texture& t, double u, double v, double s1, double s2, double theta,
+                   const Params& p);
+
 // Gaussian pixel-model weight, Q in [0, 1); 0 outside.
 inline double gpm_weight(double q) {
   if (q < 0 || q >= 1) return 0;

@@ -108,7 +108,29 @@
   X(EllLodW, 12, "lod: unsigned, EllLodF fraction bits, floor, clamped to [0, max_lod]")        \
   X(EllLodF, 8, "")                                                                             \
   X(EllMaxLodW, 4, "max_lod (log2 of the texture size): unsigned integer")                      \
-  X(EllLatency, 5, "analytic ellipse/LOD pipeline latency in cycles, II = 1")
+  X(EllLatency, 5, "analytic ellipse/LOD pipeline latency in cycles, II = 1")               \
+  /* EWA filter, bit-accurate (docs/blocks/ewa.md) */                                          \
+  X(EwaCordW, 24, "CORDIC x, y datapath: signed; d = Ae'-Ce', b = Be' block-normalised to W-3 bits") \
+  X(EwaCordIter, 16, "CORDIC iterations (vectoring and rotation)")                            \
+  X(EwaAngW, 18, "binary angle: signed, 2 pi = 2^EwaAngW (wraps), atan table entries")        \
+  X(EwaCsW, 16, "cos / sin of the major-axis angle: signed, EwaCsF fraction bits (s1.14)")    \
+  X(EwaCsF, 14, "")                                                                            \
+  X(EwaExpF, 8, "log2 of the semi-axes at the walk level: EwaExpF fraction bits (truncated)") \
+  X(EwaAxisMaxLog2, 7, "semi-axes clamped to 2^EwaAxisMaxLog2 texels (flag)")                \
+  X(EwaE2W, 17, "exp2 ROM entry 2^(i/2^EwaExpF): unsigned, EwaE2F fraction bits (u1.16)")    \
+  X(EwaE2F, 16, "")                                                                            \
+  X(EwaAW, 24, "semi-axes a, b = 2^ea (box only): unsigned, EwaE2F fraction bits")           \
+  X(EwaKW, 18, "frame coefficients kxu, kxv, kyu, kyv: signed, EwaKF fraction bits, half up") \
+  X(EwaKF, 16, "")                                                                             \
+  X(EwaPosF, 6, "texel-space centre cu, cv, half extents hu, hv and offsets du, dv: frac bits") \
+  X(EwaDW, 16, "offsets du, dv from the centre: signed, EwaPosF fraction bits")               \
+  X(EwaHW, 15, "half extents hu, hv (rounded up + margin): unsigned, EwaPosF fraction bits")  \
+  X(EwaXiW, 32, "xi, eta = k . (du, dv): signed, EwaKF + EwaPosF fraction bits (exact)")      \
+  X(EwaQW, 63, "Q = xi^2 + eta^2, ddQ: unsigned; dQ: signed EwaQW+1; 2 (EwaKF + EwaPosF) frac, exact") \
+  X(EwaCountW, 17, "texel counters (box, inside) and the max_texels cap: unsigned integers") \
+  X(EwaWsumW, 33, "weight sum: unsigned, GaussSqF fraction bits (exact)")                      \
+  X(EwaAccW, 41, "per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)")       \
+  X(EwaNrmW, 23, "weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1")
 
 namespace tu::fmt {
 #define TU_X_DECLARE(name, value, desc) inline constexpr int k##name = (value);

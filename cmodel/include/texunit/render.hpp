@@ -3,6 +3,8 @@
 // and the RTL are measured against.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +20,9 @@ struct PixelRecord {
   double u = 0, v = 0;  // level-0 texels
   double lod = 0;       // mip level used (EWA: the walk's level; trilinear: the blend position)
   int texels = 0;       // texels read
+  int texels_inside = 0;  // EWA: texels with a non-zero weight (cycle-independent count)
+  uint32_t b2_flags = 0;   // C-model engine: B2 flags (ellipse_fx.hpp; kHorizon = B1 guard)
+  uint32_t ewa_flags = 0;  // C-model engine, EWA: ewa::fx flags (ewa_fx.hpp)
   img::Rgba8 color;
 };
 
@@ -34,6 +39,20 @@ std::vector<Cover> visibility(const scene::Scene& s);
 
 // Float reference render. `filter`, when given, overrides every material's filter.
 Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter = {});
+
+// Bit-accurate C-model render (docs/blocks/ewa.md): per covered pixel (same visibility as the
+// reference) B1 persp::Unit on the quantised coefficients, B2 ellipse::fx::analytic, then the
+// fixed nearest / bilinear / trilinear (lod = B2's lod: lmin floored to TexLodF bits, clamped to
+// the top level) or EWA fx with the material's weight source and a 1024-texel cap.
+struct CmodelOptions {
+  // Per-pixel uv-shift step between B1 and the filter (relief mapping hooks in here): pixel,
+  // object, and the B1 u, v codes (s(PerspUvW).TexUvF) to modify in place.
+  std::function<void(int x, int y, int object, int64_t* u, int64_t* v)> uv_shift;
+  std::optional<scene::WeightSource> weights;  // overrides every material's EWA weight source
+  bool progress = false;  // a simple progress bar on stderr
+};
+Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter = {},
+                    const CmodelOptions& opt = {});
 
 // |a - b| per pixel (max over RGB) mapped to a blue-red heat map, `full_scale` levels = red.
 img::Rgba8Image error_heatmap(const img::Rgba8Image& a, const img::Rgba8Image& b, int full_scale);

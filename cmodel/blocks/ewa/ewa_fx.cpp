@@ -1,0 +1,337 @@
+#include "ewa_fx.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "gauss/weight.hpp"
+#include "reciprocal/reciprocal.hpp"
+
+namespace tu::ewa::fx {
+
+namespace {
+constexpr int kAngW = fmt::kEwaAngW;
+constexpr int32_t kHalfTurn = int32_t(1) << (kAngW - 1), kQuarter = int32_t(1) << (kAngW - 2);
+constexpr int kRotF = fmt::kEwaCordW - 3;  // rotation datapath fraction bits (guard bits over CsF)
+constexpr int kQF = 2 * (fmt::kEwaKF + fmt::kEwaPosF);  // Q fraction bits
+constexpr int64_t kStep = int64_t(1) << fmt::kEwaPosF;   // one texel in offset codes
+static_assert(fmt::kTexUvF >= fmt::kEwaPosF, "centre: u / 2^L is rounded to EwaPosF bits");
+static_assert(kQF - fmt::kGaussQF > 0 && fmt::kEwaKF + fmt::kEwaPosF > fmt::kGaussXiF);
+
+int32_t wrap_angle(int64_t z) {  // two's-complement wrap to EwaAngW bits
+  const uint32_t m = (uint32_t(1) << kAngW) - 1;
+  const uint32_t u = static_cast<uint32_t>(z) & m;
+  return static_cast<int32_t>(u << (32 - kAngW)) >> (32 - kAngW);
+}
+int msb64(uint64_t x) { return 63 - std::countl_zero(x); }
+int64_t round_shift(int64_t v, int d) { return (v + (int64_t(1) << (d - 1))) >> d; }  // half up
+// Ceiling square root of an exact sum of squares.
+uint64_t isqrt_ceil(u128 x) {
+  const uint64_t r = ellipse::fx::isqrt(x);
+  return static_cast<u128>(r) * r < x ? r + 1 : r;
+}
+// Conservative half extent: sqrt(p^2 + q^2) (p, q: a.EwaE2F x c.EwaCsF codes) rounded up to
+// EwaPosF bits, plus the margin for the quantised frame (see the header).
+uint32_t half_extent(int64_t p, int64_t q) {
+  const int shift = fmt::kEwaE2F + fmt::kEwaCsF - fmt::kEwaPosF;
+  const uint64_t r = isqrt_ceil(static_cast<u128>(i128(p) * p) + static_cast<u128>(i128(q) * q));
+  const uint64_t h = (r + (uint64_t(1) << shift) - 1) >> shift;
+  return static_cast<uint32_t>(h + (h >> fmt::kEwaPosF) + 1);
+}
+int64_t floor_div_step(int64_t c) { return c >> fmt::kEwaPosF; }
+int64_t ceil_div_step(int64_t c) { return -((-c) >> fmt::kEwaPosF); }
+
+const gauss::Table1D& table1d() {
+  static const gauss::Table1D t(gauss::kWtabRtlLog2N);
+  return t;
+}
+const gauss::Table2D& table2d() {
+  static const gauss::Table2D t(gauss::kWtab2dRtlLog2N);
+  return t;
+}
+uint32_t weight_of(Weights w, uint64_t q, int64_t xi, int64_t eta) {
+  switch (w) {
+    case Weights::Formula: return gauss::weight(static_cast<uint32_t>(q >> (kQF - fmt::kGaussQF)));
+    case Weights::Table1d: return table1d().lookup(static_cast<uint32_t>(q >> (kQF - fmt::kGaussQF)));
+    case Weights::Table2d: {
+      const int sh = fmt::kEwaKF + fmt::kEwaPosF - fmt::kGaussXiF;  // floor
+      return table2d().lookup(static_cast<int32_t>(xi >> sh), static_cast<int32_t>(eta >> sh));
+    }
+  }
+  return 0;
+}
+}  // namespace
+
+const std::array<int32_t, fmt::kEwaCordIter>& atan_table() {
+  static const auto t = [] {
+    std::array<int32_t, fmt::kEwaCordIter> a{};
+    for (int i = 0; i < fmt::kEwaCordIter; ++i)
+      a[static_cast<size_t>(i)] = static_cast<int32_t>(
+          std::floor(std::atan(std::ldexp(1.0, -i)) / (2 * M_PI) * std::ldexp(1.0, kAngW) + 0.5));
+    return a;
+  }();
+  return t;
+}
+
+const std::array<uint32_t, 1u << fmt::kEwaExpF>& exp2_table() {
+  static const auto t = [] {
+    std::array<uint32_t, 1u << fmt::kEwaExpF> e{};
+    for (uint32_t i = 0; i < e.size(); ++i)
+      e[i] = static_cast<uint32_t>(std::floor(
+          std::exp2(std::ldexp(double(i), -fmt::kEwaExpF)) * std::ldexp(1.0, fmt::kEwaE2F) + 0.5));
+    return e;
+  }();
+  return t;
+}
+
+int32_t cordic_gain_code() {
+  double k = 1;
+  for (int i = 0; i < fmt::kEwaCordIter; ++i) k /= std::sqrt(1 + std::ldexp(1.0, -2 * i));
+  return static_cast<int32_t>(std::floor(std::ldexp(k, kRotF) + 0.5));
+}
+
+int32_t vectoring(int64_t d, int64_t b) {
+  if (d == 0 && b == 0) return 0;
+  // Block-normalise (floor shifts) so that the CORDIC gain (1.65 sqrt 2) cannot overflow.
+  const uint64_t m = std::max<uint64_t>(d < 0 ? -static_cast<uint64_t>(d) : d,
+                                        b < 0 ? -static_cast<uint64_t>(b) : b);
+  const int k = std::max(0, msb64(m) + 1 - (fmt::kEwaCordW - 3));
+  int64_t x = d >> k, y = b >> k;
+  int64_t z = 0;
+  if (x < 0) {  // pre-rotation by a half turn into the right half-plane
+    x = -x;
+    y = -y;
+    z = kHalfTurn;
+  }
+  const auto& at = atan_table();
+  for (int i = 0; i < fmt::kEwaCordIter; ++i) {
+    const int64_t xs = x >> i, ys = y >> i;
+    if (y >= 0) {
+      x += ys, y -= xs, z += at[static_cast<size_t>(i)];
+    } else {
+      x -= ys, y += xs, z -= at[static_cast<size_t>(i)];
+    }
+  }
+  return wrap_angle(z);
+}
+
+void rotation(int32_t theta, int32_t* c, int32_t* s) {
+  int64_t x = cordic_gain_code(), y = 0, z = theta;
+  const auto& at = atan_table();
+  for (int i = 0; i < fmt::kEwaCordIter; ++i) {
+    const int64_t xs = x >> i, ys = y >> i;
+    if (z >= 0) {
+      x -= ys, y += xs, z -= at[static_cast<size_t>(i)];
+    } else {
+      x += ys, y -= xs, z += at[static_cast<size_t>(i)];
+    }
+  }
+  *c = static_cast<int32_t>(round_shift(x, kRotF - fmt::kEwaCsF));
+  *s = static_cast<int32_t>(round_shift(y, kRotF - fmt::kEwaCsF));
+}
+
+uint32_t exp2_pos(uint32_t e) {
+  return exp2_table()[e & ((1u << fmt::kEwaExpF) - 1)] << (e >> fmt::kEwaExpF);
+}
+uint32_t exp2_neg(uint32_t e) {
+  // 2^-e = 2^-(n+1) 2^(1-f) for a fraction f > 0.
+  const uint32_t n = e >> fmt::kEwaExpF, f = e & ((1u << fmt::kEwaExpF) - 1);
+  if (f == 0) return (uint32_t(1) << fmt::kEwaE2F) >> n;
+  return exp2_table()[(1u << fmt::kEwaExpF) - f] >> (n + 1);
+}
+
+PixelSetup setup(const In& in, const tex::Texture& t, const Config& cfg) {
+  namespace efx = ellipse::fx;
+  const efx::Out& o = in.b2;
+  PixelSetup su;
+  const int top = t.num_levels() - 1;
+  const bool unit = (o.flags & efx::kHorizon) || o.lmaj == efx::kLogNegInf;
+  int level = 0;
+  if (unit) {
+    su.flags |= kUnitDisc;
+  } else {
+    level = static_cast<int>(o.lod >> fmt::kEllLodF);
+    if (level > top) {
+      level = top;
+      su.flags |= kLodSat;
+    }
+    // ae, ce < 2^62 (B2 block floating point): the difference fits int64.
+    const int64_t d = static_cast<int64_t>(o.ae) - static_cast<int64_t>(o.ce);
+    su.two_phi = vectoring(d, o.be);
+    // phi = 2 phi / 2 is the minor axis; the major axis is a quarter turn away, modulo a half
+    // turn. A circle (d = b = 0) has no direction: theta = 0.
+    if (d != 0 || o.be != 0) {
+      su.theta = (su.two_phi >> 1) + kQuarter;
+      if (su.theta >= kQuarter) su.theta -= kHalfTurn;
+    }
+  }
+  rotation(su.theta, &su.c, &su.s);
+  constexpr int kDrop = fmt::kEllLogF - fmt::kEwaExpF;
+  for (;; ++level) {
+    const auto& lv = t.levels[static_cast<size_t>(level)];
+    const int log2lim = std::countr_zero(static_cast<unsigned>(std::max(lv.width, lv.height)));
+    const int64_t emax = int64_t(std::min(log2lim, fmt::kEwaAxisMaxLog2)) << fmt::kEwaExpF;
+    int64_t ea = 0, eb = 0;
+    su.flags &= ~uint32_t(kAxisClamp);
+    if (!unit) {
+      const int64_t ra = (int64_t(o.lmaj) - (int64_t(level) << fmt::kEllLogF)) >> kDrop;
+      const int64_t rb = o.lmin == efx::kLogNegInf
+                             ? 0
+                             : (int64_t(o.lmin) - (int64_t(level) << fmt::kEllLogF)) >> kDrop;
+      if (ra > emax) su.flags |= kAxisClamp;
+      ea = std::clamp<int64_t>(ra, 0, emax);
+      eb = std::clamp<int64_t>(rb, 0, ea);
+    }
+    su.level = level;
+    su.ea = static_cast<uint32_t>(ea);
+    su.eb = static_cast<uint32_t>(eb);
+    su.a = exp2_pos(su.ea);
+    su.b = exp2_pos(su.eb);
+    su.inv_a = exp2_neg(su.ea);
+    su.inv_b = exp2_neg(su.eb);
+    auto k = [](int64_t cs, uint32_t inv) {
+      return static_cast<int32_t>(round_shift(cs * inv, fmt::kEwaCsF + fmt::kEwaE2F - fmt::kEwaKF));
+    };
+    su.kxu = k(su.c, su.inv_a);
+    su.kxv = k(su.s, su.inv_a);
+    su.kyu = k(-int64_t(su.s), su.inv_b);
+    su.kyv = k(su.c, su.inv_b);
+    su.hu = half_extent(int64_t(su.a) * su.c, int64_t(su.b) * su.s);
+    su.hv = half_extent(int64_t(su.a) * su.s, int64_t(su.b) * su.c);
+    // Centre at level L with texel i at i: u / 2^L rounded half up to EwaPosF bits, minus 1/2.
+    const int sh = fmt::kTexUvF + level - fmt::kEwaPosF;
+    su.cu = (sh > 0 ? round_shift(in.u, sh) : in.u) - kStep / 2;
+    su.cv = (sh > 0 ? round_shift(in.v, sh) : in.v) - kStep / 2;
+    su.x0 = ceil_div_step(su.cu - su.hu);
+    su.x1 = floor_div_step(su.cu + su.hu);
+    su.y0 = ceil_div_step(su.cv - su.hv);
+    su.y1 = floor_div_step(su.cv + su.hv);
+    su.box = static_cast<uint64_t>((su.x1 - su.x0 + 1) * (su.y1 - su.y0 + 1));
+    if (su.box > cfg.max_texels && level < top) {
+      su.flags |= kCapped;
+      continue;
+    }
+    return su;
+  }
+}
+
+uint32_t normalise(uint64_t acc, uint64_t wsum) {
+  const int p = msb64(wsum), top = fmt::kEwaNrmW - 1;
+  const uint64_t m = p >= top ? wsum >> (p - top) : wsum << (top - p);  // floor
+  const recip::Result r = recip::eval(static_cast<int32_t>(m));
+  // 1/wsum ~= R 2^-(RecipOutF + shift + p - top); shift == top (m's msb).
+  const int sh = fmt::kRecipOutF + static_cast<int>(r.shift) + p - top;
+  const u128 v = (static_cast<u128>(acc) * r.mant + (u128(1) << (sh - 1))) >> sh;
+  return static_cast<uint32_t>(std::min<u128>(v, 255));
+}
+
+Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool direct, WalkStats* st) {
+  Out out;
+  out.level = su.level;
+  out.flags = su.flags;
+  out.capped = (su.flags & kCapped) != 0;
+  // Q(du, dv) = A du^2 + B du dv + C dv^2 in the frame coefficients (exact).
+  const int64_t A = int64_t(su.kxu) * su.kxu + int64_t(su.kyu) * su.kyu;
+  const int64_t B = 2 * (int64_t(su.kxu) * su.kxv + int64_t(su.kyu) * su.kyv);
+  const int64_t ddq = 2 * A * kStep * kStep;
+  const int64_t one = int64_t(1) << kQF;
+  uint64_t acc[4] = {0, 0, 0, 0}, wsum = 0;
+  for (int64_t y = su.y0; y <= su.y1; ++y) {
+    const int64_t dv = y * kStep - su.cv, du0 = su.x0 * kStep - su.cu;
+    int64_t xi = int64_t(su.kxu) * du0 + int64_t(su.kxv) * dv;
+    int64_t eta = int64_t(su.kyu) * du0 + int64_t(su.kyv) * dv;
+    int64_t q = xi * xi + eta * eta;
+    int64_t dq = A * (2 * du0 * kStep + kStep * kStep) + B * dv * kStep;
+    for (int64_t x = su.x0; x <= su.x1; ++x) {
+      if (direct) {
+        const int64_t du = x * kStep - su.cu;
+        xi = int64_t(su.kxu) * du + int64_t(su.kxv) * dv;
+        eta = int64_t(su.kyu) * du + int64_t(su.kyv) * dv;
+        q = xi * xi + eta * eta;
+      }
+      if (st) {
+        st->max_abs_d = std::max({st->max_abs_d, std::abs(x * kStep - su.cu), std::abs(dv)});
+        st->max_abs_xi = std::max({st->max_abs_xi, std::abs(xi), std::abs(eta)});
+        st->max_q = std::max({st->max_q, static_cast<uint64_t>(q), static_cast<uint64_t>(std::abs(dq))});
+        st->max_ddq = std::max(st->max_ddq, static_cast<uint64_t>(ddq));
+      }
+      if (st && st->q_trace) st->q_trace->push_back(q);
+      ++out.texels_visited;
+      const uint32_t w = q < one ? weight_of(cfg.weights, static_cast<uint64_t>(q), xi, eta) : 0;
+      if (w > 0) {
+        ++out.texels_inside;
+        const img::Rgba8 px = t.fetch(su.level, x, y);
+        acc[0] += uint64_t(w) * px.r, acc[1] += uint64_t(w) * px.g;
+        acc[2] += uint64_t(w) * px.b, acc[3] += uint64_t(w) * px.a;
+        wsum += w;
+      }
+      if (!direct && x < su.x1) {  // Heckbert: first and second differences along x
+        q += dq;
+        dq += ddq;
+        xi += int64_t(su.kxu) * kStep;
+        eta += int64_t(su.kyu) * kStep;
+      }
+    }
+  }
+  if (st) {
+    st->wsum = std::max(st->wsum, wsum);
+    st->max_acc = std::max({st->max_acc, acc[0], acc[1], acc[2], acc[3]});
+  }
+  if (wsum == 0) {
+    out.flags |= kNoWeight;
+    out.color = t.fetch(su.level, floor_div_step(su.cu + kStep / 2), floor_div_step(su.cv + kStep / 2));
+    return out;
+  }
+  out.color = {static_cast<uint8_t>(normalise(acc[0], wsum)), static_cast<uint8_t>(normalise(acc[1], wsum)),
+               static_cast<uint8_t>(normalise(acc[2], wsum)), static_cast<uint8_t>(normalise(acc[3], wsum))};
+  return out;
+}
+
+Out filter(const In& in, const tex::Texture& t, const Config& cfg, bool direct, WalkStats* st) {
+  return walk(setup(in, t, cfg), t, cfg, direct, st);
+}
+
+In in_from_local(const ellipse::fx::Local& l, uint32_t laniso, uint32_t max_lod) {
+  In in;
+  const auto code = [](double x) {
+    return static_cast<int64_t>(std::floor(std::ldexp(x, fmt::kTexUvF) + 0.5));
+  };
+  in.u = code(l.u);
+  in.v = code(l.v);
+  in.b2 = ellipse::fx::analytic(ellipse::fx::in_from_map(ellipse::fx::local_map(l), laniso, max_lod));
+  return in;
+}
+
+ellipse::fx::Local footprint_local(double major, double aniso, double theta, double u, double v) {
+  ellipse::fx::Local l;
+  l.q = 0.5;
+  const double c = std::cos(theta), s = std::sin(theta), minor = aniso > 0 ? major / aniso : 0;
+  l.ux = c * major, l.vx = s * major, l.uy = -s * minor, l.vy = c * minor;
+  l.u = u, l.v = v;
+  return l;
+}
+
+In random_in(std::mt19937_64& rng) {
+  auto l = ellipse::fx::random_local(rng);
+  std::uniform_real_distribution<double> pos(-1024, 1024);
+  l.u = pos(rng);
+  l.v = pos(rng);
+  return in_from_local(l, 4 << fmt::kEllLogF, rng() % 8 == 0 ? 12 : 8);
+}
+
+Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels) {
+  const auto& o = in.b2;
+  const Params p{16, static_cast<int>(max_texels)};
+  const double u = std::ldexp(double(in.u), -fmt::kTexUvF), v = std::ldexp(double(in.v), -fmt::kTexUvF);
+  if ((o.flags & ellipse::fx::kHorizon) || o.lmaj == ellipse::fx::kLogNegInf)
+    return filter_axes(t, u, v, 1, 1, 0, p);
+  const double d = double(o.ae) - double(o.ce), b = double(o.be);
+  const double theta = d == 0 && b == 0 ? 0 : 0.5 * std::atan2(b, d) + M_PI / 2;
+  const double s1 = std::exp2(ellipse::fx::log_value(o.lmaj));
+  const double s2 = o.lmin == ellipse::fx::kLogNegInf ? 0 : std::exp2(ellipse::fx::log_value(o.lmin));
+  return filter_axes(t, u, v, s1, s2, theta, p);
+}
+
+double theta_value(int32_t theta) { return std::ldexp(double(theta), -kAngW) * 2 * M_PI; }
+
+}  // namespace tu::ewa::fx

@@ -1,0 +1,118 @@
+// The C-model render engine: the bit-accurate pipeline B1 -> B2 -> filter per covered pixel.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "ellipse/ellipse_fx.hpp"
+#include "ewa/ewa_fx.hpp"
+#include "texunit/render.hpp"
+
+namespace tu::render {
+
+namespace {
+constexpr img::Rgba8 kBackground{0, 0, 80, 255};  // as render_ref
+
+ewa::fx::Weights weights_of(scene::WeightSource w) {
+  switch (w) {
+    case scene::WeightSource::Formula: return ewa::fx::Weights::Formula;
+    case scene::WeightSource::Table1d: return ewa::fx::Weights::Table1d;
+    case scene::WeightSource::Table2d: return ewa::fx::Weights::Table2d;
+  }
+  return ewa::fx::Weights::Formula;
+}
+
+// log2(max anisotropy) as B2's laniso input (u(EllAnisoW).EllLogF, rounded, saturated).
+uint32_t laniso_code(double max_aniso) {
+  const double l = std::round(std::ldexp(std::log2(std::max(1.0, max_aniso)), fmt::kEllLogF));
+  return static_cast<uint32_t>(std::min(l, std::ldexp(1.0, fmt::kEllAnisoW) - 1));
+}
+}  // namespace
+
+Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, const CmodelOptions& opt) {
+  const int w = s.camera.width, h = s.camera.height;
+  Frame f;
+  f.image = img::Rgba8Image(w, h, kBackground);
+  const auto cov = visibility(s);
+  std::vector<tex::Texture> texs;
+  std::vector<std::vector<persp::Unit::Coefs>> coefs;
+  for (size_t o = 0; o < s.objects.size(); ++o) {
+    const auto& ob = s.objects[o];
+    texs.push_back(scene::build_texture(s, s.materials.at(ob.material).texture));
+    const auto& base = texs.back().levels[0];
+    std::vector<persp::Unit::Coefs> k;
+    const auto tris = scene::in_texels(ob, base.width, base.height);
+    for (size_t t = 0; t < tris.size(); ++t)
+      k.push_back(persp::Unit::quantise(persp::coefficients(s.camera, tris[t]),
+                                        "object " + std::to_string(o) + " triangle " + std::to_string(t)));
+    coefs.push_back(std::move(k));
+  }
+  for (int y = 0; y < h; ++y) {
+    if (opt.progress && (y % 8 == 0 || y == h - 1))
+      std::fprintf(stderr, "\rC-model render %3d%%", (y + 1) * 100 / h);
+    for (int x = 0; x < w; ++x) {
+      const Cover c = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)];
+      if (c.object < 0) continue;
+      const auto& m = s.materials.at(s.objects[static_cast<size_t>(c.object)].material);
+      const auto& tx = texs[static_cast<size_t>(c.object)];
+      const auto& k = coefs[static_cast<size_t>(c.object)][static_cast<size_t>(c.triangle)];
+      const int top = tx.num_levels() - 1;
+      // B1: u, v codes; B2: footprint on the same quantised coefficients.
+      const persp::Pixel px = persp::Unit::pixel(persp::Unit::direct(k, x, y));
+      ewa::fx::In in;
+      in.u = px.u;
+      in.v = px.v;
+      if (opt.uv_shift) opt.uv_shift(x, y, c.object, &in.u, &in.v);
+      in.b2 = ellipse::fx::analytic(
+          ellipse::fx::make_in(k, x, y, laniso_code(m.max_aniso), static_cast<uint32_t>(top)));
+      PixelRecord rec;
+      rec.x = x, rec.y = y, rec.object = c.object;
+      rec.u = std::ldexp(double(in.u), -fmt::kTexUvF);
+      rec.v = std::ldexp(double(in.v), -fmt::kTexUvF);
+      rec.b2_flags = in.b2.flags;
+      if (px.flag) {
+        // B1 guard (q < 2^-PerspGuardLog2, beyond 1024x the unit distance): no texture
+        // coordinates. The footprint there spans the texture: its mean, the 1x1 top level.
+        rec.color = tx.levels.back().at(0, 0);
+        rec.lod = top;
+        rec.texels = 1;
+        f.image.at(x, y) = rec.color;
+        f.pixels.push_back(rec);
+        continue;
+      }
+      switch (filter.value_or(m.filter)) {
+        case scene::Filter::Nearest:
+          rec.color = tex::nearest(tx, 0, in.u, in.v);
+          rec.texels = 1;
+          break;
+        case scene::Filter::Bilinear:
+          rec.color = tex::bilinear(tx, 0, in.u, in.v);
+          rec.texels = 4;
+          break;
+        case scene::Filter::Trilinear: {
+          // B2's lod is lmin (log2 of the clamped minor axis) floored to EllLodF = TexLodF bits
+          // and clamped to [0, top]: the blend position between levels floor(lod) and + 1.
+          static_assert(fmt::kEllLodF == fmt::kTexLodF);
+          rec.lod = ellipse::fx::lod_value(in.b2);
+          rec.color = tex::trilinear(tx, in.b2.lod, in.u, in.v);
+          rec.texels = 8;
+          break;
+        }
+        case scene::Filter::Ewa: {
+          const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), 1024});
+          rec.color = r.color;
+          rec.lod = r.level;
+          rec.texels = static_cast<int>(r.texels_visited);
+          rec.texels_inside = static_cast<int>(r.texels_inside);
+          rec.ewa_flags = r.flags;
+          break;
+        }
+      }
+      f.image.at(x, y) = rec.color;
+      f.pixels.push_back(rec);
+    }
+  }
+  if (opt.progress) std::fprintf(stderr, "\n");
+  return f;
+}
+
+}  // namespace tu::render
