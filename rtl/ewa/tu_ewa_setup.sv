@@ -151,12 +151,12 @@ module tu_ewa_setup #(
     /* verilator lint_off UNUSEDSIGNAL */
     logic signed [XW-1:0] t;  // high bits: sign copies
     /* verilator lint_on UNUSEDSIGNAL */
-    t = (v + (XW'(1) <<< (RotF - CsF - 1))) >>> (RotF - CsF);
+    t = (v + $signed(XW'(1) << (RotF - CsF - 1))) >>> (RotF - CsF);
     cs_round = CsW'(t);  // |cos|, |sin| <= 1: the dropped high bits are sign copies
   endfunction
 
   // ---- AX: log2 semi-axes at level L (EwaExpF fraction bits, floor)
-  logic signed [LW+1:0] ra, rb, emax;
+  logic signed [LW+1:0] ra, rb, emax, lev_log;
   logic [3:0]           lim2, limc;
   logic [ExpF+3:0]      ea_q, eb_q;
   logic                 axclamp;
@@ -165,9 +165,10 @@ module tu_ewa_setup #(
     lim2 = top_q - lev_q;  // log2 of the longer side of level L
     limc = lim2 > 4'(tu_formats_pkg::EwaAxisMaxLog2) ? 4'(tu_formats_pkg::EwaAxisMaxLog2) : lim2;
     emax = (LW+2)'(limc) <<< ExpF;
-    ra = ((LW+2)'(lmaj_q) - ((LW+2)'(lev_q) <<< tu_formats_pkg::EllLogF)) >>> (tu_formats_pkg::EllLogF - ExpF);
-    rb = (lmin_q == LogNegInf) ? '0 :
-         ((LW+2)'(lmin_q) - ((LW+2)'(lev_q) <<< tu_formats_pkg::EllLogF)) >>> (tu_formats_pkg::EllLogF - ExpF);
+    lev_log = $signed((LW+2)'(lev_q) << tu_formats_pkg::EllLogF);
+    ra = ((LW+2)'(lmaj_q) - lev_log) >>> (tu_formats_pkg::EllLogF - ExpF);
+    if (lmin_q == LogNegInf) rb = '0;  // (an unsigned '0 in a ?: would make >>> logical)
+    else rb = ((LW+2)'(lmin_q) - lev_log) >>> (tu_formats_pkg::EllLogF - ExpF);
     axclamp = !unit_q && ra > emax;
     if (unit_q) begin
       ea_d = '0;
@@ -195,7 +196,7 @@ module tu_ewa_setup #(
   function automatic logic signed [KW-1:0] kcoef(input logic signed [CsW-1:0] cs, input logic [E2W-1:0] inv);
     logic signed [CsW+E2W:0] p;
     p = $signed({{(E2W+1){cs[CsW-1]}}, cs}) * $signed({{CsW{1'b0}}, 1'b0, inv});
-    p = (p + ((CsW+E2W+1)'(1) <<< (CsF + E2F - KF - 1))) >>> (CsF + E2F - KF);
+    p = (p + $signed((CsW+E2W+1)'(1) << (CsF + E2F - KF - 1))) >>> (CsF + E2F - KF);
     kcoef = KW'(p);
   endfunction
   function automatic logic signed [31:0] centre(input logic signed [UW-1:0] u, input logic [3:0] lev);
@@ -204,7 +205,7 @@ module tu_ewa_setup #(
     /* verilator lint_on UNUSEDSIGNAL */
     logic [5:0]         sh;
     sh = 6'(tu_formats_pkg::TexUvF - PosF) + 6'(lev);  // > 0: TexUvF >= PosF
-    t = ($signed({u[UW-1], u}) + ((UW+1)'(1) <<< (sh - 6'd1))) >>> sh;
+    t = ($signed({u[UW-1], u}) + $signed((UW+1)'(1) << (sh - 6'd1))) >>> sh;
     centre = 32'(t) - 32'(Step / 2);
   endfunction
   logic signed [KW-1:0] kxu_q, kxv_q, kyu_q, kyv_q;
@@ -236,10 +237,10 @@ module tu_ewa_setup #(
     hhv = (RootW+2)'(rootv_q) + (RootW+2)'(remv_q != '0);
     hu = hhu + (hhu >> PosF) + (RootW+2)'(1);
     hv = hhv + (hhv >> PosF) + (RootW+2)'(1);
-    x0_d = -((32'(hu) - cu_q) >>> PosF);
-    x1_d = (cu_q + 32'(hu)) >>> PosF;
-    y0_d = -((32'(hv) - cv_q) >>> PosF);
-    y1_d = (cv_q + 32'(hv)) >>> PosF;
+    x0_d = -(($signed(32'(hu)) - cu_q) >>> PosF);  // ceil((cu - hu) / 2^PosF)
+    x1_d = (cu_q + $signed(32'(hu))) >>> PosF;
+    y0_d = -(($signed(32'(hv)) - cv_q) >>> PosF);
+    y1_d = (cv_q + $signed(32'(hv))) >>> PosF;
   end
   logic signed [31:0] bw, bh;
   logic [63:0]        box;
