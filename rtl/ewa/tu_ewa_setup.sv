@@ -17,7 +17,9 @@
 //   START   2         walk start values (row y0, column x0): xi, eta, Q and the first and second
 //                     differences of Q along x and along y (exact integers)
 //   HAND    >= 1      hand the record to the walker (rec_valid_o until rec_ready_i)
-// Cycles from acceptance to rec_valid_o: 2 + 2 I/U + levels * (6 + RootW/S) + 2.
+// Cycles from acceptance to rec_valid_o: 2 + 2 I/U + levels * (6 + RootW/S) + 2; a B1-guard
+// pixel (no texture coordinates: the texture's mean, the top level's single texel, as
+// render::render_cmodel) goes from ACCEPT straight to HAND: 1.
 module tu_ewa_setup #(
   parameter int unsigned CordUnroll = 2,  // CORDIC iterations per clock (divides EwaCordIter)
   parameter int unsigned SqrtStep   = 4   // square-root bits per clock (divides RootW)
@@ -35,13 +37,15 @@ module tu_ewa_setup #(
   input  logic [tu_formats_pkg::EllLogW-1:0]    lmin_i,
   input  logic [tu_formats_pkg::EllLodW-1:0]    lod_i,
   input  logic [4:0]                            eflags_i,
+  input  logic                                  guard_i,    // B1 guard: no coordinates
   input  logic [3:0]                            top_i,      // top mip level = max(lw, lh)
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   // record for the walker
   output logic                                  rec_valid_o,
   input  logic                                  rec_ready_i,
   output logic [3:0]                            level_o,
-  output logic [4:0]   flags_o,
+  output logic [4:0]                            flags_o,
+  output logic                                  guard_o,    // record of a B1-guard pixel
   output logic signed [31:0]                    x0_o,
   output logic signed [31:0]                    x1_o,
   output logic signed [31:0]                    y0_o,
@@ -103,7 +107,7 @@ module tu_ewa_setup #(
   logic [63:0]          ae_q, ce_q, be_q;
   logic signed [LW-1:0] lmaj_q, lmin_q;
   logic [3:0]           lodi_q, top_q, lev_q;
-  logic                 unit_q;
+  logic                 unit_q, guard_q;
   logic [NW-1:0]        cap_q;
   logic [4:0] fl_q;
 
@@ -265,7 +269,7 @@ module tu_ewa_setup #(
     if (!rst_ni) st_q <= StIdle;
     else begin
       unique case (st_q)
-        StIdle: if (in_valid_i) st_q <= StPre;
+        StIdle: if (in_valid_i) st_q <= guard_i ? StHand : StPre;
         StPre:  st_q <= StVec;
         StVec:  if (32'(it_q) + CordUnroll >= Iter) st_q <= StRot;
         StRot:  if (32'(it_q) + CordUnroll >= Iter) st_q <= StAx;
@@ -298,6 +302,13 @@ module tu_ewa_setup #(
         top_q  <= top_i;
         cap_q  <= cap_i;
         unit_q <= eflags_i[0] || ($signed(lmaj_i) == LogNegInf);
+        guard_q <= guard_i;
+        // B1 guard: the 1x1 top level's texel (0, 0), no walk (render_cmodel)
+        lev_q <= top_i;
+        fl_q  <= '0;
+        cu_q  <= '0;
+        cv_q  <= '0;
+        box_o <= NW'(1);
       end
       StPre: begin
         fl_q <= '0;
@@ -422,6 +433,7 @@ module tu_ewa_setup #(
     endcase
   end
   assign level_o = lev_q;
+  assign guard_o = guard_q;
   assign cu_o    = cu_q;
   assign cv_o    = cv_q;
   assign flags_o = fl_q;
