@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "ellipse/ellipse_fx.hpp"
+#include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
 #include "texunit/render.hpp"
 
@@ -68,7 +69,17 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       rec.x = x, rec.y = y, rec.object = c.object;
       rec.u = std::ldexp(double(in.u), -fmt::kTexUvF);
       rec.v = std::ldexp(double(in.v), -fmt::kTexUvF);
-      rec.flags = in.b2.flags;
+      rec.b2_flags = in.b2.flags;
+      if (px.flag) {
+        // B1 guard (q < 2^-PerspGuardLog2, beyond 1024x the unit distance): no texture
+        // coordinates. The footprint there spans the texture: its mean, the 1x1 top level.
+        rec.color = tx.levels.back().at(0, 0);
+        rec.lod = top;
+        rec.texels = 1;
+        f.image.at(x, y) = rec.color;
+        f.pixels.push_back(rec);
+        continue;
+      }
       switch (filter.value_or(m.filter)) {
         case scene::Filter::Nearest:
           rec.color = tex::nearest(tx, 0, in.u, in.v);
@@ -93,11 +104,8 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           rec.lod = r.level;
           rec.texels = static_cast<int>(r.texels_visited);
           rec.texels_inside = static_cast<int>(r.texels_inside);
-          rec.flags = r.flags;
-          // The set-up's first level: 0 for the unit disc, else B2's integer lod clamped to the
-          // top; each texel-cap raise tries one more (the set-up FSM's data-dependent loop).
-          rec.levels = r.level + 1 -
-                       ((r.flags & ewa::fx::kUnitDisc) ? 0 : std::min(static_cast<int>(in.b2.lod >> fmt::kEllLodF), top));
+          rec.ewa_flags = r.flags;
+          rec.levels = ewa::pixel_cost(in, r.level, r.flags, r.texels_visited, top).levels;
           break;
         }
       }

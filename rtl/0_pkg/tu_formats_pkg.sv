@@ -113,7 +113,7 @@ package tu_formats_pkg;
   localparam int unsigned EwaDW = 16;  // offsets du, dv from the centre: signed, EwaPosF fraction bits
   localparam int unsigned EwaHW = 15;  // half extents hu, hv (rounded up + margin): unsigned, EwaPosF fraction bits
   localparam int unsigned EwaXiW = 32;  // xi, eta = k . (du, dv): signed, EwaKF + EwaPosF fraction bits (exact)
-  localparam int unsigned EwaQW = 63;  // Q = xi^2 + eta^2 and its increments: unsigned, 2 (EwaKF + EwaPosF) frac, exact
+  localparam int unsigned EwaQW = 63;  // Q = xi^2 + eta^2, ddQ: unsigned; dQ: signed EwaQW+1; 2 (EwaKF + EwaPosF) frac, exact
   localparam int unsigned EwaCountW = 17;  // texel counters (box, inside) and the max_texels cap: unsigned integers
   localparam int unsigned EwaWsumW = 33;  // weight sum: unsigned, GaussSqF fraction bits (exact)
   localparam int unsigned EwaAccW = 41;  // per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)

@@ -20,6 +20,7 @@ module tu_ewa #(
   input  logic [tu_formats_pkg::EllLogW-1:0]    lmin_i,
   input  logic [tu_formats_pkg::EllLodW-1:0]    lod_i,
   input  logic [4:0]                            eflags_i,
+  input  logic                                  guard_i,  // B1 guard: the texture's mean (top level)
   input  logic [tu_formats_pkg::TexAddrW-1:0]   base_i,
   input  logic [3:0]                            lw_i,
   input  logic [3:0]                            lh_i,
@@ -57,14 +58,15 @@ module tu_ewa #(
   logic                 rec_valid, rec_ready;
   logic [3:0]           r_level;
   logic [4:0]           r_flags;
+  logic                 r_guard;
   logic signed [31:0]   r_x0, r_x1, r_y0, r_y1, r_cu, r_cv;
   logic [tu_formats_pkg::EwaCountW-1:0] r_box;
   logic signed [XiW-1:0] r_xi0, r_eta0, r_dxi, r_deta, r_dxiy, r_detay;
   logic signed [63:0]   r_q0, r_dq0, r_ddq, r_ey0, r_ddqy, r_dqy;
   tu_ewa_setup #(.CordUnroll(CordUnroll), .SqrtStep(SqrtStep)) u_setup (
     .clk_i, .rst_ni, .in_valid_i, .in_ready_o, .u_i, .v_i, .ae_i, .ce_i, .be_i, .lmaj_i, .lmin_i,
-    .lod_i, .eflags_i, .top_i(lw_i > lh_i ? lw_i : lh_i), .cap_i,
-    .rec_valid_o(rec_valid), .rec_ready_i(rec_ready), .level_o(r_level), .flags_o(r_flags),
+    .lod_i, .eflags_i, .guard_i, .top_i(lw_i > lh_i ? lw_i : lh_i), .cap_i,
+    .rec_valid_o(rec_valid), .rec_ready_i(rec_ready), .level_o(r_level), .flags_o(r_flags), .guard_o(r_guard),
     .x0_o(r_x0), .x1_o(r_x1), .y0_o(r_y0), .y1_o(r_y1), .box_o(r_box), .cu_o(r_cu), .cv_o(r_cv),
     .xi0_o(r_xi0), .eta0_o(r_eta0), .dxi_o(r_dxi), .deta_o(r_deta), .dxiy_o(r_dxiy),
     .detay_o(r_detay), .q0_o(r_q0), .dq0_o(r_dq0), .ddq_o(r_ddq), .ey0_o(r_ey0),
@@ -72,7 +74,7 @@ module tu_ewa #(
   );
   tu_ewa_walk u_walk (
     .clk_i, .rst_ni, .rec_valid_i(rec_valid), .rec_ready_o(rec_ready), .level_i(r_level),
-    .flags_i(r_flags), .x0_i(r_x0), .x1_i(r_x1), .y0_i(r_y0), .y1_i(r_y1), .box_i(r_box),
+    .flags_i(r_flags), .guard_i(r_guard), .x0_i(r_x0), .x1_i(r_x1), .y0_i(r_y0), .y1_i(r_y1), .box_i(r_box),
     .cu_i(r_cu), .cv_i(r_cv), .xi0_i(r_xi0), .eta0_i(r_eta0), .dxi_i(r_dxi), .deta_i(r_deta),
     .dxiy_i(r_dxiy), .detay_i(r_detay), .q0_i(r_q0), .dq0_i(r_dq0), .ddq_i(r_ddq),
     .ey0_i(r_ey0), .ddqy_i(r_ddqy), .dqy_i(r_dqy), .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q),

@@ -17,7 +17,9 @@
 //   START   2         walk start values (row y0, column x0): xi, eta, Q and the first and second
 //                     differences of Q along x and along y (exact integers)
 //   HAND    >= 1      hand the record to the walker (rec_valid_o until rec_ready_i)
-// Cycles from acceptance to rec_valid_o: 2 + 2 I/U + levels * (6 + RootW/S) + 2.
+// Cycles from acceptance to rec_valid_o: 2 + 2 I/U + levels * (6 + RootW/S) + 2; a B1-guard
+// pixel (no texture coordinates: the texture's mean, the top level's single texel, as
+// render::render_cmodel) goes from ACCEPT straight to HAND: 1.
 module tu_ewa_setup #(
   parameter int unsigned CordUnroll = 2,  // CORDIC iterations per clock (divides EwaCordIter)
   parameter int unsigned SqrtStep   = 4   // square-root bits per clock (divides RootW)
@@ -35,13 +37,15 @@ module tu_ewa_setup #(
   input  logic [tu_formats_pkg::EllLogW-1:0]    lmin_i,
   input  logic [tu_formats_pkg::EllLodW-1:0]    lod_i,
   input  logic [4:0]                            eflags_i,
+  input  logic                                  guard_i,    // B1 guard: no coordinates
   input  logic [3:0]                            top_i,      // top mip level = max(lw, lh)
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   // record for the walker
   output logic                                  rec_valid_o,
   input  logic                                  rec_ready_i,
   output logic [3:0]                            level_o,
-  output logic [4:0]   flags_o,
+  output logic [4:0]                            flags_o,
+  output logic                                  guard_o,    // record of a B1-guard pixel
   output logic signed [31:0]                    x0_o,
   output logic signed [31:0]                    x1_o,
   output logic signed [31:0]                    y0_o,
@@ -103,7 +107,7 @@ module tu_ewa_setup #(
   logic [63:0]          ae_q, ce_q, be_q;
   logic signed [LW-1:0] lmaj_q, lmin_q;
   logic [3:0]           lodi_q, top_q, lev_q;
-  logic                 unit_q;
+  logic                 unit_q, guard_q;
   logic [NW-1:0]        cap_q;
   logic [4:0] fl_q;
 
@@ -151,12 +155,12 @@ module tu_ewa_setup #(
     /* verilator lint_off UNUSEDSIGNAL */
     logic signed [XW-1:0] t;  // high bits: sign copies
     /* verilator lint_on UNUSEDSIGNAL */
-    t = (v + (XW'(1) <<< (RotF - CsF - 1))) >>> (RotF - CsF);
+    t = (v + $signed(XW'(1) << (RotF - CsF - 1))) >>> (RotF - CsF);
     cs_round = CsW'(t);  // |cos|, |sin| <= 1: the dropped high bits are sign copies
   endfunction
 
   // ---- AX: log2 semi-axes at level L (EwaExpF fraction bits, floor)
-  logic signed [LW+1:0] ra, rb, emax;
+  logic signed [LW+1:0] ra, rb, emax, lev_log;
   logic [3:0]           lim2, limc;
   logic [ExpF+3:0]      ea_q, eb_q;
   logic                 axclamp;
@@ -165,9 +169,10 @@ module tu_ewa_setup #(
     lim2 = top_q - lev_q;  // log2 of the longer side of level L
     limc = lim2 > 4'(tu_formats_pkg::EwaAxisMaxLog2) ? 4'(tu_formats_pkg::EwaAxisMaxLog2) : lim2;
     emax = (LW+2)'(limc) <<< ExpF;
-    ra = ((LW+2)'(lmaj_q) - ((LW+2)'(lev_q) <<< tu_formats_pkg::EllLogF)) >>> (tu_formats_pkg::EllLogF - ExpF);
-    rb = (lmin_q == LogNegInf) ? '0 :
-         ((LW+2)'(lmin_q) - ((LW+2)'(lev_q) <<< tu_formats_pkg::EllLogF)) >>> (tu_formats_pkg::EllLogF - ExpF);
+    lev_log = $signed((LW+2)'(lev_q) << tu_formats_pkg::EllLogF);
+    ra = ((LW+2)'(lmaj_q) - lev_log) >>> (tu_formats_pkg::EllLogF - ExpF);
+    if (lmin_q == LogNegInf) rb = '0;  // (an unsigned '0 in a ?: would make >>> logical)
+    else rb = ((LW+2)'(lmin_q) - lev_log) >>> (tu_formats_pkg::EllLogF - ExpF);
     axclamp = !unit_q && ra > emax;
     if (unit_q) begin
       ea_d = '0;
@@ -195,7 +200,7 @@ module tu_ewa_setup #(
   function automatic logic signed [KW-1:0] kcoef(input logic signed [CsW-1:0] cs, input logic [E2W-1:0] inv);
     logic signed [CsW+E2W:0] p;
     p = $signed({{(E2W+1){cs[CsW-1]}}, cs}) * $signed({{CsW{1'b0}}, 1'b0, inv});
-    p = (p + ((CsW+E2W+1)'(1) <<< (CsF + E2F - KF - 1))) >>> (CsF + E2F - KF);
+    p = (p + $signed((CsW+E2W+1)'(1) << (CsF + E2F - KF - 1))) >>> (CsF + E2F - KF);
     kcoef = KW'(p);
   endfunction
   function automatic logic signed [31:0] centre(input logic signed [UW-1:0] u, input logic [3:0] lev);
@@ -204,7 +209,7 @@ module tu_ewa_setup #(
     /* verilator lint_on UNUSEDSIGNAL */
     logic [5:0]         sh;
     sh = 6'(tu_formats_pkg::TexUvF - PosF) + 6'(lev);  // > 0: TexUvF >= PosF
-    t = ($signed({u[UW-1], u}) + ((UW+1)'(1) <<< (sh - 6'd1))) >>> sh;
+    t = ($signed({u[UW-1], u}) + $signed((UW+1)'(1) << (sh - 6'd1))) >>> sh;
     centre = 32'(t) - 32'(Step / 2);
   endfunction
   logic signed [KW-1:0] kxu_q, kxv_q, kyu_q, kyv_q;
@@ -236,10 +241,10 @@ module tu_ewa_setup #(
     hhv = (RootW+2)'(rootv_q) + (RootW+2)'(remv_q != '0);
     hu = hhu + (hhu >> PosF) + (RootW+2)'(1);
     hv = hhv + (hhv >> PosF) + (RootW+2)'(1);
-    x0_d = -((32'(hu) - cu_q) >>> PosF);
-    x1_d = (cu_q + 32'(hu)) >>> PosF;
-    y0_d = -((32'(hv) - cv_q) >>> PosF);
-    y1_d = (cv_q + 32'(hv)) >>> PosF;
+    x0_d = -(($signed(32'(hu)) - cu_q) >>> PosF);  // ceil((cu - hu) / 2^PosF)
+    x1_d = (cu_q + $signed(32'(hu))) >>> PosF;
+    y0_d = -(($signed(32'(hv)) - cv_q) >>> PosF);
+    y1_d = (cv_q + $signed(32'(hv))) >>> PosF;
   end
   logic signed [31:0] bw, bh;
   logic [63:0]        box;
@@ -264,7 +269,7 @@ module tu_ewa_setup #(
     if (!rst_ni) st_q <= StIdle;
     else begin
       unique case (st_q)
-        StIdle: if (in_valid_i) st_q <= StPre;
+        StIdle: if (in_valid_i) st_q <= guard_i ? StHand : StPre;
         StPre:  st_q <= StVec;
         StVec:  if (32'(it_q) + CordUnroll >= Iter) st_q <= StRot;
         StRot:  if (32'(it_q) + CordUnroll >= Iter) st_q <= StAx;
@@ -297,6 +302,13 @@ module tu_ewa_setup #(
         top_q  <= top_i;
         cap_q  <= cap_i;
         unit_q <= eflags_i[0] || ($signed(lmaj_i) == LogNegInf);
+        guard_q <= guard_i;
+        // B1 guard: the 1x1 top level's texel (0, 0), no walk (render_cmodel)
+        lev_q <= top_i;
+        fl_q  <= '0;
+        cu_q  <= '0;
+        cv_q  <= '0;
+        box_o <= NW'(1);
       end
       StPre: begin
         fl_q <= '0;
@@ -421,6 +433,7 @@ module tu_ewa_setup #(
     endcase
   end
   assign level_o = lev_q;
+  assign guard_o = guard_q;
   assign cu_o    = cu_q;
   assign cv_o    = cv_q;
   assign flags_o = fl_q;

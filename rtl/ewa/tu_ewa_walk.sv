@@ -11,7 +11,7 @@
 // channel = min(255, round_half_up(acc_c R 2^-(RecipOutF + p))); wsum = 0 -> the nearest texel
 // at level L (flag kNoWeight).
 // Cycles per pixel from the record hand-over (no back-pressure): 1 + box + 5 + 6, output valid in
-// the last (wsum = 0: 1 + box + 5 + 1 + 2).
+// the last (wsum = 0: 1 + box + 5 + 1 + 2; B1-guard record: 1 + 2, the single texel).
 module tu_ewa_walk (
   input  logic                                     clk_i,
   input  logic                                     rst_ni,
@@ -19,6 +19,7 @@ module tu_ewa_walk (
   output logic                                     rec_ready_o,
   input  logic [3:0]                               level_i,
   input  logic [4:0]                               flags_i,
+  input  logic                                     guard_i,  // B1 guard: texel (0, 0) of level_i
   input  logic signed [31:0]                       x0_i,
   input  logic signed [31:0]                       x1_i,
   input  logic signed [31:0]                       y0_i,
@@ -77,6 +78,7 @@ module tu_ewa_walk (
   // ---- record
   logic [3:0]          lev_q;
   logic [4:0]          fl_q;
+  logic                guard_q;
   logic signed [31:0]  x0_q, x1_q, y1_q, cu_q, cv_q;
   logic [NW-1:0]       box_q;
   logic signed [XiW-1:0] dxi_q, deta_q, dxiy_q, detay_q;
@@ -100,7 +102,7 @@ module tu_ewa_walk (
     if (!rst_ni) st_q <= WIdle;
     else begin
       unique case (st_q)
-        WIdle:  if (rec_valid_i) st_q <= WWalk;
+        WIdle:  if (rec_valid_i) st_q <= guard_i ? WNear : WWalk;
         WWalk:  if (last) st_q <= WDrain;
         WDrain: if (cnt_q == 3'(Drain - 1)) st_q <= WNorm;
         WNear:  st_q <= WNear2;
@@ -121,7 +123,7 @@ module tu_ewa_walk (
 
   always_ff @(posedge clk_i) begin
     if (st_q == WIdle && rec_valid_i) begin
-      lev_q <= level_i;   fl_q <= flags_i;
+      lev_q <= level_i;   fl_q <= flags_i;      guard_q <= guard_i;
       x0_q <= x0_i;       x1_q <= x1_i;      y1_q <= y1_i;
       cu_q <= cu_i;       cv_q <= cv_i;      box_q <= box_i;
       dxi_q <= dxi_i;     deta_q <= deta_i;  dxiy_q <= dxiy_i;  detay_q <= detay_i;
@@ -259,7 +261,7 @@ module tu_ewa_walk (
   assign level_o     = lev_q;
   assign visited_o   = box_q;
   assign inside_o    = ins_q;
-  assign flags_o     = fl_q | {(wsum_q == '0), 4'b0};
+  assign flags_o     = fl_q | {(wsum_q == '0 && !guard_q), 4'b0};
 
   logic unused;
   assign unused = ^{hs_unused, x0_q[0]};

@@ -1,4 +1,5 @@
-// Bilinear filter at level 0 through the texel port (the HasEwa = 0 path of tu_texture_unit),
+// Bilinear filter at level 0 through the texel port (the HasEwa = 0 path of tu_texture_unit;
+// a B1-guard pixel: the texture's mean, texel (0, 0) of the 1x1 top level, as render_cmodel),
 // exactly tex::bilinear(t, 0, u, v): position u - 1/2, x0 = floor, weight fx = its TexUvF-bit
 // fraction (TexWeightF = TexUvF), per channel round_half_up(((c00 (1-fx) + c10 fx)(1-fy) +
 // (c01 (1-fx) + c11 fx) fy)). Four reads, one per clock (1-cycle read latency): 6 cycles from
@@ -10,6 +11,7 @@ module tu_bilinear (
   output logic                                in_ready_o,
   input  logic [tu_formats_pkg::PerspUvW-1:0] u_i,
   input  logic [tu_formats_pkg::PerspUvW-1:0] v_i,
+  input  logic                                guard_i,  // B1 guard: texel (0, 0) of the 1x1 top level
   input  logic [tu_formats_pkg::TexAddrW-1:0] base_i,
   input  logic [3:0]                          lw_i,
   input  logic [3:0]                          lh_i,
@@ -29,7 +31,7 @@ module tu_bilinear (
   logic signed [UW-1:0]                x0_q, y0_q;
   logic [F:0]                          fx_q, fy_q;
   logic [tu_formats_pkg::TexAddrW-1:0] base_q;
-  logic [3:0]                          lw_q, lh_q;
+  logic [3:0]                          lw_q, lh_q, lev_q;
   logic                                clamp_q;
   logic [31:0]                         c_q [3];
   logic signed [UW-1:0]                su, sv;
@@ -43,7 +45,7 @@ module tu_bilinear (
   assign rx = x0_q + ((st_q == 3'd2 || st_q == 3'd4) ? UW'(1) : UW'(0));
   assign ry = y0_q + ((st_q == 3'd3 || st_q == 3'd4) ? UW'(1) : UW'(0));
   tu_texel_addr #(.CoordW(UW)) u_addr (
-    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .clamp_i(clamp_q), .level_i(4'd0),
+    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .clamp_i(clamp_q), .level_i(lev_q),
     .x_i(rx), .y_i(ry), .addr_o(tex_addr_o)
   );
 
@@ -74,10 +76,17 @@ module tu_bilinear (
   end
   always_ff @(posedge clk_i) begin
     if (in_valid_i && in_ready_o) begin
-      x0_q    <= su >>> F;
-      y0_q    <= sv >>> F;
-      fx_q    <= (F+1)'(su[F-1:0]);
-      fy_q    <= (F+1)'(sv[F-1:0]);
+      // guard: weights (1, 0) on texel (0, 0) of the top level reproduce that texel exactly
+      if (guard_i) begin  // (if/else: an unsigned '0 in a ?: would make >>> logical)
+        x0_q <= '0;
+        y0_q <= '0;
+      end else begin
+        x0_q <= su >>> F;
+        y0_q <= sv >>> F;
+      end
+      fx_q    <= guard_i ? '0 : (F+1)'(su[F-1:0]);
+      fy_q    <= guard_i ? '0 : (F+1)'(sv[F-1:0]);
+      lev_q   <= guard_i ? (lw_i > lh_i ? lw_i : lh_i) : 4'd0;
       base_q  <= base_i;
       lw_q    <= lw_i;
       lh_q    <= lh_i;

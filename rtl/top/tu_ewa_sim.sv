@@ -38,7 +38,7 @@ module tu_ewa_sim #(
   logic [31:0]                         tex_data;
   tu_ewa u_ewa (
     .clk_i, .rst_ni, .in_valid_i, .in_ready_o, .u_i, .v_i, .ae_i, .ce_i, .be_i, .lmaj_i, .lmin_i,
-    .lod_i, .eflags_i, .base_i, .lw_i, .lh_i, .clamp_i, .wsrc_i, .cap_i,
+    .lod_i, .eflags_i, .guard_i(1'b0), .base_i, .lw_i, .lh_i, .clamp_i, .wsrc_i, .cap_i,
     .tex_req_o(tex_req), .tex_addr_o(tex_addr), .tex_data_i(tex_data),
     .out_valid_o, .out_ready_i, .rgba_o, .level_o, .visited_o, .inside_o, .flags_o
   );

@@ -220,7 +220,7 @@ module tu_texture_unit #(
     tu_ewa u_ewa (
       .clk_i, .rst_ni, .in_valid_i(fq_valid && os_in_ready), .in_ready_o(flt_in_ready),
       .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
-      .lod_i(f_lod), .eflags_i(f_eflags), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh),
+      .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh),
       .clamp_i(f_clamp), .wsrc_i(f_wsrc), .cap_i(f_cap),
       .tex_req_o, .tex_addr_o, .tex_data_i,
       .out_valid_o(flt_valid), .out_ready_i(out_ready_i && os_valid),
@@ -229,13 +229,13 @@ module tu_texture_unit #(
   end else begin : g_bilinear
     tu_bilinear u_bil (
       .clk_i, .rst_ni, .in_valid_i(fq_valid && os_in_ready), .in_ready_o(flt_in_ready),
-      .u_i(f_u), .v_i(f_v), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh), .clamp_i(f_clamp),
+      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh), .clamp_i(f_clamp),
       .tex_req_o, .tex_addr_o, .tex_data_i,
       .out_valid_o(flt_valid), .out_ready_i(out_ready_i && os_valid), .rgba_o
     );
-    assign level_o   = '0;
+    assign level_o   = '0;  // level and texel counts: the C model's records (not compared there)
     assign visited_o = tu_formats_pkg::EwaCountW'(4);
-    assign inside_o  = tu_formats_pkg::EwaCountW'(4);
+    assign inside_o  = '0;
     assign flags_o   = '0;
     logic unused_ewa;
     assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_wsrc, f_cap};

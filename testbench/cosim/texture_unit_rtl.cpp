@@ -68,7 +68,7 @@ void drive(V& d, const Row& r) {
 
 template <class V>
 Row sample(V& d) {
-  return Row{d.x_o, d.y_o, d.rgba_o, d.level_o, d.visited_o, d.inside_o, d.flags_o};
+  return Row{d.x_o, d.y_o, d.rgba_o, d.level_o, d.visited_o, d.inside_o, d.flags_o, d.eflags_o};
 }
 
 // log2(max anisotropy) as B2's laniso input, as the C-model engine sets it.
@@ -162,8 +162,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         ewa::fx::In in;
         in.b2 = ellipse::fx::analytic(ellipse::fx::make_in(k, px, y, static_cast<uint32_t>(r[kLaniso]),
                                                            static_cast<uint32_t>(top)));
-        costs.push_back(ewa::pixel_cost(in, static_cast<int>(rec.lod), rec.flags,
-                                        static_cast<uint64_t>(rec.texels), top));
+        ewa::PixelCost pc = ewa::pixel_cost(in, static_cast<int>(rec.lod), rec.ewa_flags,
+                                            static_cast<uint64_t>(rec.texels), top);
+        pc.guard = persp::Unit::pixel(persp::Unit::direct(k, px, y)).flag;
+        costs.push_back(pc);
       }
       x = x1 + 1;
     }
@@ -204,22 +206,24 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     rec.lod = static_cast<double>(q[3]);
     rec.texels = static_cast<int>(q[4]);
     rec.texels_inside = static_cast<int>(q[5]);
-    rec.flags = static_cast<uint32_t>(q[6]);
+    rec.ewa_flags = o.has_ewa ? static_cast<uint32_t>(q[6]) : 0;
+    rec.b2_flags = static_cast<uint32_t>(q[7]);
     if (i < expect.pixels.size()) {
       const auto& e = expect.pixels[i];
       rec.object = e.object, rec.u = e.u, rec.v = e.v;
-      const bool same = rec.x == e.x && rec.y == e.y && rec.color == e.color &&
+      const bool same = rec.x == e.x && rec.y == e.y && rec.color == e.color && rec.b2_flags == e.b2_flags &&
                         (!o.has_ewa || (rec.lod == e.lod && rec.texels == e.texels &&
-                                        rec.texels_inside == e.texels_inside && rec.flags == e.flags));
+                                        rec.texels_inside == e.texels_inside && rec.ewa_flags == e.ewa_flags));
       if (!same) {
         if (out.mismatches == 0) {
           char buf[256];
           std::snprintf(buf, sizeof buf,
-                        "pixel %zu (%d,%d): RTL (%d,%d) rgba %d %d %d %d level %g texels %d/%d flags %u; "
-                        "C model rgba %d %d %d %d level %g texels %d/%d flags %u",
+                        "pixel %zu (%d,%d): RTL (%d,%d) rgba %d %d %d %d level %g texels %d/%d flags %u/%u; "
+                        "C model rgba %d %d %d %d level %g texels %d/%d flags %u/%u",
                         i, e.x, e.y, rec.x, rec.y, rec.color.r, rec.color.g, rec.color.b, rec.color.a,
-                        rec.lod, rec.texels, rec.texels_inside, rec.flags, e.color.r, e.color.g,
-                        e.color.b, e.color.a, e.lod, e.texels, e.texels_inside, e.flags);
+                        rec.lod, rec.texels, rec.texels_inside, rec.b2_flags, rec.ewa_flags, e.color.r,
+                        e.color.g, e.color.b, e.color.a, e.lod, e.texels, e.texels_inside, e.b2_flags,
+                        e.ewa_flags);
           out.first_mismatch = buf;
         }
         ++out.mismatches;

@@ -33,12 +33,7 @@ int max_channel_err(const img::Rgba8& a, const tex::RgbaF& r) {
 }
 
 efx::Local local(double major, double aniso, double theta, double u = 37.3, double v = -81.9) {
-  efx::Local l;
-  l.q = 0.5;
-  const double c = std::cos(theta), s = std::sin(theta), minor = aniso > 0 ? major / aniso : 0;
-  l.ux = c * major, l.vx = s * major, l.uy = -s * minor, l.vy = c * minor;
-  l.u = u, l.v = v;
-  return l;
+  return footprint_local(major, aniso, theta, u, v);
 }
 
 TEST(EwaFx, Tables) {

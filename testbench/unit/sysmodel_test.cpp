@@ -154,8 +154,12 @@ TEST(Sysmodel, RejectsMalformedPipelines) {
 namespace {
 
 TEST(Sysmodel, DefaultSceneStreamCoversEveryPixelOnce) {
-  const auto s = tu::scene::default_scene();
-  const auto frame = tu::render::render_cmodel(s);
+  // The default scene's geometry at 128 x 96: every span kind, a fraction of the C-model time
+  // (the full scene: `texunit sysmodel default`).
+  auto s = tu::scene::default_scene();
+  s.camera.width = 128;
+  s.camera.height = 96;
+  const auto frame = tu::render::render_cmodel(s, tu::scene::Filter::Ewa);
   const auto wl = scene_workload(s, frame);
   ASSERT_FALSE(wl.spans.empty());
   ASSERT_EQ(wl.pixels.size(), frame.pixels.size());
@@ -174,7 +178,7 @@ TEST(Sysmodel, DefaultSceneStreamCoversEveryPixelOnce) {
   std::vector<tu::ewa::PixelCost> costs;
   for (const auto& p : wl.pixels) {
     walked += p.texels;
-    costs.push_back({static_cast<int>(p.levels), p.texels, p.no_weight});
+    costs.push_back({static_cast<int>(p.levels), p.texels, p.no_weight, p.guard});
   }
   const auto r = simulate(texture_unit(), wl);
   // The filter walks one texel per clock with one pixel in flight: it bounds the run from below.

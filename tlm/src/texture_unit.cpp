@@ -11,6 +11,12 @@
 
 namespace tu::sysmodel {
 
+namespace {
+ewa::PixelCost cost_of(const PixelWork& w) {
+  return {static_cast<int>(w.levels), w.texels, w.no_weight, w.guard};
+}
+}  // namespace
+
 Workload scene_workload(const scene::Scene& s, const render::Frame& frame) {
   const auto cov = render::visibility(s);
   const int w = s.camera.width;
@@ -35,8 +41,10 @@ Workload scene_workload(const scene::Scene& s, const render::Frame& frame) {
       const auto& rec = frame.pixels[i];
       PixelWork p;
       p.texels = static_cast<uint32_t>(rec.texels);
-      p.levels = static_cast<uint32_t>(rec.levels);
-      p.no_weight = rec.levels > 0 && (rec.flags & ewa::fx::kNoWeight) != 0;
+      // In an EWA render only B1-guard pixels skip the filter (no levels tried).
+      p.guard = rec.levels == 0;
+      p.levels = static_cast<uint32_t>(std::max(rec.levels, 1));
+      p.no_weight = (rec.ewa_flags & ewa::fx::kNoWeight) != 0;
       wl.pixels.push_back(p);
     }
   }
@@ -83,7 +91,7 @@ Pipeline texture_unit(const UnitConfig& c) {
   s.capacity = 1, s.fifo_depth = c.pixel_fifo, s.link_latency = 1, s.release = 1;
   s.work = Work::Levels;
   s.timing = [ep](const PixelWork& w) {
-    const int n = ewa::setup_cycles(static_cast<int>(std::max(w.levels, 1u)), ep);
+    const int n = ewa::setup_cycles(cost_of(w), ep);
     return Timing{n, n + 1};
   };
   p.stages.push_back(s);
@@ -91,7 +99,7 @@ Pipeline texture_unit(const UnitConfig& c) {
   s.name = "ewa_walk";
   s.capacity = 1, s.direct = true, s.fifo_depth = 1, s.work = Work::Texels;
   s.timing = [](const PixelWork& w) {
-    const int n = ewa::walk_cycles(ewa::PixelCost{static_cast<int>(std::max(w.levels, 1u)), w.texels, w.no_weight});
+    const int n = ewa::walk_cycles(cost_of(w));
     return Timing{n, n + 1};  // output valid and taken in its last clock, free the clock after
   };
   p.stages.push_back(s);

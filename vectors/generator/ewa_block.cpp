@@ -55,14 +55,8 @@ const tex::Texture& texture() {
   return t;
 }
 
-efx::Local local(double major, double aniso, double theta, double u, double v) {
-  efx::Local l;
-  l.q = 0.5;
-  const double c = std::cos(theta), s = std::sin(theta), minor = aniso > 0 ? major / aniso : 0;
-  l.ux = c * major, l.vx = s * major, l.uy = -s * minor, l.vy = c * minor;
-  l.u = u, l.v = v;
-  return l;
-}
+using ewa::fx::footprint_local;
+constexpr auto local = footprint_local;
 Row row(const efx::Local& l, int w, uint32_t cap = 1024, uint32_t laniso = 4 << fmt::kEllLogF,
         uint32_t max_lod = 8) {
   return row_of({ewa::fx::in_from_local(l, laniso, max_lod), {static_cast<ewa::fx::Weights>(w), cap}});

@@ -6,6 +6,7 @@
 //   hand   : h_i = max(a_i + S, walker free); the set-up accepts again at h_i + 1
 //   walker : output valid at o_i = h_i + 1 + box_i + 5 + 6 (empty weight sum: + 5 + 1 + 2),
 //            taken at once, free again at o_i + 1
+//   B1-guard pixel (texture unit): S = 1, output valid at h_i + 3
 // (I = EwaCordIter CORDIC iterations, U = iterations per clock, R/S = square-root clocks.)
 #pragma once
 
@@ -27,13 +28,14 @@ struct PixelCost {
   int levels = 1;          // levels tried (1 + cap fallbacks)
   uint64_t box = 1;        // texels walked
   bool no_weight = false;  // empty weight sum: nearest-texel path
+  bool guard = false;      // B1 guard pixel (render engines): one texel, no set-up or walk
 };
 
 // Per-pixel counts of the C model's result.
 // in: the pixel's B2 outputs (lod, flags, lmaj); level, flags, box: the C model's result.
 PixelCost pixel_cost(const fx::In& in, int level, uint32_t flags, uint64_t box, int top_level);
 
-int setup_cycles(int levels, const EngineParams& p = {});
+int setup_cycles(const PixelCost& c, const EngineParams& p = {});
 int walk_cycles(const PixelCost& c);  // hand-over to output valid
 
 // Clock cycles from the first input offered (cycle 0, arriving at the engine at `first_arrival`;

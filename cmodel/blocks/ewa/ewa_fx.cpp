@@ -302,6 +302,15 @@ In in_from_local(const ellipse::fx::Local& l, uint32_t laniso, uint32_t max_lod)
   return in;
 }
 
+ellipse::fx::Local footprint_local(double major, double aniso, double theta, double u, double v) {
+  ellipse::fx::Local l;
+  l.q = 0.5;
+  const double c = std::cos(theta), s = std::sin(theta), minor = aniso > 0 ? major / aniso : 0;
+  l.ux = c * major, l.vx = s * major, l.uy = -s * minor, l.vy = c * minor;
+  l.u = u, l.v = v;
+  return l;
+}
+
 In random_in(std::mt19937_64& rng) {
   auto l = ellipse::fx::random_local(rng);
   std::uniform_real_distribution<double> pos(-1024, 1024);

@@ -129,6 +129,9 @@ In random_in(std::mt19937_64& rng);
 // The same pixel from a float local map (B1 output rounded to s.TexUvF, B2 analytic).
 In in_from_local(const ellipse::fx::Local& l, uint32_t laniso = 4 << fmt::kEllLogF,
                  uint32_t max_lod = 8);
+// A local map (q = 1/2) whose footprint has the given major semi-axis (texels per pixel),
+// anisotropy (0: a line) and major-axis angle, centred at (u, v) texels: curated test pixels.
+ellipse::fx::Local footprint_local(double major, double aniso, double theta, double u, double v);
 // Float reference on the same B2 outputs: semi-axes 2^lmaj, 2^lmin, the conic's direction in
 // double; horizon / point footprints -> unit disc (ewa_ref.hpp filter_axes).
 Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels);

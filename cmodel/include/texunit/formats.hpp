@@ -126,7 +126,7 @@
   X(EwaDW, 16, "offsets du, dv from the centre: signed, EwaPosF fraction bits")               \
   X(EwaHW, 15, "half extents hu, hv (rounded up + margin): unsigned, EwaPosF fraction bits")  \
   X(EwaXiW, 32, "xi, eta = k . (du, dv): signed, EwaKF + EwaPosF fraction bits (exact)")      \
-  X(EwaQW, 63, "Q = xi^2 + eta^2 and its increments: unsigned, 2 (EwaKF + EwaPosF) frac, exact") \
+  X(EwaQW, 63, "Q = xi^2 + eta^2, ddQ: unsigned; dQ: signed EwaQW+1; 2 (EwaKF + EwaPosF) frac, exact") \
   X(EwaCountW, 17, "texel counters (box, inside) and the max_texels cap: unsigned integers") \
   X(EwaWsumW, 33, "weight sum: unsigned, GaussSqF fraction bits (exact)")                      \
   X(EwaAccW, 41, "per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)")       \

@@ -21,8 +21,9 @@ struct PixelRecord {
   double lod = 0;       // mip level used (EWA: the walk's level; trilinear: the blend position)
   int texels = 0;       // texels read
   int texels_inside = 0;  // EWA: texels with a non-zero weight (cycle-independent count)
-  uint32_t flags = 0;     // C-model engine: EWA flags (ewa_fx.hpp), else B2 flags (ellipse_fx.hpp)
-  int levels = 0;         // C-model engine, EWA: mip levels tried (1 + texel-cap raises); else 0
+  uint32_t b2_flags = 0;   // C-model engine: B2 flags (ellipse_fx.hpp; kHorizon = B1 guard)
+  uint32_t ewa_flags = 0;  // C-model engine, EWA: ewa::fx flags (ewa_fx.hpp)
+  int levels = 0;          // C-model engine, EWA: mip levels the set-up tried (ewa::pixel_cost)
   img::Rgba8 color;
 };
 

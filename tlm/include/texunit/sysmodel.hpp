@@ -31,6 +31,7 @@ struct PixelWork {
   uint32_t steps = 0;    // relief: march steps (0: no relief on this pixel)
   bool relief = false;   // the pixel's material has relief (it enters the relief unit)
   bool no_weight = false;  // EWA: no texel had weight (the walker's nearest-texel fallback)
+  bool guard = false;      // B1 guard: no texture coordinates, the filter's short path
 };
 
 // A run of covered pixels on one scanline of one triangle: the unit of set-up.

@@ -11,9 +11,9 @@
 namespace tu::sysmodel {
 
 // Spans of a scene: per row, maximal runs of consecutive covered pixels of one triangle, in
-// row-major order (the order the render engines feed the unit). `frame` (render_cmodel: the
-// bit-accurate C model) supplies the per-pixel work: texels walked, levels tried, empty weight
-// sum; its pixels are the covered pixels, row-major, and must match the coverage.
+// row-major order (the order the render engines feed the unit). `frame` (render_cmodel with the
+// EWA filter, as the RTL render engine uses it) supplies the per-pixel work: texels walked,
+// levels tried, empty weight sum, B1 guard; its pixels are the covered pixels, row-major.
 Workload scene_workload(const scene::Scene& s, const render::Frame& frame);
 
 // Buffer depths of the unit (the RTL's FIFOs).
