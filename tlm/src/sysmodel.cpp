@@ -1,4 +1,4 @@
-// SystemC kernel side of the system model: Source -> Stage ... Stage -> Sink over sc_fifos.
+// SystemC kernel side of the system model: Source -> Stage ... Stage over sc_fifos.
 #include <systemc>
 
 #include <algorithm>
@@ -47,8 +47,10 @@ struct Source : sc_core::sc_module {
   }
 };
 
-// One block: an accept thread (waits for room and input, issues an item every ii cycles) and an
-// emit thread (hands each item downstream in order once its latency has passed, waiting for room).
+// One block. Pipelines (capacity > 1): an accept thread (waits for room and input, issues an item
+// every ii cycles) and an emit thread (hands each item downstream in order once its latency has
+// passed, waiting for room). A one-item block does both in one thread (fewer context switches,
+// the same times).
 struct Stage : sc_core::sc_module {
   sc_core::sc_fifo_in<Token> in;
   sc_core::sc_fifo_out<Token> out;
@@ -57,6 +59,8 @@ struct Stage : sc_core::sc_module {
   BlockStats& st;
   sc_time next_link;  // registers between this stage and the next
   bool next_direct;   // the link to the next stage has no buffer
+  bool last;          // the unit's output: nobody reads `out`, we count the pixels here
+  uint64_t delivered = 0, last_cycle = 0;
   std::deque<std::pair<Token, sc_time>> flight;
   sc_core::sc_event pushed, freed;
 
@@ -64,16 +68,18 @@ struct Stage : sc_core::sc_module {
   Stage(sc_core::sc_module_name n, const StageSpec& s, const Workload& w, BlockStats& stats,
         const StageSpec* next)
       : sc_module(n), spec(s), wl(w), st(stats),
-        next_link((next ? next->link_latency : 0) * kClk), next_direct(next && next->direct) {
+        next_link((next ? next->link_latency : 0) * kClk), next_direct(next && next->direct),
+        last(!next) {
     SC_THREAD(accept);
-    SC_THREAD(emit);
+    if (spec.capacity > 1) SC_THREAD(emit);
   }
 
-  void wait_room() {
-    while (static_cast<int>(flight.size()) >= spec.capacity) wait(freed);
+  void wait_until(const sc_time& t) {
+    if (t > sc_core::sc_time_stamp()) wait(t - sc_core::sc_time_stamp());
   }
 
-  void issue(const Token& t) {
+  // Latency and ii of one item; accounts it in the statistics.
+  Timing account(const Token& t) {
     int lat = spec.lat0, ii = spec.ii0;
     if (!t.span) {
       const PixelWork& p = wl.pixels[t.idx];
@@ -93,22 +99,54 @@ struct Stage : sc_core::sc_module {
     ii = std::max(ii, 1);  // a block takes at most one item per clock
     ++st.items;
     st.busy += static_cast<uint64_t>(ii);
-    flight.emplace_back(t, sc_core::sc_time_stamp() + lat * kClk);
-    pushed.notify();  // immediate: the emit thread re-checks the queue, nothing is lost
-    wait(ii * kClk);
+    return {lat, ii};
+  }
+
+  // Hands t downstream (the item's output handshake), then waits out the slot's release.
+  void hand(Token t) {
+    if (last) {
+      // In order, one output per pixel: anything else is a model error, not a measurement.
+      if (t.span || t.idx != delivered)
+        throw std::logic_error("sysmodel: unit output " + std::string(t.span ? "span " : "pixel ") +
+                               std::to_string(t.idx) + ", expected pixel " + std::to_string(delivered));
+      ++delivered;
+      last_cycle = cycles(sc_core::sc_time_stamp());
+      return;
+    }
+    t.ready = sc_core::sc_time_stamp() + next_link;
+    const sc_time t0 = sc_core::sc_time_stamp();
+    out.write(t);
+    // A direct link has no storage: the item is ours until the consumer has read it.
+    while (next_direct && out->num_free() == 0) wait(out->data_read_event());
+    st.stalled += cycles(sc_core::sc_time_stamp() - t0);
+    if (spec.release > 0) wait(spec.release * kClk);
+  }
+
+  void issue(const Token& t) {
+    const Timing tm = account(t);
+    const sc_time start = sc_core::sc_time_stamp();
+    if (spec.capacity == 1) {
+      wait_until(start + tm.latency * kClk);
+      hand(t);
+    } else {
+      while (static_cast<int>(flight.size()) >= spec.capacity) wait(freed);
+      flight.emplace_back(t, start + tm.latency * kClk);
+      pushed.notify();  // immediate: the emit thread re-checks the queue, nothing is lost
+    }
+    wait_until(start + tm.ii * kClk);
   }
 
   void accept() {
     for (;;) {
-      wait_room();
+      while (static_cast<int>(flight.size()) >= spec.capacity) wait(freed);
       const sc_time t0 = sc_core::sc_time_stamp();
       Token t = in.read();
-      if (t.ready > sc_core::sc_time_stamp()) wait(t.ready - sc_core::sc_time_stamp());
+      wait_until(t.ready);
       st.starved += cycles(sc_core::sc_time_stamp() - t0);
       if (spec.expand && t.span) {
         const Span& s = wl.spans[t.idx];
         for (uint32_t k = 0; k < s.count; ++k) {
-          wait_room();
+          while (static_cast<int>(flight.size()) >= spec.capacity) wait(freed);
           issue(Token{s.first + k, false, SC_ZERO_TIME});
         }
       } else {
@@ -120,36 +158,10 @@ struct Stage : sc_core::sc_module {
   void emit() {
     for (;;) {
       while (flight.empty()) wait(pushed);
-      Token t = flight.front().first;
-      const sc_time due = flight.front().second;
-      if (due > sc_core::sc_time_stamp()) wait(due - sc_core::sc_time_stamp());
-      t.ready = sc_core::sc_time_stamp() + next_link;
-      const sc_time t0 = sc_core::sc_time_stamp();
-      out.write(t);
-      // A direct link has no storage: the item is ours until the consumer has read it.
-      while (next_direct && out->num_free() == 0) wait(out->data_read_event());
-      st.stalled += cycles(sc_core::sc_time_stamp() - t0);
-      if (spec.release > 0) wait(spec.release * kClk);
+      wait_until(flight.front().second);
+      hand(flight.front().first);
       flight.pop_front();
       freed.notify();
-    }
-  }
-};
-
-struct Sink : sc_core::sc_module {
-  sc_core::sc_fifo_in<Token> in;
-  uint64_t expected, got = 0, last = 0;
-  SC_HAS_PROCESS(Sink);
-  Sink(sc_core::sc_module_name n, uint64_t exp) : sc_module(n), expected(exp) { SC_THREAD(run); }
-  void run() {
-    for (;;) {
-      const Token t = in.read();
-      // In-order, one output per pixel: anything else is a model error, not a measurement.
-      if (t.span || t.idx != got)
-        throw std::logic_error("sysmodel: sink received " + std::string(t.span ? "span " : "pixel ") +
-                               std::to_string(t.idx) + ", expected pixel " + std::to_string(got));
-      last = cycles(sc_core::sc_time_stamp());
-      ++got;
     }
   }
 };
@@ -213,11 +225,12 @@ Result simulate(const Pipeline& p, const Workload& w) {
     std::vector<std::unique_ptr<sc_core::sc_fifo<Token>>> fifos;
     std::vector<std::unique_ptr<Stage>> stages;
     Source src("source", w);
-    Sink sink("sink", w.pixels.size());
     for (size_t i = 0; i < p.stages.size(); ++i)
       fifos.push_back(std::make_unique<sc_core::sc_fifo<Token>>(
           ("fifo_" + p.stages[i].name).c_str(), p.stages[i].fifo_depth));
-    fifos.push_back(std::make_unique<sc_core::sc_fifo<Token>>("fifo_sink", 1));
+    // The unit's output is never read (the last stage counts it): room for every pixel.
+    fifos.push_back(std::make_unique<sc_core::sc_fifo<Token>>(
+        "fifo_out", static_cast<int>(std::max<size_t>(1, w.pixels.size()))));
     src.out(*fifos[0]);
     for (size_t i = 0; i < p.stages.size(); ++i) {
       const StageSpec* next = i + 1 < p.stages.size() ? &p.stages[i + 1] : nullptr;
@@ -225,14 +238,14 @@ Result simulate(const Pipeline& p, const Workload& w) {
       stages.back()->in(*fifos[i]);
       stages.back()->out(*fifos[i + 1]);
     }
-    sink.in(*fifos.back());
     const auto t0 = std::chrono::steady_clock::now();
-    sc_core::sc_start();  // runs until no process can move: every pixel has reached the sink
+    sc_core::sc_start();  // runs until no process can move: every pixel has left the unit
     r.sim_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (sink.got != w.pixels.size())
-      throw std::logic_error("sysmodel: " + std::to_string(sink.got) + " of " +
-                             std::to_string(w.pixels.size()) + " pixels reached the sink");
-    r.total_cycles = sink.last;
+    const Stage& out = *stages.back();
+    if (out.delivered != w.pixels.size())
+      throw std::logic_error("sysmodel: " + std::to_string(out.delivered) + " of " +
+                             std::to_string(w.pixels.size()) + " pixels left the unit");
+    r.total_cycles = out.last_cycle;
   }
   return r;
 }
