@@ -7,6 +7,8 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "ewa/ewa_cycles.hpp"
+#include "texunit/formats.hpp"
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
 #include "texunit/texture_unit_model.hpp"
@@ -26,6 +28,14 @@ CLI::App* add_sysmodel(CLI::App& app, SysmodelArgs& a) {
   c->add_option("SCENE", a.scene, "scene JSON file, or 'default' for the embedded scene")->required();
   c->add_option("--fifo-depth", a.fifo_depth, "pixels buffered between B2 and the filter")
       ->check(CLI::Range(1, 1024));
+  c->add_option("--cord-unroll", a.cord_unroll, "EWA set-up: CORDIC iterations per clock (divides EwaCordIter)")
+      ->check(CLI::Range(1, tu::fmt::kEwaCordIter) & CLI::Validator([](std::string& v) {
+        return tu::fmt::kEwaCordIter % std::stoi(v) ? std::string("must divide EwaCordIter") : std::string();
+      }, "DIVISOR"));
+  c->add_option("--sqrt-step", a.sqrt_step, "EWA set-up: square-root bits per clock (divides the root width)")
+      ->check(CLI::Range(1, tu::ewa::EngineParams{}.root_w) & CLI::Validator([](std::string& v) {
+        return tu::ewa::EngineParams{}.root_w % std::stoi(v) ? std::string("must divide the root width") : std::string();
+      }, "DIVISOR"));
   c->add_option("--engine-compare", a.compare,
                  "also render the scene through the RTL (Verilator) in this process: both cycle totals, ratios")
       ->check(CLI::IsMember({"rtl"}));
@@ -42,6 +52,8 @@ int run_sysmodel(const SysmodelArgs& a) {
   const double work_s = seconds_since(t0);
   sysmodel::UnitConfig cfg;
   cfg.pixel_fifo = a.fifo_depth;
+  cfg.ewa.cord_unroll = a.cord_unroll;
+  cfg.ewa.sqrt_step = a.sqrt_step;
   auto r = sysmodel::simulate(sysmodel::texture_unit(cfg), wl);
   const double model_s = seconds_since(t0);
   // Speed: the fastest of three identical runs (a short run is easily disturbed by other load).
@@ -53,9 +65,11 @@ int run_sysmodel(const SysmodelArgs& a) {
   cosim::RtlRender rtl;
   double rtl_s = 0;
   if (a.compare == "rtl") {
-    if (a.fifo_depth != 4)
-      throw std::invalid_argument("--engine-compare rtl: the RTL top is built with FifoDepth 4, not " +
-                                  std::to_string(a.fifo_depth));
+    const ewa::EngineParams rtl_ewa;
+    if (a.fifo_depth != 4 || a.cord_unroll != rtl_ewa.cord_unroll || a.sqrt_step != rtl_ewa.sqrt_step)
+      throw std::invalid_argument("--engine-compare rtl: the RTL top is built with FifoDepth 4, CordUnroll " +
+                                  std::to_string(rtl_ewa.cord_unroll) + ", SqrtStep " +
+                                  std::to_string(rtl_ewa.sqrt_step) + "; drop the what-if options");
     const auto t1 = std::chrono::steady_clock::now();
     rtl = cosim::render_rtl(s);
     rtl_s = seconds_since(t1);

@@ -9,6 +9,7 @@ struct SysmodelArgs {
   std::string scene, compare;
   bool json = false;
   int fifo_depth = 4;
+  int cord_unroll = 2, sqrt_step = 4;  // tu_ewa CordUnroll, SqrtStep (what-if: the RTL uses 2, 4)
 };
 
 // `texunit sysmodel SCENE|default [--engine-compare rtl] [--json]` (docs/systemc.md).
