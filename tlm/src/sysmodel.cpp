@@ -60,16 +60,17 @@ struct Stage : sc_core::sc_module {
   sc_time next_link;  // registers between this stage and the next
   bool next_direct;   // the link to the next stage has no buffer
   bool last;          // the unit's output: nobody reads `out`, we count the pixels here
+  uint64_t n_in, n_out;  // items it will accept and hand on: its threads return after them
   uint64_t delivered = 0, last_cycle = 0;
   std::deque<std::pair<Token, sc_time>> flight;
   sc_core::sc_event pushed, freed;
 
   SC_HAS_PROCESS(Stage);
   Stage(sc_core::sc_module_name n, const StageSpec& s, const Workload& w, BlockStats& stats,
-        const StageSpec* next)
+        const StageSpec* next, uint64_t items_in, uint64_t items_out)
       : sc_module(n), spec(s), wl(w), st(stats),
         next_link((next ? next->link_latency : 0) * kClk), next_direct(next && next->direct),
-        last(!next) {
+        last(!next), n_in(items_in), n_out(items_out) {
     SC_THREAD(accept);
     if (spec.capacity > 1) SC_THREAD(emit);
   }
@@ -136,8 +137,10 @@ struct Stage : sc_core::sc_module {
     wait_until(start + tm.ii * kClk);
   }
 
+  // Every thread returns once its items are through (no process is left blocked: a clean end,
+  // and no coroutine frames are abandoned under AddressSanitizer).
   void accept() {
-    for (;;) {
+    for (uint64_t n = 0; n < n_in; ++n) {
       while (static_cast<int>(flight.size()) >= spec.capacity) wait(freed);
       const sc_time t0 = sc_core::sc_time_stamp();
       Token t = in.read();
@@ -156,7 +159,7 @@ struct Stage : sc_core::sc_module {
   }
 
   void emit() {
-    for (;;) {
+    for (uint64_t n = 0; n < n_out; ++n) {
       while (flight.empty()) wait(pushed);
       wait_until(flight.front().second);
       hand(flight.front().first);
@@ -220,6 +223,8 @@ Result simulate(const Pipeline& p, const Workload& w) {
   r.pixels = w.pixels.size();
   r.blocks.resize(p.stages.size());
   for (size_t i = 0; i < p.stages.size(); ++i) r.blocks[i].name = p.stages[i].name;
+  size_t expander = 0;
+  while (!p.stages[expander].expand) ++expander;
   Context ctx;
   {
     std::vector<std::unique_ptr<sc_core::sc_fifo<Token>>> fifos;
@@ -233,7 +238,11 @@ Result simulate(const Pipeline& p, const Workload& w) {
     src.out(*fifos[0]);
     for (size_t i = 0; i < p.stages.size(); ++i) {
       const StageSpec* next = i + 1 < p.stages.size() ? &p.stages[i + 1] : nullptr;
-      stages.push_back(std::make_unique<Stage>(p.stages[i].name.c_str(), p.stages[i], w, r.blocks[i], next));
+      // Spans up to the expanding stage, pixels from its output on.
+      const uint64_t n_in = i <= expander ? w.spans.size() : w.pixels.size();
+      const uint64_t n_out = i < expander ? w.spans.size() : w.pixels.size();
+      stages.push_back(std::make_unique<Stage>(p.stages[i].name.c_str(), p.stages[i], w, r.blocks[i], next,
+                                               n_in, n_out));
       stages.back()->in(*fifos[i]);
       stages.back()->out(*fifos[i + 1]);
     }
