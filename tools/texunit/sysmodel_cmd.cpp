@@ -87,6 +87,7 @@ int run_sysmodel(const SysmodelArgs& a) {
     if (a.compare == "rtl") {
       j["rtl"] = {{"cycles", rtl.cycles}, {"sim_seconds", rtl.sim_wall_s}, {"seconds", rtl_s},
                   {"mismatches", rtl.mismatches}, {"ok", rtl.ok()}};
+      j["model_cycles"] = model_cycles;  // total_cycles + 1: counted like the RTL
       j["cycle_ratio"] = cycle_ratio;
       j["speed_ratio_sim"] = speed_sim;
       j["speed_ratio_total"] = speed_all;
