@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "ellipse/ellipse_fx.hpp"
+#include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
 #include "texunit/render.hpp"
 
@@ -104,6 +105,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           rec.texels = static_cast<int>(r.texels_visited);
           rec.texels_inside = static_cast<int>(r.texels_inside);
           rec.ewa_flags = r.flags;
+          rec.levels = ewa::pixel_cost(in, r.level, r.flags, r.texels_visited, top).levels;
           break;
         }
       }

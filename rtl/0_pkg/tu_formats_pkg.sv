@@ -82,9 +82,11 @@ package tu_formats_pkg;
   localparam int unsigned TexWeightF = 8;  // bilinear weights out of 2^TexWeightF (truncated from TexUvF bits)
   localparam int unsigned TexLodF = 8;  // LOD fraction bits: trilinear blend weight
   localparam int unsigned TexMaxLevels = 13;  // mip levels: up to 4096 texels on a side
+  localparam int unsigned TexAddrW = 26;  // texel RAM word address (RGBA8 words, all levels of several textures)
   localparam int unsigned PerspLatency = 8;  // per-pixel pipeline latency in cycles, II = 1
   localparam int unsigned EllNumW = 48;  // derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac
   localparam int unsigned EllNumF = 32;
+  localparam int unsigned EllNxW = 112;  // exact numerators (span set-up, tu_texture_unit): signed, 2 PerspF frac, |n| < 2^30
   localparam int unsigned EllDetW = 40;  // det3 of the 3x3 map (per triangle): signed normalised mantissa
   localparam int unsigned EllDetExpW = 8;  // det3 exponent: signed, det3 = dm * 2^(dexp - (EllDetW - 2))
   localparam int unsigned EllCoefW = 64;  // Ae', Ce' (unsigned), Be' (signed) codes: exact sums >> EllEexp (floor)

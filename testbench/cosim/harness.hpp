@@ -48,10 +48,21 @@ class Harness {
  public:
   using Drive = std::function<void(V&, const Row&)>;
   using Sample = std::function<Row(V&)>;
+  // Optional preload during reset (e.g. a texture into a RAM model's write port): may set ports
+  // and call tick(); must leave the preload ports idle.
+  using Init = std::function<void(V&, const std::function<void()>& tick)>;
 
-  Harness(Drive drive, Sample sample) : drive_(std::move(drive)), sample_(std::move(sample)) {}
+  Harness(Drive drive, Sample sample, Init init = {})
+      : drive_(std::move(drive)), sample_(std::move(sample)), init_(std::move(init)) {}
 
-  RunResult run(const std::vector<Row>& inputs, const RunOptions& opt) {
+  // fanout[i] (default 1): outputs input i produces (e.g. the pixels of a span).
+  RunResult run(const std::vector<Row>& inputs, const RunOptions& opt,
+                const std::vector<uint64_t>& fanout = {}) {
+    uint64_t expected = inputs.size();
+    if (!fanout.empty()) {
+      expected = 0;
+      for (uint64_t n : fanout) expected += n;
+    }
     auto ctx = std::make_unique<VerilatedContext>();
     ctx->traceEverOn(!opt.fst_path.empty());
     V dut(ctx.get());
@@ -79,19 +90,20 @@ class Harness {
     if (!inputs.empty()) drive_(dut, inputs[0]);
     dut.eval();
     for (int i = 0; i < 4; ++i) tick();
+    if (init_) init_(dut, tick);
     dut.rst_ni = 1;
     dut.eval();
 
     std::mt19937_64 rng(opt.seed);
     std::bernoulli_distribution stall(opt.stall_prob);
     RunResult res;
-    res.outputs.reserve(inputs.size());
+    res.outputs.reserve(expected);
     size_t next = 0;        // next input to offer
     uint64_t pending = 0;   // accepted, not yet answered
     bool offering = false;  // in_valid held high for inputs[next]
     uint64_t idle = 0;
     const uint64_t t0 = t;
-    while (res.outputs.size() < inputs.size()) {
+    while (res.outputs.size() < expected) {
       // Decide this cycle's input offer: once offered, hold until accepted.
       if (!offering && next < inputs.size() && !stall(rng)) offering = true;
       dut.in_valid_i = offering ? 1 : 0;
@@ -105,8 +117,8 @@ class Harness {
       tick();
       bool progress = false;
       if (fire_in) {
+        pending += fanout.empty() ? 1 : fanout[next];
         ++next;
-        ++pending;
         offering = false;
         progress = true;
       }
@@ -154,6 +166,7 @@ class Harness {
     if (!inputs.empty()) drive_(dut, inputs[0]);
     dut.eval();
     for (int i = 0; i < 4; ++i) tick();
+    if (init_) init_(dut, tick);
     dut.rst_ni = 1;
     dut.eval();
     uint64_t cyc = 0, first_accept = 0, last_accept = 0, first_out = 0;
@@ -187,6 +200,7 @@ class Harness {
  private:
   Drive drive_;
   Sample sample_;
+  Init init_;
 };
 
 }  // namespace tu::cosim

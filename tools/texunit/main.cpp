@@ -12,6 +12,7 @@
 #include "pom/relief_quality.hpp"
 #include "cosim.hpp"
 #include "render_cmd.hpp"
+#include "sysmodel_cmd.hpp"
 #include "report.hpp"
 #include "texunit/rtl_gen.hpp"
 #include "vector_file.hpp"
@@ -106,7 +107,7 @@ int cmd_relief_quality(const tu::pom::QualityParams& p) {
 
 // Main job: every block with RTL co-simulated on its golden, stiff and random sets with 30% stalls
 // (one table), then the default scene rendered through the float reference with every filter.
-// (The C-model and RTL render engines join when the EWA unit lands.)
+// Then the C-model and the RTL render engines (texture-unit top == C model on every pixel).
 int cmd_demo(uint64_t count, const std::string& out_dir) {
   std::printf("%-12s %-7s %9s %9s %10s %11s %10s %8s %4s %10s\n", "block", "set", "vectors",
               "outputs", "mismatch", "max_ulp", "rms_err", "latency", "II", "cycles");
@@ -133,7 +134,7 @@ int cmd_demo(uint64_t count, const std::string& out_dir) {
   }
   std::printf("%s\n", ok ? "RTL == C model on every vector (30% random stalls, in order, none lost)"
                           : "MISMATCH: RTL and C model disagree (see above)");
-  tu::cli::demo_render(out_dir);
+  ok = tu::cli::demo_render(out_dir) && ok;
   return ok ? 0 : 1;
 }
 
@@ -202,11 +203,14 @@ int main(int argc, char** argv) {
 
   tu::cli::RenderArgs render_args;
   auto* rnd = tu::cli::add_render(app, render_args);
+  tu::cli::SysmodelArgs sysmodel_args;
+  auto* sysm = tu::cli::add_sysmodel(app, sysmodel_args);
 
   CLI11_PARSE(app, argc, argv);
   try {
     if (*vec) return cmd_vectors(block, set, count, seed, out);
     if (*rnd) return tu::cli::run_render(render_args);
+    if (*sysm) return tu::cli::run_sysmodel(sysmodel_args);
     if (*cos) return cmd_cosim(block, file, stall, seed, fst, json);
     if (*gen) return cmd_gen_rtl(root, check);
     if (*rep) return tu::report::run(rep_blocks, rep_json, rep_plots, root);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "texture_unit_rtl.hpp"
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
 
@@ -17,7 +18,12 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
   r->add_option("SCENE", a.scene, "scene JSON file, or 'default' for the embedded scene")->required();
   r->add_option("--out", a.out_dir, "output directory (created if missing)")->required();
   r->add_option("--dump", a.dump, "CSV: one row per covered pixel (x,y,u,v,lod,texels,r,g,b,a)");
-  r->add_option("--engine", a.engine, "rendering engine")->check(CLI::IsMember({"ref", "cmodel"}));
+  r->add_option("--engine", a.engine,
+                 "rendering engine: float reference, bit-accurate C model, or the Verilated "
+                 "texture-unit RTL (ewa or bilinear only; compared with the C model pixel by pixel)")
+      ->check(CLI::IsMember({"ref", "cmodel", "rtl"}));
+  r->add_option("--weights", a.weights, "override every material's EWA weight source")
+      ->check(CLI::IsMember({"formula", "table1d", "table2d"}));
   r->add_option("--filter", a.filter, "override every material's filter")
       ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa"}));
   return r;
@@ -30,10 +36,40 @@ int run_render(const RenderArgs& a) {
   if (a.filter == "bilinear") f = scene::Filter::Bilinear;
   if (a.filter == "trilinear") f = scene::Filter::Trilinear;
   if (a.filter == "ewa") f = scene::Filter::Ewa;
+  std::optional<scene::WeightSource> w;
+  if (a.weights == "formula") w = scene::WeightSource::Formula;
+  if (a.weights == "table1d") w = scene::WeightSource::Table1d;
+  if (a.weights == "table2d") w = scene::WeightSource::Table2d;
   // Everything is computed before any file is written: a failure leaves no partial output.
   render::CmodelOptions opt;
   opt.progress = true;
-  const render::Frame frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt) : render::render_ref(s, f);
+  opt.weights = w;
+  render::Frame frame;
+  bool ok = true;
+  if (a.engine == "rtl") {
+    if (f && *f != scene::Filter::Ewa && *f != scene::Filter::Bilinear)
+      throw std::invalid_argument("--engine rtl: the RTL texture unit filters with ewa (HasEwa = 1) or "
+                                  "bilinear (HasEwa = 0), not " + a.filter);
+    cosim::RtlRenderOptions ro;
+    ro.has_ewa = !(f && *f == scene::Filter::Bilinear);
+    ro.weights = w;
+    const auto r = cosim::render_rtl(s, ro);
+    frame = r.frame;
+    ok = r.ok();
+    std::printf("rtl %s: %zu pixels in %llu spans, %llu mismatches against the C model%s%s\n",
+                ro.has_ewa ? "ewa" : "bilinear", r.frame.pixels.size(), (unsigned long long)r.spans,
+                (unsigned long long)r.mismatches, r.first_mismatch.empty() ? "" : "; first: ",
+                r.first_mismatch.c_str());
+    const double n = static_cast<double>(std::max<size_t>(1, r.frame.pixels.size()));
+    std::printf("cycles measured %llu (%.2f/pixel)", (unsigned long long)r.cycles, double(r.cycles) / n);
+    if (ro.has_ewa)
+      std::printf(", predicted %llu (%.2f/pixel, %+.2f %%)", (unsigned long long)r.predicted_cycles,
+                  double(r.predicted_cycles) / n,
+                  100.0 * (double(r.predicted_cycles) / double(std::max<uint64_t>(1, r.cycles)) - 1));
+    std::printf("; simulated %.0f RTL pixels/s (%.2f s)\n", n / r.sim_wall_s, r.sim_wall_s);
+  } else {
+    frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt) : render::render_ref(s, f);
+  }
   std::filesystem::create_directories(a.out_dir);
   const std::string png = (std::filesystem::path(a.out_dir) / (a.engine + ".png")).string();
   img::write_png_rgba(png, frame.image);
@@ -47,15 +83,17 @@ int run_render(const RenderArgs& a) {
     render::write_dump_csv(a.dump, frame);
     std::cerr << "wrote " << a.dump << "\n";
   }
-  return 0;
+  return ok ? 0 : 1;
 }
 
 namespace {
 // The demo's C-model rows: every filter (EWA with each weight source) against the float EWA frame.
 void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir);
+// The demo's RTL rows: the texture-unit top == the C-model engine on every pixel.
+bool demo_render_rtl(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir);
 }  // namespace
 
-void demo_render(const std::string& out_dir) {
+bool demo_render(const std::string& out_dir) {
   const scene::Scene s = scene::default_scene();
   const scene::Filter filters[] = {scene::Filter::Nearest, scene::Filter::Bilinear,
                                    scene::Filter::Trilinear, scene::Filter::Ewa};
@@ -89,6 +127,7 @@ void demo_render(const std::string& out_dir) {
                 seconds[i], png.c_str());
   }
   demo_render_cmodel(s, ewa, out_dir);
+  return demo_render_rtl(s, ewa, out_dir);
 }
 
 namespace {
@@ -127,6 +166,46 @@ void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, con
     std::printf("%-12s %9.2f dB %13.2f %13s %12.0f  %s\n", r.name, tex::psnr(fr.image, ewa_ref.image),
                 texels / n, inside_txt, n / sec, png.c_str());
   }
+}
+
+bool demo_render_rtl(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir) {
+  struct Row {
+    const char* name;
+    bool has_ewa;
+    scene::WeightSource weights;
+  };
+  const Row rows[] = {{"ewa_formula", true, scene::WeightSource::Formula},
+                      {"ewa_table1d", true, scene::WeightSource::Table1d},
+                      {"ewa_table2d", true, scene::WeightSource::Table2d},
+                      {"bilinear", false, scene::WeightSource::Formula}};
+  std::printf("\ndefault scene through the Verilated texture unit (rtl/top/tu_texture_unit.sv: spans ->"
+              " B1 -> B2 -> filter), every pixel compared with the C-model engine, no stalls:\n");
+  std::printf("%-12s %8s %10s %11s %13s %13s %9s %12s  %s\n", "filter", "pixels", "mismatch",
+              "PSNR vs EWA", "cycles/pixel", "predicted", "error", "RTL pixel/s", "image");
+  bool ok = true;
+  for (const auto& r : rows) {
+    cosim::RtlRenderOptions o;
+    o.has_ewa = r.has_ewa;
+    o.weights = r.weights;
+    const auto res = cosim::render_rtl(s, o);
+    ok = ok && res.ok();
+    const auto png = (std::filesystem::path(out_dir) / (std::string("rtl_") + r.name + ".png")).string();
+    img::write_png_rgba(png, res.frame.image);
+    const double n = static_cast<double>(std::max<size_t>(1, res.frame.pixels.size()));
+    char pred[32] = "-", err[32] = "-";
+    if (r.has_ewa) {
+      std::snprintf(pred, sizeof pred, "%.3f", double(res.predicted_cycles) / n);
+      std::snprintf(err, sizeof err, "%+.3f %%",
+                    100.0 * (double(res.predicted_cycles) / double(std::max<uint64_t>(1, res.cycles)) - 1));
+    }
+    std::printf("%-12s %8zu %10llu %8.2f dB %13.3f %13s %9s %12.0f  %s\n", r.name, res.frame.pixels.size(),
+                (unsigned long long)res.mismatches, tex::psnr(res.frame.image, ewa_ref.image),
+                double(res.cycles) / n, pred, err, n / res.sim_wall_s, png.c_str());
+    if (!res.ok()) std::printf("  first mismatch: %s\n", res.first_mismatch.c_str());
+  }
+  std::printf("%s\n", ok ? "RTL texture unit == C model on every pixel"
+                          : "MISMATCH: RTL texture unit and C model disagree (see above)");
+  return ok;
 }
 }  // namespace
 

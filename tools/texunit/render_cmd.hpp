@@ -6,7 +6,7 @@
 namespace tu::cli {
 
 struct RenderArgs {
-  std::string scene, out_dir, dump, engine = "ref", filter;
+  std::string scene, out_dir, dump, engine = "ref", filter, weights;
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);
@@ -14,6 +14,8 @@ int run_render(const RenderArgs& a);  // throws on bad scenes and unwritable out
 
 // The main job's render part: the default scene through the float reference with every filter,
 // PNGs (one per filter, plus error heat maps against EWA) in out_dir, and a table on stdout.
-void demo_render(const std::string& out_dir);
+// Also pushes the default scene through the Verilated texture-unit top (EWA with each weight
+// source, and the bilinear-only top); false when an RTL pixel differs from the C model.
+bool demo_render(const std::string& out_dir);
 
 }  // namespace tu::cli

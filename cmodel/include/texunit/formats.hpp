@@ -93,10 +93,12 @@
   X(TexWeightF, 8, "bilinear weights out of 2^TexWeightF (truncated from TexUvF bits)")     \
   X(TexLodF, 8, "LOD fraction bits: trilinear blend weight")                                 \
   X(TexMaxLevels, 13, "mip levels: up to 4096 texels on a side")                             \
+  X(TexAddrW, 26, "texel RAM word address (RGBA8 words, all levels of several textures)")     \
   X(PerspLatency, 8, "per-pixel pipeline latency in cycles, II = 1")                          \
   /* Ellipse parameters and LOD (docs/blocks/ellipse.md) */                                    \
   X(EllNumW, 48, "derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac") \
   X(EllNumF, 32, "")                                                                            \
+  X(EllNxW, 112, "exact numerators (span set-up, tu_texture_unit): signed, 2 PerspF frac, |n| < 2^30") \
   X(EllDetW, 40, "det3 of the 3x3 map (per triangle): signed normalised mantissa")            \
   X(EllDetExpW, 8, "det3 exponent: signed, det3 = dm * 2^(dexp - (EllDetW - 2))")              \
   X(EllCoefW, 64, "Ae', Ce' (unsigned), Be' (signed) codes: exact sums >> EllEexp (floor)")     \

@@ -23,6 +23,7 @@ struct PixelRecord {
   int texels_inside = 0;  // EWA: texels with a non-zero weight (cycle-independent count)
   uint32_t b2_flags = 0;   // C-model engine: B2 flags (ellipse_fx.hpp; kHorizon = B1 guard)
   uint32_t ewa_flags = 0;  // C-model engine, EWA: ewa::fx flags (ewa_fx.hpp)
+  int levels = 0;          // C-model engine, EWA: mip levels the set-up tried (ewa::pixel_cost)
   img::Rgba8 color;
   int relief_n = 0;     // relief materials: layers N of the material's method (0: no relief)
 };

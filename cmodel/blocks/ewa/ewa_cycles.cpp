@@ -1,0 +1,45 @@
+#include "ewa_cycles.hpp"
+
+#include <algorithm>
+
+namespace tu::ewa {
+
+PixelCost pixel_cost(const fx::In& in, int level, uint32_t flags, uint64_t box, int top_level) {
+  // First level tried: the unit disc starts at 0, otherwise the integer lod clamped to the top.
+  int l0 = 0;
+  if (!(flags & fx::kUnitDisc)) l0 = std::min(static_cast<int>(in.b2.lod >> fmt::kEllLodF), top_level);
+  return {level - l0 + 1, box, (flags & fx::kNoWeight) != 0};
+}
+
+int setup_cycles(const PixelCost& c, const EngineParams& p) {
+  if (c.guard) return 1;  // ACCEPT -> HAND
+  const int levels = c.levels;
+  const int cordic = 2 * (fmt::kEwaCordIter / p.cord_unroll);
+  const int per_level = 6 + p.root_w / p.sqrt_step;  // AX EXP MUL SQ ROOT.. BOX CAP
+  return 2 + cordic + levels * per_level + 2;         // ACCEPT PRE ... START1 START2
+}
+
+int walk_cycles(const PixelCost& c) {
+  if (c.guard) return 3;  // hand-over, read, data
+  // hand-over clock, one clock per texel, 5 drain clocks (weight pipeline + accumulate), then
+  // normalisation (6: mantissa + 4 reciprocal stages + round) or the nearest texel (1 + 2).
+  return 1 + static_cast<int>(c.box) + 5 + (c.no_weight ? 3 : 6);
+}
+
+uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival,
+                       const EngineParams& p) {
+  uint64_t setup_free = first_arrival, walker_free = 0, last_out = 0;
+  for (const PixelCost& c : px) {
+    const uint64_t a = setup_free;                                   // accept
+    const uint64_t h = std::max(a + static_cast<uint64_t>(setup_cycles(c, p)), walker_free);
+    const uint64_t o = h + static_cast<uint64_t>(walk_cycles(c));    // output valid and taken
+    setup_free = h + 1;
+    walker_free = o + 1;
+    last_out = o;
+  }
+  return px.empty() ? 0 : last_out + 1;
+}
+
+int texture_unit_front_latency() { return 2 + 1 + fmt::kPerspLatency + 1; }
+
+}  // namespace tu::ewa

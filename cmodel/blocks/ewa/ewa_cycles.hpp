@@ -1,0 +1,51 @@
+// Cycle model of the EWA RTL (rtl/ewa/tu_ewa.sv, docs/blocks/ewa.md "RTL"): exact clock counts
+// of a pixel stream with no back-pressure, from the C model's per-pixel counts (levels tried,
+// box texels, empty weight sum). The engine is a set-up unit and a walker joined by a one-record
+// hand-over, so pixel i+1's set-up overlaps pixel i's walk:
+//   set-up : accept a_i, record ready at a_i + S(levels_i), S(n) = 2 + 2 I/U + n (6 + R/S) + 2
+//   hand   : h_i = max(a_i + S, walker free); the set-up accepts again at h_i + 1
+//   walker : output valid at o_i = h_i + 1 + box_i + 5 + 6 (empty weight sum: + 5 + 1 + 2),
+//            taken at once, free again at o_i + 1
+//   B1-guard pixel (texture unit): S = 1, output valid at h_i + 3
+// (I = EwaCordIter CORDIC iterations, U = iterations per clock, R/S = square-root clocks.)
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ewa/ewa_fx.hpp"
+
+namespace tu::ewa {
+
+// RTL structure parameters (tu_ewa CordUnroll, SqrtStep) and the fixed stage counts.
+struct EngineParams {
+  int cord_unroll = 2;
+  int sqrt_step = 4;
+  int root_w = 16;  // radicand root bits (tu_ewa_setup RootW)
+};
+
+struct PixelCost {
+  int levels = 1;          // levels tried (1 + cap fallbacks)
+  uint64_t box = 1;        // texels walked
+  bool no_weight = false;  // empty weight sum: nearest-texel path
+  bool guard = false;      // B1 guard pixel (render engines): one texel, no set-up or walk
+};
+
+// Per-pixel counts of the C model's result.
+// in: the pixel's B2 outputs (lod, flags, lmaj); level, flags, box: the C model's result.
+PixelCost pixel_cost(const fx::In& in, int level, uint32_t flags, uint64_t box, int top_level);
+
+int setup_cycles(const PixelCost& c, const EngineParams& p = {});
+int walk_cycles(const PixelCost& c);  // hand-over to output valid
+
+// Clock cycles from the first input offered (cycle 0, arriving at the engine at `first_arrival`;
+// later pixels are always waiting) to the cycle after the last output: what the co-simulation
+// harness measures as sim_cycles with no stalls.
+uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival = 0,
+                       const EngineParams& p = {});
+
+// Front-end latency of tu_texture_unit: span accepted at cycle 0 -> first pixel at the EWA
+// engine's input: span set-up (2) + expander register (1) + B1 (PerspLatency) + FIFO (1).
+int texture_unit_front_latency();
+
+}  // namespace tu::ewa

@@ -1,0 +1,40 @@
+// Synchronous FIFO, valid/ready on both sides, Depth entries (power of two), registered storage.
+// Decouples the fixed-latency B1/B2 pipelines from the data-dependent filter engine.
+module tu_fifo #(
+  parameter int unsigned Width = 8,
+  parameter int unsigned Depth = 4
+) (
+  input  logic             clk_i,
+  input  logic             rst_ni,
+  input  logic             in_valid_i,
+  output logic             in_ready_o,
+  input  logic [Width-1:0] in_data_i,
+  output logic             out_valid_o,
+  input  logic             out_ready_i,
+  output logic [Width-1:0] out_data_o
+);
+  localparam int unsigned PtrW = $clog2(Depth);
+  logic [Width-1:0] mem_q [Depth];
+  logic [PtrW-1:0]  wr_q, rd_q;
+  logic [PtrW:0]    cnt_q;
+  logic             push, pop;
+  assign in_ready_o  = cnt_q != (PtrW+1)'(Depth);
+  assign out_valid_o = cnt_q != '0;
+  assign out_data_o  = mem_q[rd_q];
+  assign push = in_valid_i && in_ready_o;
+  assign pop  = out_valid_o && out_ready_i;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      wr_q  <= '0;
+      rd_q  <= '0;
+      cnt_q <= '0;
+    end else begin
+      if (push) wr_q <= wr_q + PtrW'(1);
+      if (pop)  rd_q <= rd_q + PtrW'(1);
+      cnt_q <= cnt_q + (PtrW+1)'(push) - (PtrW+1)'(pop);
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (push) mem_q[wr_q] <= in_data_i;
+  end
+endmodule

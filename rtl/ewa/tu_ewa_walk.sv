@@ -1,0 +1,268 @@
+// EWA texel walk, accumulation and normalisation (B5 steps 4-5 of ewa::fx::walk), bit-exact with
+// cmodel/blocks/ewa/ewa_fx.cpp (docs/blocks/ewa.md "RTL"). One texel per clock:
+//   P0 issue   (x, y) row-major over the box; Q, xi, eta by first/second differences along x and,
+//              at each row start, along y (exact integers: the same values as the C model's direct
+//              row starts)
+//   P1         inside = Q < 1; Q code (u16.14, floor), xi, eta codes (s16.14, floor); texel address
+//   P1..P5     weight: formula (tu_gauss_weight, 3 + 1 pad) | 1-D table (3 + 1) | 2-D table (4),
+//              selected at run time by wsrc; texel read issued at P4 (1-cycle RAM)
+//   P5         w = inside ? weight : 0; acc_c += w texel_c, wsum += w, inside count += (w > 0)
+// then normalisation: wsum leading-one normalised to EwaNrmW bits, tu_recip_core (4 stages),
+// channel = min(255, round_half_up(acc_c R 2^-(RecipOutF + p))); wsum = 0 -> the nearest texel
+// at level L (flag kNoWeight).
+// Cycles per pixel from the record hand-over (no back-pressure): 1 + box + 5 + 6, output valid in
+// the last (wsum = 0: 1 + box + 5 + 1 + 2; B1-guard record: 1 + 2, the single texel).
+module tu_ewa_walk (
+  input  logic                                     clk_i,
+  input  logic                                     rst_ni,
+  input  logic                                     rec_valid_i,
+  output logic                                     rec_ready_o,
+  input  logic [3:0]                               level_i,
+  input  logic [4:0]                               flags_i,
+  input  logic                                     guard_i,  // B1 guard: texel (0, 0) of level_i
+  input  logic signed [31:0]                       x0_i,
+  input  logic signed [31:0]                       x1_i,
+  input  logic signed [31:0]                       y0_i,
+  input  logic signed [31:0]                       y1_i,
+  input  logic [tu_formats_pkg::EwaCountW-1:0]     box_i,
+  input  logic signed [31:0]                       cu_i,
+  input  logic signed [31:0]                       cv_i,
+  input  logic signed [tu_formats_pkg::EwaXiW-1:0] xi0_i,
+  input  logic signed [tu_formats_pkg::EwaXiW-1:0] eta0_i,
+  input  logic signed [tu_formats_pkg::EwaXiW-1:0] dxi_i,
+  input  logic signed [tu_formats_pkg::EwaXiW-1:0] deta_i,
+  input  logic signed [tu_formats_pkg::EwaXiW-1:0] dxiy_i,
+  input  logic signed [tu_formats_pkg::EwaXiW-1:0] detay_i,
+  input  logic signed [63:0]                       q0_i,
+  input  logic signed [63:0]                       dq0_i,
+  input  logic signed [63:0]                       ddq_i,
+  input  logic signed [63:0]                       ey0_i,
+  input  logic signed [63:0]                       ddqy_i,
+  input  logic signed [63:0]                       dqy_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0]      base_i,
+  input  logic [3:0]                               lw_i,
+  input  logic [3:0]                               lh_i,
+  input  logic                                     clamp_i,
+  input  logic [1:0]                               wsrc_i,
+  output logic                                     tex_req_o,
+  output logic [tu_formats_pkg::TexAddrW-1:0]      tex_addr_o,
+  input  logic [31:0]                              tex_data_i,
+  output logic                                     out_valid_o,
+  input  logic                                     out_ready_i,
+  output logic [31:0]                              rgba_o,
+  output logic [3:0]                               level_o,
+  output logic [tu_formats_pkg::EwaCountW-1:0]     visited_o,
+  output logic [tu_formats_pkg::EwaCountW-1:0]     inside_o,
+  output logic [4:0]                               flags_o
+);
+  localparam int unsigned XiW  = tu_formats_pkg::EwaXiW;
+  localparam int unsigned PosF = tu_formats_pkg::EwaPosF;
+  localparam int unsigned QF   = 2 * (tu_formats_pkg::EwaKF + PosF);
+  localparam int unsigned GQW  = tu_formats_pkg::GaussQW;
+  localparam int unsigned GXW  = tu_formats_pkg::GaussXiW;
+  localparam int unsigned WW   = tu_formats_pkg::GaussSqW;     // weight codes (u17.16)
+  localparam int unsigned WsW  = tu_formats_pkg::EwaWsumW;
+  localparam int unsigned AcW  = tu_formats_pkg::EwaAccW;
+  localparam int unsigned NrW  = tu_formats_pkg::EwaNrmW;
+  localparam int unsigned MW   = tu_formats_pkg::RecipMantW;
+  localparam int unsigned RW   = tu_formats_pkg::RecipOutW;
+  localparam int unsigned NW   = tu_formats_pkg::EwaCountW;
+  localparam int unsigned AW   = tu_formats_pkg::TexAddrW;
+  localparam int unsigned Drain = 5;
+  localparam int unsigned NormCycles = 6;
+
+  typedef enum logic [2:0] {WIdle, WWalk, WDrain, WNear, WNear2, WNorm, WOut} state_e;
+  state_e st_q;
+  logic [2:0] cnt_q;
+
+  // ---- record
+  logic [3:0]          lev_q;
+  logic [4:0]          fl_q;
+  logic                guard_q;
+  logic signed [31:0]  x0_q, x1_q, y1_q, cu_q, cv_q;
+  logic [NW-1:0]       box_q;
+  logic signed [XiW-1:0] dxi_q, deta_q, dxiy_q, detay_q;
+  logic signed [63:0]  ddq_q, ddqy_q, dqy_q;
+  logic [AW-1:0]       base_q;
+  logic [3:0]          lw_q, lh_q;
+  logic                clamp_q;
+  logic [1:0]          wsrc_q;
+  // ---- walk state: current texel and row start
+  logic signed [31:0]    x_q, y_q;
+  logic signed [63:0]    q_q, dq_q, qr_q, dqr_q, er_q;
+  logic signed [XiW-1:0] xi_q, eta_q, xir_q, etar_q;
+
+  assign rec_ready_o = st_q == WIdle;
+  logic issue, row_end, last;
+  assign issue   = st_q == WWalk;
+  assign row_end = x_q == x1_q;
+  assign last    = row_end && y_q == y1_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) st_q <= WIdle;
+    else begin
+      unique case (st_q)
+        WIdle:  if (rec_valid_i) st_q <= guard_i ? WNear : WWalk;
+        WWalk:  if (last) st_q <= WDrain;
+        WDrain: if (cnt_q == 3'(Drain - 1)) st_q <= WNorm;
+        WNear:  st_q <= WNear2;
+        WNear2: st_q <= WOut;
+        // the last accumulation lands at the end of the drain: wsum is final in WNorm's first clock
+        WNorm:  if (cnt_q == '0 && wsum_q == '0) st_q <= WNear;
+                else if (cnt_q == 3'(NormCycles - 1)) st_q <= WOut;
+        WOut:   if (out_ready_i) st_q <= WIdle;
+        default: st_q <= WIdle;
+      endcase
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (st_q != WDrain && st_q != WNorm) cnt_q <= '0;
+    else if (st_q == WDrain && cnt_q == 3'(Drain - 1)) cnt_q <= '0;
+    else cnt_q <= cnt_q + 3'd1;
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (st_q == WIdle && rec_valid_i) begin
+      lev_q <= level_i;   fl_q <= flags_i;      guard_q <= guard_i;
+      x0_q <= x0_i;       x1_q <= x1_i;      y1_q <= y1_i;
+      cu_q <= cu_i;       cv_q <= cv_i;      box_q <= box_i;
+      dxi_q <= dxi_i;     deta_q <= deta_i;  dxiy_q <= dxiy_i;  detay_q <= detay_i;
+      ddq_q <= ddq_i;     ddqy_q <= ddqy_i;  dqy_q <= dqy_i;
+      base_q <= base_i;   lw_q <= lw_i;      lh_q <= lh_i;      clamp_q <= clamp_i;
+      wsrc_q <= wsrc_i;
+      x_q <= x0_i;        y_q <= y0_i;
+      q_q <= q0_i;        dq_q <= dq0_i;     xi_q <= xi0_i;     eta_q <= eta0_i;
+      qr_q <= q0_i;       dqr_q <= dq0_i;    er_q <= ey0_i;     xir_q <= xi0_i;    etar_q <= eta0_i;
+    end else if (issue && !last) begin
+      if (!row_end) begin  // Heckbert along x
+        x_q   <= x_q + 32'sd1;
+        q_q   <= q_q + dq_q;
+        dq_q  <= dq_q + ddq_q;
+        xi_q  <= xi_q + dxi_q;
+        eta_q <= eta_q + deta_q;
+      end else begin       // next row: second differences along y
+        x_q    <= x0_q;
+        y_q    <= y_q + 32'sd1;
+        q_q    <= qr_q + er_q;
+        qr_q   <= qr_q + er_q;
+        er_q   <= er_q + ddqy_q;
+        dq_q   <= dqr_q + dqy_q;
+        dqr_q  <= dqr_q + dqy_q;
+        xi_q   <= xir_q + dxiy_q;
+        xir_q  <= xir_q + dxiy_q;
+        eta_q  <= etar_q + detay_q;
+        etar_q <= etar_q + detay_q;
+      end
+    end
+  end
+
+  // ---- P1: weight-unit inputs and the texel address
+  logic                  v1_q, in1_q;
+  logic [GQW-1:0]        qc1_q;
+  logic [GXW-1:0]        xic1_q, etac1_q;
+  logic [AW-1:0]         addr, addr_q [4];
+  logic                  in_q [2:5];
+  tu_texel_addr #(.CoordW(32)) u_addr (
+    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .clamp_i(clamp_q), .level_i(lev_q),
+    .x_i(st_q == WNear ? (cu_q + 32'sd32) >>> PosF : x_q),
+    .y_i(st_q == WNear ? (cv_q + 32'sd32) >>> PosF : y_q), .addr_o(addr)
+  );
+  always_ff @(posedge clk_i) begin
+    v1_q    <= issue;
+    in1_q   <= issue && q_q < (64'sd1 <<< QF);
+    qc1_q   <= GQW'(q_q >>> (QF - tu_formats_pkg::GaussQF));
+    xic1_q  <= GXW'(xi_q >>> (tu_formats_pkg::EwaKF + PosF - tu_formats_pkg::GaussXiF));
+    etac1_q <= GXW'(eta_q >>> (tu_formats_pkg::EwaKF + PosF - tu_formats_pkg::GaussXiF));
+    addr_q[0] <= addr;
+    for (int i = 1; i < 4; i++) addr_q[i] <= addr_q[i-1];
+    in_q[2] <= in1_q;
+    for (int i = 3; i <= 5; i++) in_q[i] <= in_q[i-1];
+  end
+  // the nearest-texel read (WNear) bypasses the delay line
+  assign tex_req_o  = 1'b1;
+  assign tex_addr_o = st_q == WNear ? addr : addr_q[3];
+
+  // ---- weights (all three sources run; the shorter pipelines are padded to 4)
+  logic [WW-1:0] w_f, w_f_q;
+  logic [tu_formats_pkg::WtabEntryW-1:0] w_1, w_1_q, w_2;
+  logic [5:0] hs_unused;
+  tu_gauss_weight u_wf (
+    .clk_i, .rst_ni, .in_valid_i(v1_q), .in_ready_o(hs_unused[0]), .q_i(qc1_q),
+    .out_valid_o(hs_unused[1]), .out_ready_i(1'b1), .w_o(w_f));
+  tu_weight_table_1d #(.Log2N(8)) u_w1 (
+    .clk_i, .rst_ni, .in_valid_i(v1_q), .in_ready_o(hs_unused[2]), .q_i(qc1_q),
+    .out_valid_o(hs_unused[3]), .out_ready_i(1'b1), .w_o(w_1));
+  tu_weight_table_2d #(.Log2N(5)) u_w2 (
+    .clk_i, .rst_ni, .in_valid_i(v1_q), .in_ready_o(hs_unused[4]), .xi_i(xic1_q), .eta_i(etac1_q),
+    .out_valid_o(hs_unused[5]), .out_ready_i(1'b1), .w_o(w_2));
+  always_ff @(posedge clk_i) begin
+    w_f_q <= w_f;
+    w_1_q <= w_1;
+  end
+  logic [WW-1:0] w5;
+  always_comb begin
+    unique case (wsrc_q)
+      2'd1:    w5 = WW'(w_1_q);
+      2'd2:    w5 = WW'(w_2);
+      default: w5 = w_f_q;
+    endcase
+    if (!in_q[5]) w5 = '0;
+  end
+
+  // ---- P5: accumulate
+  logic [AcW-1:0] acc_q [4];
+  logic [WsW-1:0] wsum_q;
+  logic [NW-1:0]  ins_q;
+  always_ff @(posedge clk_i) begin
+    if (st_q == WIdle) begin
+      for (int c = 0; c < 4; c++) acc_q[c] <= '0;
+      wsum_q <= '0;
+      ins_q  <= '0;
+    end else if (st_q == WWalk || st_q == WDrain) begin
+      for (int c = 0; c < 4; c++) acc_q[c] <= acc_q[c] + AcW'(w5) * AcW'(tex_data_i[8*c +: 8]);
+      wsum_q <= wsum_q + WsW'(w5);
+      ins_q  <= ins_q + NW'(w5 != '0);
+    end
+  end
+
+  // ---- normalisation
+  logic [6:0]    p_d, p_q;
+  logic [NrW-1:0] m_d;
+  logic [MW-1:0] mant_q;
+  logic [RW-1:0] r;
+  always_comb begin
+    p_d = '0;
+    for (int i = 0; i < WsW; i++) if (wsum_q[i]) p_d = 7'(i);
+    m_d = (p_d >= 7'(NrW - 1)) ? NrW'(wsum_q >> (p_d - 7'(NrW - 1))) : NrW'(wsum_q << (7'(NrW - 1) - p_d));
+  end
+  always_ff @(posedge clk_i) begin
+    if (st_q == WNorm && cnt_q == 3'd0) begin
+      p_q    <= p_d;
+      mant_q <= MW'(m_d) << (MW - NrW);  // recip::eval: the msb of a positive code at bit MW-1
+    end
+  end
+  tu_recip_core u_core (.clk_i, .en_i(1'b1), .m_i(mant_q), .r_o(r));
+  logic [31:0] rgba_d;
+  always_comb begin
+    for (int c = 0; c < 4; c++) begin
+      logic [AcW+RW:0] pr;
+      logic [7:0]      sh;
+      sh = 8'(tu_formats_pkg::RecipOutF) + 8'(p_q);
+      pr = ((AcW+RW+1)'(acc_q[c]) * (AcW+RW+1)'(r) + ((AcW+RW+1)'(1) << (sh - 8'd1))) >> sh;
+      rgba_d[8*c +: 8] = pr > (AcW+RW+1)'(255) ? 8'd255 : pr[7:0];
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (st_q == WNorm && cnt_q == 3'(NormCycles - 1)) rgba_o <= rgba_d;
+    if (st_q == WNear2) rgba_o <= tex_data_i;
+  end
+  assign out_valid_o = st_q == WOut;
+  assign level_o     = lev_q;
+  assign visited_o   = box_q;
+  assign inside_o    = ins_q;
+  assign flags_o     = fl_q | {(wsum_q == '0 && !guard_q), 4'b0};
+
+  logic unused;
+  assign unused = ^{hs_unused, x0_q[0]};
+endmodule

@@ -1,0 +1,110 @@
+// Span -> pixel stream: holds one span [x0, x1] of row y and emits one pixel per clock (valid/
+// ready), x0 first. Per pixel it provides the tu_persp inputs (seeds, increments, offset n; the
+// unit accumulates itself), the B1 accumulator q of the pixel (q0 + n G, exact, for tu_ellipse),
+// and the B2 numerators: nux, nvx constant along the row, nuy -= m, nvy -= nn per pixel (exact),
+// each rounded half up to s(EllNumW).EllNumF and saturated (ellipse::fx::round_num).
+module tu_span_expand #(
+  parameter int unsigned SideW = 1
+) (
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+  input  logic                                in_valid_i,
+  output logic                                in_ready_o,
+  input  logic [tu_formats_pkg::PerspPW-1:0]  pu0_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]  pv0_i,
+  input  logic [tu_formats_pkg::PerspQW-1:0]  q0_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]  a_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]  d_i,
+  input  logic [tu_formats_pkg::PerspQW-1:0]  g_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]   nux_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]   nvx_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]   nuy_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]   nvy_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]   m_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]   nn_i,
+  input  logic [tu_formats_pkg::PerspXyW-1:0] x0_i,
+  input  logic [tu_formats_pkg::PerspXyW-1:0] x1_i,
+  input  logic [SideW-1:0]                    side_i,
+  output logic                                out_valid_o,
+  input  logic                                out_ready_i,
+  output logic [tu_formats_pkg::PerspPW-1:0]  pu0_o,
+  output logic [tu_formats_pkg::PerspPW-1:0]  pv0_o,
+  output logic [tu_formats_pkg::PerspQW-1:0]  q0_o,
+  output logic [tu_formats_pkg::PerspPW-1:0]  a_o,
+  output logic [tu_formats_pkg::PerspPW-1:0]  d_o,
+  output logic [tu_formats_pkg::PerspQW-1:0]  g_o,
+  output logic [tu_formats_pkg::PerspXyW-1:0] n_o,
+  output logic [tu_formats_pkg::PerspXyW-1:0] x_o,
+  output logic [tu_formats_pkg::PerspQW-1:0]  q_o,
+  output logic [tu_formats_pkg::EllNumW-1:0]  nux_o,
+  output logic [tu_formats_pkg::EllNumW-1:0]  nvx_o,
+  output logic [tu_formats_pkg::EllNumW-1:0]  nuy_o,
+  output logic [tu_formats_pkg::EllNumW-1:0]  nvy_o,
+  output logic [SideW-1:0]                    side_o
+);
+  localparam int unsigned NW  = tu_formats_pkg::EllNxW;
+  localparam int unsigned OW  = tu_formats_pkg::EllNumW;
+  localparam int unsigned Sh  = 2 * tu_formats_pkg::PerspF - tu_formats_pkg::EllNumF;
+  localparam int unsigned RsW = NW - Sh + 1;
+  localparam logic signed [RsW-1:0] OMax = (RsW'(1) <<< (OW - 1)) - RsW'(1);
+  localparam logic signed [RsW-1:0] OMin = -(RsW'(1) <<< (OW - 1));
+
+  // round half up by Sh bits, saturate to s(EllNumW)
+  function automatic logic [OW-1:0] round_num(input logic [NW-1:0] v);
+    logic signed [NW:0]    t;
+    logic signed [RsW-1:0] r;
+    t = $signed({v[NW-1], v}) + $signed((NW+1)'(1) << (Sh - 1));
+    r = RsW'(t >>> Sh);
+    if (r > OMax) round_num = OW'(OMax);
+    else if (r < OMin) round_num = OW'(OMin);
+    else round_num = OW'(r);
+  endfunction
+
+  logic                                busy_q, fire, last;
+  logic [tu_formats_pkg::PerspXyW-1:0] x_q, x0_q, x1_q;
+  logic [tu_formats_pkg::PerspQW-1:0]  q_q;
+  logic [NW-1:0]                       nux_q, nvx_q, nuy_q, nvy_q, m_q, nn_q;
+  assign fire        = busy_q && out_ready_i;
+  assign last        = x_q == x1_q;
+  assign in_ready_o  = !busy_q || (fire && last);
+  assign out_valid_o = busy_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) busy_q <= 1'b0;
+    else if (in_valid_i && in_ready_o) busy_q <= 1'b1;
+    else if (fire && last) busy_q <= 1'b0;
+  end
+  always_ff @(posedge clk_i) begin
+    if (in_valid_i && in_ready_o) begin
+      pu0_o  <= pu0_i;
+      pv0_o  <= pv0_i;
+      q0_o   <= q0_i;
+      a_o    <= a_i;
+      d_o    <= d_i;
+      g_o    <= g_i;
+      x_q    <= x0_i;
+      x0_q   <= x0_i;
+      x1_q   <= x1_i;
+      q_q    <= q0_i;
+      nux_q  <= nux_i;
+      nvx_q  <= nvx_i;
+      nuy_q  <= nuy_i;
+      nvy_q  <= nvy_i;
+      m_q    <= m_i;
+      nn_q   <= nn_i;
+      side_o <= side_i;
+    end else if (fire) begin
+      x_q   <= x_q + 1'b1;
+      q_q   <= q_q + g_o;
+      nuy_q <= nuy_q - m_q;
+      nvy_q <= nvy_q - nn_q;
+    end
+  end
+  assign n_o   = x_q - x0_q;
+  assign x_o   = x_q;
+  assign q_o   = q_q;
+  assign nux_o = round_num(nux_q);
+  assign nvx_o = round_num(nvx_q);
+  assign nuy_o = round_num(nuy_q);
+  assign nvy_o = round_num(nvy_q);
+endmodule

@@ -1,0 +1,246 @@
+// Texture unit top: B1 perspective divide -> B2 footprint -> B5 filter, one output per covered
+// pixel, valid/ready throughout (docs/blocks/ewa.md "RTL").
+//
+//   span in ─► fork ─► tu_persp_setup (2) ─┐                ┌─► tu_persp (8) ──┐
+//                  └─► tu_num_setup (2) ───┴► join ─► tu_span_expand ─► fork ─┼─► tu_ellipse (5) ─┼► join ─► tu_fifo ─► filter ─► pixel out
+//                                                                          └─► sideband FIFO ──┘
+// One input = one span [x0, x1] of row y covered by one triangle: the B1 quantised coefficients
+// A..I, the per-triangle B2 constants (numerator constants kux..kvy, m, nn and det3, exact, from
+// the triangle set-up; ellipse::fx), and the material: texture (base address in the texel RAM,
+// log2 size, wrap), EWA weight source and texel cap. The fixed-latency B1/B2 pipelines stall as a
+// whole; the FIFO in front of the data-dependent filter lets them run ahead by FifoDepth pixels.
+// The filter reads texels through a port with 1-cycle read latency (tu_texel_ram in simulation).
+module tu_texture_unit #(
+  parameter int unsigned HasEwa    = 1,  // 1: EWA engine (tu_ewa); 0: bilinear at level 0 only
+  parameter int unsigned FifoDepth = 4   // pixels buffered between B2 and the filter
+) (
+  input  logic                                  clk_i,
+  input  logic                                  rst_ni,
+  // span input
+  input  logic                                  in_valid_i,
+  output logic                                  in_ready_o,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    a_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    b_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    c_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    d_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    e_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    f_i,
+  input  logic [tu_formats_pkg::PerspQW-1:0]    g_i,
+  input  logic [tu_formats_pkg::PerspQW-1:0]    h_i,
+  input  logic [tu_formats_pkg::PerspQW-1:0]    i_i,
+  input  logic [tu_formats_pkg::PerspXyW-1:0]   x0_i,
+  input  logic [tu_formats_pkg::PerspXyW-1:0]   x1_i,
+  input  logic [tu_formats_pkg::PerspXyW-1:0]   y_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     kux_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     kvx_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     kuy_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     kvy_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     m_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     nn_i,
+  input  logic [tu_formats_pkg::EllDetW-1:0]    dm_i,
+  input  logic [tu_formats_pkg::EllDetExpW-1:0] dexp_i,
+  input  logic [tu_formats_pkg::EllAnisoW-1:0]  laniso_i,
+  input  logic [tu_formats_pkg::EllMaxLodW-1:0] maxlod_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0]   tbase_i,
+  input  logic [3:0]                            tlw_i,
+  input  logic [3:0]                            tlh_i,
+  input  logic                                  tclamp_i,
+  input  logic [1:0]                            wsrc_i,
+  input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
+  // texel port (1-cycle read latency)
+  output logic                                  tex_req_o,
+  output logic [tu_formats_pkg::TexAddrW-1:0]   tex_addr_o,
+  input  logic [31:0]                           tex_data_i,
+  // pixel output
+  output logic                                  out_valid_o,
+  input  logic                                  out_ready_i,
+  output logic [tu_formats_pkg::PerspXyW-1:0]   x_o,
+  output logic [tu_formats_pkg::PerspXyW-1:0]   y_o,
+  output logic [31:0]                           rgba_o,
+  output logic [3:0]                            level_o,
+  output logic [tu_formats_pkg::EwaCountW-1:0] visited_o,
+  output logic [tu_formats_pkg::EwaCountW-1:0] inside_o,
+  output logic [4:0]                            flags_o,   // filter flags (tu_ewa, ewa::fx::Flag)
+  output logic [4:0]                            eflags_o,  // B2 flags
+  output logic [1:0]                            pflags_o   // B1: {span set-up overflow, guard}
+);
+  localparam int unsigned PW = tu_formats_pkg::PerspPW;
+  localparam int unsigned QW = tu_formats_pkg::PerspQW;
+  localparam int unsigned XW = tu_formats_pkg::PerspXyW;
+  localparam int unsigned UW = tu_formats_pkg::PerspUvW;
+  localparam int unsigned AW = tu_formats_pkg::TexAddrW;
+  localparam int unsigned NW = tu_formats_pkg::EllNxW;
+  // material fields carried per pixel
+  localparam int unsigned MatW  = AW + 4 + 4 + 1 + 2 + tu_formats_pkg::EwaCountW;
+  // per-triangle B2 fields
+  localparam int unsigned TriW  = tu_formats_pkg::EllDetW + tu_formats_pkg::EllDetExpW +
+                                  tu_formats_pkg::EllAnisoW + tu_formats_pkg::EllMaxLodW;
+  localparam int unsigned SpanW = 2 * PW + QW + 3 * XW + TriW + MatW;
+  localparam int unsigned PixW  = 2 * XW + 1 + MatW;   // x, y, ovf, material
+
+  // ---------------- span set-up: fork to B1 set-up and numerator set-up, join ----------------
+  logic ps_in_ready, ns_in_ready, ps_valid, ns_valid, sj_valid, sj_ready;
+  logic [PW-1:0] ps_pu, ps_pv;
+  logic [QW-1:0] ps_q;
+  logic          ps_ovf;
+  logic [NW-1:0] ns_nux, ns_nvx, ns_nuy, ns_nvy, ns_m, ns_nn;
+  logic [SpanW-1:0] span_side, ns_side;
+  assign span_side = {a_i, d_i, g_i, x0_i, x1_i, y_i, dm_i, dexp_i, laniso_i, maxlod_i,
+                      tbase_i, tlw_i, tlh_i, tclamp_i, wsrc_i, cap_i};
+  assign in_ready_o = ps_in_ready && ns_in_ready;
+
+  tu_persp_setup u_psetup (
+    .clk_i, .rst_ni, .in_valid_i(in_valid_i && ns_in_ready), .in_ready_o(ps_in_ready),
+    .a_i, .b_i, .c_i, .d_i, .e_i, .f_i, .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i,
+    .out_valid_o(ps_valid), .out_ready_i(sj_ready && ns_valid),
+    .pu_o(ps_pu), .pv_o(ps_pv), .q_o(ps_q), .ovf_o(ps_ovf)
+  );
+  tu_num_setup #(.SideW(SpanW)) u_nsetup (
+    .clk_i, .rst_ni, .in_valid_i(in_valid_i && ps_in_ready), .in_ready_o(ns_in_ready),
+    .kux_i, .kvx_i, .kuy_i, .kvy_i, .m_i, .nn_i, .x0_i, .y_i, .side_i(span_side),
+    .out_valid_o(ns_valid), .out_ready_i(sj_ready && ps_valid),
+    .nux_o(ns_nux), .nvx_o(ns_nvx), .nuy_o(ns_nuy), .nvy_o(ns_nvy), .m_o(ns_m), .nn_o(ns_nn),
+    .side_o(ns_side)
+  );
+  assign sj_valid = ps_valid && ns_valid;
+
+  // unpack the span sideband
+  logic [PW-1:0] s_a, s_d;
+  logic [QW-1:0] s_g;
+  logic [XW-1:0] s_x0, s_x1, s_y;
+  logic [TriW-1:0] s_tri;
+  logic [MatW-1:0] s_mat;
+  assign {s_a, s_d, s_g, s_x0, s_x1, s_y, s_tri, s_mat} = ns_side;
+
+  // ---------------- span -> pixels ----------------
+  localparam int unsigned ExSideW = TriW + PixW;
+  logic ex_valid, ex_ready;
+  logic [PW-1:0] ex_pu0, ex_pv0, ex_a, ex_d;
+  logic [QW-1:0] ex_q0, ex_g, ex_q;
+  logic [XW-1:0] ex_n, ex_x;
+  logic [tu_formats_pkg::EllNumW-1:0] ex_nux, ex_nvx, ex_nuy, ex_nvy;
+  logic [ExSideW-1:0] ex_side;
+  tu_span_expand #(.SideW(ExSideW)) u_expand (
+    .clk_i, .rst_ni, .in_valid_i(sj_valid), .in_ready_o(sj_ready),
+    .pu0_i(ps_pu), .pv0_i(ps_pv), .q0_i(ps_q), .a_i(s_a), .d_i(s_d), .g_i(s_g),
+    .nux_i(ns_nux), .nvx_i(ns_nvx), .nuy_i(ns_nuy), .nvy_i(ns_nvy), .m_i(ns_m), .nn_i(ns_nn),
+    .x0_i(s_x0), .x1_i(s_x1), .side_i({s_tri, XW'(0), s_y, ps_ovf, s_mat}),
+    .out_valid_o(ex_valid), .out_ready_i(ex_ready),
+    .pu0_o(ex_pu0), .pv0_o(ex_pv0), .q0_o(ex_q0), .a_o(ex_a), .d_o(ex_d), .g_o(ex_g), .n_o(ex_n),
+    .x_o(ex_x), .q_o(ex_q), .nux_o(ex_nux), .nvx_o(ex_nvx), .nuy_o(ex_nuy), .nvy_o(ex_nvy),
+    .side_o(ex_side)
+  );
+  logic [TriW-1:0] ex_tri;
+  logic [PixW-1:0] ex_pix, ex_pix_x;
+  assign {ex_tri, ex_pix} = ex_side;
+  assign ex_pix_x = {ex_x, ex_pix[PixW-XW-1:0]};  // the x slot is filled per pixel
+
+  logic [tu_formats_pkg::EllDetW-1:0]    t_dm;
+  logic [tu_formats_pkg::EllDetExpW-1:0] t_dexp;
+  logic [tu_formats_pkg::EllAnisoW-1:0]  t_laniso;
+  logic [tu_formats_pkg::EllMaxLodW-1:0] t_maxlod;
+  assign {t_dm, t_dexp, t_laniso, t_maxlod} = ex_tri;
+
+  // ---------------- pixel fork: B1, B2 and the sideband FIFO; join ----------------
+  logic b1_in_ready, b2_in_ready, sb_in_ready, b1_valid, b2_valid, sb_valid, pj_valid, pj_ready;
+  logic [UW-1:0] b1_u, b1_v;
+  logic          b1_flag;
+  logic [PixW-1:0] sb_pix;
+  logic [tu_formats_pkg::EllCoefW-1:0] b2_ae, b2_be, b2_ce;
+  logic [tu_formats_pkg::EllEexpW-1:0] b2_eexp;
+  logic [tu_formats_pkg::EllFmW-1:0]   b2_fm;
+  logic [tu_formats_pkg::EllFexpW-1:0] b2_fexp;
+  logic [tu_formats_pkg::EllLogW-1:0]  b2_lmaj, b2_lmin;
+  logic [tu_formats_pkg::EllLodW-1:0]  b2_lod;
+  logic [4:0]                          b2_flags;
+  assign ex_ready = b1_in_ready && b2_in_ready && sb_in_ready;
+  assign pj_valid = b1_valid && b2_valid && sb_valid;
+
+  tu_persp u_b1 (
+    .clk_i, .rst_ni, .in_valid_i(ex_valid && b2_in_ready && sb_in_ready), .in_ready_o(b1_in_ready),
+    .pu0_i(ex_pu0), .pv0_i(ex_pv0), .q0_i(ex_q0), .a_i(ex_a), .d_i(ex_d), .g_i(ex_g), .n_i(ex_n),
+    .out_valid_o(b1_valid), .out_ready_i(pj_ready && b2_valid && sb_valid),
+    .u_o(b1_u), .v_o(b1_v), .flag_o(b1_flag)
+  );
+  tu_ellipse u_b2 (
+    .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && sb_in_ready), .in_ready_o(b2_in_ready),
+    .nux_i(ex_nux), .nvx_i(ex_nvx), .nuy_i(ex_nuy), .nvy_i(ex_nvy), .q_i(ex_q),
+    .dm_i(t_dm), .dexp_i(t_dexp), .laniso_i(t_laniso), .maxlod_i(t_maxlod),
+    .out_valid_o(b2_valid), .out_ready_i(pj_ready && b1_valid && sb_valid),
+    .ae_o(b2_ae), .be_o(b2_be), .ce_o(b2_ce), .eexp_o(b2_eexp), .fm_o(b2_fm), .fexp_o(b2_fexp),
+    .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_lod), .flags_o(b2_flags)
+  );
+  // Holds the sideband of every pixel inside B1/B2 (at most PerspLatency + 1).
+  tu_fifo #(.Width(PixW), .Depth(16)) u_side (
+    .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && b2_in_ready), .in_ready_o(sb_in_ready),
+    .in_data_i(ex_pix_x), .out_valid_o(sb_valid), .out_ready_i(pj_ready && b1_valid && b2_valid),
+    .out_data_o(sb_pix)
+  );
+
+  // ---------------- FIFO in front of the filter ----------------
+  localparam int unsigned FW = PixW + 2 * UW + 1 + 3 * tu_formats_pkg::EllCoefW +
+                               2 * tu_formats_pkg::EllLogW + tu_formats_pkg::EllLodW + 5;
+  logic          fq_valid, fq_ready;
+  logic [FW-1:0] fq_data;
+  tu_fifo #(.Width(FW), .Depth(FifoDepth)) u_fifo (
+    .clk_i, .rst_ni, .in_valid_i(pj_valid), .in_ready_o(pj_ready),
+    .in_data_i({sb_pix, b1_u, b1_v, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_flags}),
+    .out_valid_o(fq_valid), .out_ready_i(fq_ready), .out_data_o(fq_data)
+  );
+  logic [XW-1:0] f_x, f_y;
+  logic          f_ovf, f_clamp, f_guard;
+  logic [AW-1:0] f_base;
+  logic [3:0]    f_lw, f_lh;
+  logic [1:0]    f_wsrc;
+  logic [tu_formats_pkg::EwaCountW-1:0] f_cap;
+  logic [UW-1:0] f_u, f_v;
+  logic [tu_formats_pkg::EllCoefW-1:0] f_ae, f_ce, f_be;
+  logic [tu_formats_pkg::EllLogW-1:0]  f_lmaj, f_lmin;
+  logic [tu_formats_pkg::EllLodW-1:0]  f_lod;
+  logic [4:0]                          f_eflags;
+  assign {f_x, f_y, f_ovf, f_base, f_lw, f_lh, f_clamp, f_wsrc, f_cap, f_u, f_v, f_guard,
+          f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_eflags} = fq_data;
+
+  // ---------------- filter ----------------
+  // Per-pixel fields the filter does not carry ride in a FIFO popped with its output (it holds
+  // at most one pixel in flight).
+  localparam int unsigned OsW = 2 * XW + 2 + 5;
+  logic          os_in_ready, os_valid, flt_in_ready, flt_valid;
+  logic [OsW-1:0] os_data;
+  assign fq_ready = flt_in_ready && os_in_ready;
+  tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
+    .clk_i, .rst_ni, .in_valid_i(fq_valid && flt_in_ready), .in_ready_o(os_in_ready),
+    .in_data_i({f_x, f_y, f_ovf, f_guard, f_eflags}), .out_valid_o(os_valid),
+    .out_ready_i(out_ready_i && flt_valid), .out_data_o(os_data)
+  );
+  assign out_valid_o = flt_valid && os_valid;
+  assign {x_o, y_o, pflags_o, eflags_o} = os_data;
+
+  if (HasEwa != 0) begin : g_ewa
+    tu_ewa u_ewa (
+      .clk_i, .rst_ni, .in_valid_i(fq_valid && os_in_ready), .in_ready_o(flt_in_ready),
+      .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
+      .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh),
+      .clamp_i(f_clamp), .wsrc_i(f_wsrc), .cap_i(f_cap),
+      .tex_req_o, .tex_addr_o, .tex_data_i,
+      .out_valid_o(flt_valid), .out_ready_i(out_ready_i && os_valid),
+      .rgba_o, .level_o, .visited_o, .inside_o, .flags_o
+    );
+  end else begin : g_bilinear
+    tu_bilinear u_bil (
+      .clk_i, .rst_ni, .in_valid_i(fq_valid && os_in_ready), .in_ready_o(flt_in_ready),
+      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh), .clamp_i(f_clamp),
+      .tex_req_o, .tex_addr_o, .tex_data_i,
+      .out_valid_o(flt_valid), .out_ready_i(out_ready_i && os_valid), .rgba_o
+    );
+    assign level_o   = '0;  // level and texel counts: the C model's records (not compared there)
+    assign visited_o = tu_formats_pkg::EwaCountW'(4);
+    assign inside_o  = '0;
+    assign flags_o   = '0;
+    logic unused_ewa;
+    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_wsrc, f_cap};
+  end
+
+  logic unused;
+  assign unused = ^{b2_eexp, b2_fm, b2_fexp, ex_pix[PixW-1 -: XW]};  // x slot: filled per pixel
+endmodule

@@ -1,0 +1,73 @@
+// Simulation top of the texture unit: tu_texture_unit with the texel RAM model attached; the
+// testbench loads every texture of the scene through the RAM's write port before the spans.
+module tu_texture_unit_sim #(
+  parameter int unsigned HasEwa = 1,
+  parameter int unsigned Words  = 1 << 20
+) (
+  input  logic                                  clk_i,
+  input  logic                                  rst_ni,
+  input  logic                                  ram_we_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0]   ram_waddr_i,
+  input  logic [31:0]                           ram_wdata_i,
+  // span input
+  input  logic                                  in_valid_i,
+  output logic                                  in_ready_o,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    a_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    b_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    c_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    d_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    e_i,
+  input  logic [tu_formats_pkg::PerspPW-1:0]    f_i,
+  input  logic [tu_formats_pkg::PerspQW-1:0]    g_i,
+  input  logic [tu_formats_pkg::PerspQW-1:0]    h_i,
+  input  logic [tu_formats_pkg::PerspQW-1:0]    i_i,
+  input  logic [tu_formats_pkg::PerspXyW-1:0]   x0_i,
+  input  logic [tu_formats_pkg::PerspXyW-1:0]   x1_i,
+  input  logic [tu_formats_pkg::PerspXyW-1:0]   y_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     kux_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     kvx_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     kuy_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     kvy_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     m_i,
+  input  logic [tu_formats_pkg::EllNxW-1:0]     nn_i,
+  input  logic [tu_formats_pkg::EllDetW-1:0]    dm_i,
+  input  logic [tu_formats_pkg::EllDetExpW-1:0] dexp_i,
+  input  logic [tu_formats_pkg::EllAnisoW-1:0]  laniso_i,
+  input  logic [tu_formats_pkg::EllMaxLodW-1:0] maxlod_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0]   tbase_i,
+  input  logic [3:0]                            tlw_i,
+  input  logic [3:0]                            tlh_i,
+  input  logic                                  tclamp_i,
+  input  logic [1:0]                            wsrc_i,
+  input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
+  // pixel output
+  output logic                                  out_valid_o,
+  input  logic                                  out_ready_i,
+  output logic [tu_formats_pkg::PerspXyW-1:0]   x_o,
+  output logic [tu_formats_pkg::PerspXyW-1:0]   y_o,
+  output logic [31:0]                           rgba_o,
+  output logic [3:0]                            level_o,
+  output logic [tu_formats_pkg::EwaCountW-1:0] visited_o,
+  output logic [tu_formats_pkg::EwaCountW-1:0] inside_o,
+  output logic [4:0]                            flags_o,   // filter flags (tu_ewa, ewa::fx::Flag)
+  output logic [4:0]                            eflags_o,  // B2 flags
+  output logic [1:0]                            pflags_o   // B1: {span set-up overflow, guard}
+);
+  logic                                tex_req;
+  logic [tu_formats_pkg::TexAddrW-1:0] tex_addr;
+  logic [31:0]                         tex_data;
+  tu_texture_unit #(.HasEwa(HasEwa)) u_tu (
+    .clk_i, .rst_ni,
+    .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
+    .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
+    .kuy_i, .kvy_i, .m_i, .nn_i, .dm_i, .dexp_i, .laniso_i, .maxlod_i,
+    .tbase_i, .tlw_i, .tlh_i, .tclamp_i, .wsrc_i, .cap_i, .out_valid_o, .out_ready_i,
+    .x_o, .y_o, .rgba_o, .level_o, .visited_o, .inside_o, .flags_o, .eflags_o,
+    .pflags_o,
+    .tex_req_o(tex_req), .tex_addr_o(tex_addr), .tex_data_i(tex_data)
+  );
+  tu_texel_ram #(.Words(Words)) u_ram (
+    .clk_i, .rd_en_i(tex_req), .rd_addr_i(tex_addr), .rd_data_o(tex_data),
+    .wr_en_i(ram_we_i), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
+  );
+endmodule

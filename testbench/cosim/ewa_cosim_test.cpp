@@ -1,0 +1,103 @@
+// EWA engine and texture-unit top co-simulation (docs/blocks/ewa.md "RTL"). Cycles per pixel
+// depend on the box and the levels tried, so the engine is not in the fixed-latency Cosim suite:
+// 0 mismatches with 30 % stalls on golden/stiff/random (3,000 random here; scripts/cosim_full.sh
+// ewa for the long run), the scoreboard catches a corrupted value, and the cycle model
+// ewa::stream_cycles equals Verilator's count on stall-free streams (engine and full top).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "cosim_checks.hpp"
+#include "ewa/ewa_cycles.hpp"
+#include "texture_unit_rtl.hpp"
+
+namespace {
+using namespace tu;
+
+cosim::Options with_stalls(double p) {
+  cosim::Options opt;
+  opt.run.stall_prob = p;
+  opt.run.seed = 99;
+  return opt;
+}
+
+TEST(EwaCosim, GoldenStiffRandomWithStalls) {
+  const auto& b = blocks::find("ewa");
+  for (const std::string set : {"golden", "stiff", "random"}) {
+    const auto vf = blocks::generate(b, set, 3000, 2026);
+    const auto rep = cosim::run(vf, with_stalls(0.3));
+    SCOPED_TRACE(set);
+    cosim::checks::expect_stream_clean(rep);
+    std::printf("ewa %s: %s\n", set.c_str(), rep.json().c_str());
+  }
+}
+
+TEST(EwaCosim, DetectsACorruptedExpectedValue) { cosim::checks::expect_corruption_detected("ewa"); }
+
+// Per-pixel cycle costs of a vector file's rows (block "ewa": 256 x 256 texture, top level 8).
+std::vector<ewa::PixelCost> costs_of(const vec::VectorFile& vf) {
+  const auto in_idx = vf.indices(vec::Role::In), out_idx = vf.indices(vec::Role::Out);
+  std::vector<ewa::PixelCost> c;
+  for (const auto& row : vf.rows) {
+    const auto in = blocks::pick(row, in_idx), out = blocks::pick(row, out_idx);
+    ewa::fx::In px;
+    px.b2.lod = static_cast<uint32_t>(in[7]);
+    c.push_back(ewa::pixel_cost(px, static_cast<int>(out[4]), static_cast<uint32_t>(out[7]), out[5], 8));
+  }
+  return c;
+}
+
+TEST(EwaCosim, CyclesMatchPrediction) {
+  for (const std::string set : {"golden", "stiff", "random"}) {
+    const auto vf = blocks::generate(blocks::find("ewa"), set, 2000, 7);
+    const auto rep = cosim::run(vf, with_stalls(0));
+    cosim::checks::expect_stream_clean(rep);
+    const uint64_t predicted = ewa::stream_cycles(costs_of(vf));
+    std::printf("ewa %s: %zu px, cycles measured %llu predicted %llu (%.2f cycles/px)\n", set.c_str(),
+                vf.rows.size(), (unsigned long long)rep.sim_cycles, (unsigned long long)predicted,
+                double(rep.sim_cycles) / double(vf.rows.size()));
+    EXPECT_EQ(rep.sim_cycles, predicted) << set;
+  }
+}
+
+// The default scene at 64 x 48 pixels (same geometry, fewer pixels: seconds of simulation).
+scene::Scene small_scene() {
+  auto s = scene::default_scene();
+  s.camera.width = 64;
+  s.camera.height = 48;
+  return s;
+}
+
+TEST(TextureUnitRtl, SmallSceneEqualsCModelWithStalls) {
+  const auto s = small_scene();
+  for (auto w : {scene::WeightSource::Formula, scene::WeightSource::Table1d, scene::WeightSource::Table2d}) {
+    cosim::RtlRenderOptions o;
+    o.weights = w;
+    o.stall_prob = 0.3;
+    const auto r = cosim::render_rtl(s, o);
+    EXPECT_TRUE(r.ok()) << r.first_mismatch;
+    EXPECT_EQ(r.mismatches, 0u) << r.first_mismatch;
+    EXPECT_GT(r.frame.pixels.size(), 1000u);
+    std::printf("texture unit %s: %zu px in %llu spans, %llu mismatches\n", scene::to_string(w),
+                r.frame.pixels.size(), (unsigned long long)r.spans, (unsigned long long)r.mismatches);
+  }
+}
+
+TEST(TextureUnitRtl, CyclesMatchPrediction) {
+  const auto r = cosim::render_rtl(small_scene());
+  EXPECT_TRUE(r.ok()) << r.first_mismatch;
+  std::printf("texture unit: %zu px, cycles measured %llu predicted %llu (%.2f cycles/px)\n",
+              r.frame.pixels.size(), (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles,
+              double(r.cycles) / double(r.frame.pixels.size()));
+  EXPECT_EQ(r.cycles, r.predicted_cycles);
+}
+
+TEST(TextureUnitRtl, BilinearOnlyTopEqualsCModelWithStalls) {
+  cosim::RtlRenderOptions o;
+  o.has_ewa = false;
+  o.stall_prob = 0.3;
+  const auto r = cosim::render_rtl(small_scene(), o);
+  EXPECT_TRUE(r.ok()) << r.first_mismatch;
+  EXPECT_GT(r.frame.pixels.size(), 1000u);
+}
+}  // namespace

@@ -1,0 +1,45 @@
+// Texture layout of the texel RAM model (rtl/top/tu_texel_ram.sv, addressed by tu_texel_addr):
+// RGBA8 words r | g << 8 | b << 16 | a << 24, every mip level of a texture one after another from
+// level 0, row-major. load() writes a texture at `base` through the RAM's write port.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "texture/texture.hpp"
+
+namespace tu::cosim {
+
+inline uint32_t pack_rgba(const img::Rgba8& p) {
+  return uint32_t(p.r) | uint32_t(p.g) << 8 | uint32_t(p.b) << 16 | uint32_t(p.a) << 24;
+}
+inline img::Rgba8 unpack_rgba(uint32_t w) {
+  return {uint8_t(w), uint8_t(w >> 8), uint8_t(w >> 16), uint8_t(w >> 24)};
+}
+inline std::vector<uint32_t> texture_words(const tex::Texture& t) {
+  std::vector<uint32_t> w;
+  for (const auto& lv : t.levels)
+    for (const auto& p : lv.px) w.push_back(pack_rgba(p));
+  return w;
+}
+inline int log2_size(int n) {  // n: a power of two
+  int l = 0;
+  while ((1 << l) < n) ++l;
+  return l;
+}
+
+// Writes `words` at base..base+n-1 through a DUT's RAM write port (ram_we_i, ram_waddr_i,
+// ram_wdata_i), one word per clock, and leaves the port idle.
+template <class V>
+void load_words(V& d, const std::function<void()>& tick, uint64_t base, const std::vector<uint32_t>& words) {
+  for (size_t i = 0; i < words.size(); ++i) {
+    d.ram_we_i = 1;
+    d.ram_waddr_i = static_cast<uint32_t>(base + i);
+    d.ram_wdata_i = words[i];
+    tick();
+  }
+  d.ram_we_i = 0;
+}
+
+}  // namespace tu::cosim

@@ -1,0 +1,239 @@
+#include "texture_unit_rtl.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "Vtu_texture_unit_sim.h"
+#include "Vtu_texture_unit_sim_bil.h"
+#include "ellipse/ellipse_fx.hpp"
+#include "ewa/ewa_cycles.hpp"
+#include "harness.hpp"
+#include "texel_ram.hpp"
+
+namespace tu::cosim {
+
+namespace {
+constexpr uint64_t kRamWords = uint64_t(1) << 20;  // tu_texture_unit_sim Words
+
+uint64_t lo(i128 v) { return static_cast<uint64_t>(v); }
+uint64_t hi(i128 v) { return static_cast<uint64_t>(v >> 64); }
+uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ull : (1ull << w) - 1); }
+
+// Row layout of one span (two words for each 112-bit numerator constant).
+enum : size_t {
+  kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kClamp,
+  kWsrc, kCap, kRowSize
+};
+
+template <class V>
+void set_wide(V& port, uint64_t l, uint64_t h) {
+  port[0] = static_cast<uint32_t>(l);
+  port[1] = static_cast<uint32_t>(l >> 32);
+  port[2] = static_cast<uint32_t>(h);
+  port[3] = static_cast<uint32_t>(h >> 32) & 0xffffu;  // 112 bits
+}
+
+template <class V>
+void drive(V& d, const Row& r) {
+  d.a_i = r[kA + 0];
+  d.b_i = r[kA + 1];
+  d.c_i = r[kA + 2];
+  d.d_i = r[kA + 3];
+  d.e_i = r[kA + 4];
+  d.f_i = r[kA + 5];
+  d.g_i = r[kA + 6];
+  d.h_i = r[kA + 7];
+  d.i_i = r[kA + 8];
+  d.x0_i = static_cast<uint16_t>(r[kX0]);
+  d.x1_i = static_cast<uint16_t>(r[kX1]);
+  d.y_i = static_cast<uint16_t>(r[kY]);
+  set_wide(d.kux_i, r[kK + 0], r[kK + 1]);
+  set_wide(d.kvx_i, r[kK + 2], r[kK + 3]);
+  set_wide(d.kuy_i, r[kK + 4], r[kK + 5]);
+  set_wide(d.kvy_i, r[kK + 6], r[kK + 7]);
+  set_wide(d.m_i, r[kK + 8], r[kK + 9]);
+  set_wide(d.nn_i, r[kK + 10], r[kK + 11]);
+  d.dm_i = r[kDm];
+  d.dexp_i = static_cast<uint8_t>(r[kDexp]);
+  d.laniso_i = static_cast<uint16_t>(r[kLaniso]);
+  d.maxlod_i = static_cast<uint8_t>(r[kMaxlod]);
+  d.tbase_i = static_cast<uint32_t>(r[kBase]);
+  d.tlw_i = static_cast<uint8_t>(r[kLw]);
+  d.tlh_i = static_cast<uint8_t>(r[kLh]);
+  d.tclamp_i = static_cast<uint8_t>(r[kClamp]);
+  d.wsrc_i = static_cast<uint8_t>(r[kWsrc]);
+  d.cap_i = static_cast<uint32_t>(r[kCap]);
+}
+
+template <class V>
+Row sample(V& d) {
+  return Row{d.x_o, d.y_o, d.rgba_o, d.level_o, d.visited_o, d.inside_o, d.flags_o, d.eflags_o};
+}
+
+// log2(max anisotropy) as B2's laniso input, as the C-model engine sets it.
+uint32_t laniso_code(double max_aniso) {
+  const double l = std::round(std::ldexp(std::log2(std::max(1.0, max_aniso)), fmt::kEllLogF));
+  return static_cast<uint32_t>(std::min(l, std::ldexp(1.0, fmt::kEllAnisoW) - 1));
+}
+}  // namespace
+
+RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
+  using Coefs = persp::Unit::Coefs;
+  const int w = s.camera.width, h = s.camera.height;
+  const scene::Filter filter = o.has_ewa ? scene::Filter::Ewa : scene::Filter::Bilinear;
+  render::CmodelOptions copt;
+  copt.weights = o.weights;
+  const render::Frame expect = render::render_cmodel(s, filter, copt);
+
+  // Textures in the RAM, per-triangle set-up.
+  struct Obj {
+    tex::Texture tex;
+    uint64_t base;
+    std::vector<Coefs> coefs;
+  };
+  std::vector<Obj> objs;
+  std::vector<uint32_t> ram;
+  for (size_t oi = 0; oi < s.objects.size(); ++oi) {
+    const auto& ob = s.objects[oi];
+    Obj x{scene::build_texture(s, s.materials.at(ob.material).texture), ram.size(), {}};
+    const auto words = texture_words(x.tex);
+    ram.insert(ram.end(), words.begin(), words.end());
+    if (ram.size() > kRamWords)
+      throw std::runtime_error(s.source + ": textures need " + std::to_string(ram.size()) +
+                               " texel words, the RTL RAM model holds " + std::to_string(kRamWords));
+    const auto tris = scene::in_texels(ob, x.tex.levels[0].width, x.tex.levels[0].height);
+    for (size_t t = 0; t < tris.size(); ++t)
+      x.coefs.push_back(persp::Unit::quantise(persp::coefficients(s.camera, tris[t]),
+                                              "object " + std::to_string(oi) + " triangle " + std::to_string(t)));
+    objs.push_back(std::move(x));
+  }
+
+  // Spans, and the per-pixel cycle costs from the C model.
+  const auto cov = render::visibility(s);
+  std::vector<Row> spans;
+  std::vector<ewa::PixelCost> costs;
+  size_t pix = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w;) {
+      const render::Cover c = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)];
+      if (c.object < 0) {
+        ++x;
+        continue;
+      }
+      int x1 = x;
+      while (x1 + 1 < w) {
+        const render::Cover n = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x1 + 1)];
+        if (n.object != c.object || n.triangle != c.triangle) break;
+        ++x1;
+      }
+      const Obj& ob = objs[static_cast<size_t>(c.object)];
+      const auto& m = s.materials.at(s.objects[static_cast<size_t>(c.object)].material);
+      const Coefs& k = ob.coefs[static_cast<size_t>(c.triangle)];
+      const int top = ob.tex.num_levels() - 1;
+      const i128 a = k.a.raw(), b = k.b.raw(), cc = k.c.raw(), d = k.d.raw(), e = k.e.raw(),
+                 f = k.f.raw(), g = k.g.raw(), hh = k.h.raw(), i = k.i.raw();
+      const i128 kk[6] = {a * i - cc * g, d * i - f * g, b * i - cc * hh, e * i - f * hh,
+                          a * hh - b * g, d * hh - e * g};
+      int64_t dm;
+      int32_t dexp;
+      ellipse::fx::det3(k, &dm, &dexp);
+      Row r(kRowSize);
+      const i128 co[9] = {a, b, cc, d, e, f, g, hh, i};
+      for (int j = 0; j < 9; ++j) r[kA + static_cast<size_t>(j)] = code(co[j], j < 6 ? fmt::kPerspPW : fmt::kPerspQW);
+      r[kX0] = static_cast<uint64_t>(x);
+      r[kX1] = static_cast<uint64_t>(x1);
+      r[kY] = static_cast<uint64_t>(y);
+      for (size_t j = 0; j < 6; ++j) r[kK + 2 * j] = lo(kk[j]), r[kK + 2 * j + 1] = hi(kk[j]);
+      r[kDm] = code(dm, fmt::kEllDetW);
+      r[kDexp] = code(dexp, fmt::kEllDetExpW);
+      r[kLaniso] = laniso_code(m.max_aniso);
+      r[kMaxlod] = static_cast<uint64_t>(top);
+      r[kBase] = ob.base;
+      r[kLw] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].width));
+      r[kLh] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].height));
+      r[kClamp] = ob.tex.wrap == tex::Wrap::Clamp;
+      r[kWsrc] = static_cast<uint64_t>(o.weights.value_or(m.weights));
+      r[kCap] = 1024;
+      spans.push_back(r);
+      for (int px = x; px <= x1; ++px, ++pix) {
+        if (!o.has_ewa || pix >= expect.pixels.size()) continue;
+        const auto& rec = expect.pixels[pix];
+        ewa::fx::In in;
+        in.b2 = ellipse::fx::analytic(ellipse::fx::make_in(k, px, y, static_cast<uint32_t>(r[kLaniso]),
+                                                           static_cast<uint32_t>(top)));
+        ewa::PixelCost pc = ewa::pixel_cost(in, static_cast<int>(rec.lod), rec.ewa_flags,
+                                            static_cast<uint64_t>(rec.texels), top);
+        pc.guard = persp::Unit::pixel(persp::Unit::direct(k, px, y)).flag;
+        costs.push_back(pc);
+      }
+      x = x1 + 1;
+    }
+  }
+
+  RunOptions ro;
+  ro.stall_prob = o.stall_prob;
+  ro.seed = o.seed;
+  // The scoreboard expects one output per covered pixel of each span.
+  std::vector<uint64_t> fanout;
+  for (const Row& r : spans) fanout.push_back(r[kX1] - r[kX0] + 1);
+  const auto t0 = std::chrono::steady_clock::now();
+  RunResult rr;
+  auto init = [&](auto& d, const std::function<void()>& tick) { load_words(d, tick, 0, ram); };
+  if (o.has_ewa) {
+    Harness<Vtu_texture_unit_sim> hs(drive<Vtu_texture_unit_sim>, sample<Vtu_texture_unit_sim>,
+                                     [&](Vtu_texture_unit_sim& d, const std::function<void()>& t) { init(d, t); });
+    rr = hs.run(spans, ro, fanout);
+  } else {
+    Harness<Vtu_texture_unit_sim_bil> hs(drive<Vtu_texture_unit_sim_bil>, sample<Vtu_texture_unit_sim_bil>,
+                                         [&](Vtu_texture_unit_sim_bil& d, const std::function<void()>& t) { init(d, t); });
+    rr = hs.run(spans, ro, fanout);
+  }
+  RtlRender out;
+  out.sim_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.spans = spans.size();
+  out.cycles = rr.sim_cycles;
+  out.hung = rr.hung;
+  out.extra_outputs = rr.extra_outputs;
+  if (o.has_ewa) out.predicted_cycles = ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency()));
+  out.frame.image = expect.image;
+  for (size_t i = 0; i < rr.outputs.size(); ++i) {
+    const Row& q = rr.outputs[i];
+    render::PixelRecord rec;
+    rec.x = static_cast<int>(q[0]);
+    rec.y = static_cast<int>(q[1]);
+    rec.color = unpack_rgba(static_cast<uint32_t>(q[2]));
+    rec.lod = static_cast<double>(q[3]);
+    rec.texels = static_cast<int>(q[4]);
+    rec.texels_inside = static_cast<int>(q[5]);
+    rec.ewa_flags = o.has_ewa ? static_cast<uint32_t>(q[6]) : 0;
+    rec.b2_flags = static_cast<uint32_t>(q[7]);
+    if (i < expect.pixels.size()) {
+      const auto& e = expect.pixels[i];
+      rec.object = e.object, rec.u = e.u, rec.v = e.v;
+      const bool same = rec.x == e.x && rec.y == e.y && rec.color == e.color && rec.b2_flags == e.b2_flags &&
+                        (!o.has_ewa || (rec.lod == e.lod && rec.texels == e.texels &&
+                                        rec.texels_inside == e.texels_inside && rec.ewa_flags == e.ewa_flags));
+      if (!same) {
+        if (out.mismatches == 0) {
+          char buf[256];
+          std::snprintf(buf, sizeof buf,
+                        "pixel %zu (%d,%d): RTL (%d,%d) rgba %d %d %d %d level %g texels %d/%d flags %u/%u; "
+                        "C model rgba %d %d %d %d level %g texels %d/%d flags %u/%u",
+                        i, e.x, e.y, rec.x, rec.y, rec.color.r, rec.color.g, rec.color.b, rec.color.a,
+                        rec.lod, rec.texels, rec.texels_inside, rec.b2_flags, rec.ewa_flags, e.color.r,
+                        e.color.g, e.color.b, e.color.a, e.lod, e.texels, e.texels_inside, e.b2_flags,
+                        e.ewa_flags);
+          out.first_mismatch = buf;
+        }
+        ++out.mismatches;
+      }
+      out.frame.image.at(rec.x, rec.y) = rec.color;
+    }
+    out.frame.pixels.push_back(rec);
+  }
+  out.mismatches += expect.pixels.size() > rr.outputs.size() ? expect.pixels.size() - rr.outputs.size() : 0;
+  return out;
+}
+
+}  // namespace tu::cosim

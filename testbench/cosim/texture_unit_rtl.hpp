@@ -1,0 +1,45 @@
+// The RTL render engine: a scene's covered pixels pushed through the Verilated texture-unit top
+// (rtl/top/tu_texture_unit.sv via tu_texture_unit_sim with the texel RAM model) as spans, and
+// compared pixel by pixel with the C-model engine (render::render_cmodel).
+//   * spans: maximal runs of consecutive covered pixels of one row with the same triangle (the
+//     same visibility as the other engines), with the B1 quantised coefficients, the per-triangle
+//     B2 constants (exact numerator constants and det3, ellipse::fx) and the material;
+//   * textures: every object's texture with its pyramid loaded into the RAM model during reset;
+//   * HasEwa = 1: EWA with each material's (or the given) weight source, 1024-texel cap, checked
+//     against render_cmodel's EWA; HasEwa = 0: the bilinear-only top against its bilinear.
+// Not on this path: the relief uv shift (render_cmodel's hook) -- scenes are rendered without it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "texunit/render.hpp"
+#include "texunit/scene.hpp"
+
+namespace tu::cosim {
+
+struct RtlRenderOptions {
+  bool has_ewa = true;
+  std::optional<scene::WeightSource> weights;  // overrides every material's EWA weight source
+  double stall_prob = 0;                       // random input bubbles / output stalls
+  uint64_t seed = 1;
+};
+
+struct RtlRender {
+  render::Frame frame;               // RTL pixels
+  uint64_t spans = 0;
+  uint64_t cycles = 0;               // measured: first span offered to the last pixel out
+  uint64_t predicted_cycles = 0;     // ewa::stream_cycles (EWA; exact with no stalls)
+  uint64_t mismatches = 0;           // pixels differing from render_cmodel (any field)
+  std::string first_mismatch;
+  bool hung = false;
+  uint64_t extra_outputs = 0;
+  double sim_wall_s = 0;             // Verilator run only
+  bool ok() const { return mismatches == 0 && !hung && extra_outputs == 0; }
+};
+
+// Throws std::runtime_error naming the scene when its textures do not fit the RAM model.
+RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o = {});
+
+}  // namespace tu::cosim

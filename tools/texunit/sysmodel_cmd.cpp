@@ -1,0 +1,115 @@
+// `texunit sysmodel`: the scene's pixel stream through the SystemC system model (tlm/).
+#include "sysmodel_cmd.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+
+#include "ewa/ewa_cycles.hpp"
+#include "texunit/formats.hpp"
+#include "texunit/render.hpp"
+#include "texunit/scene.hpp"
+#include "texunit/texture_unit_model.hpp"
+#include "texture_unit_rtl.hpp"
+
+namespace tu::cli {
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+CLI::App* add_sysmodel(CLI::App& app, SysmodelArgs& a) {
+  auto* c = app.add_subcommand(
+      "sysmodel", "cycle-approximate SystemC model of the unit on a scene: total cycles, per-block utilisation");
+  c->add_option("SCENE", a.scene, "scene JSON file, or 'default' for the embedded scene")->required();
+  c->add_option("--fifo-depth", a.fifo_depth, "pixels buffered between B2 and the filter")
+      ->check(CLI::Range(1, 1024));
+  c->add_option("--cord-unroll", a.cord_unroll, "EWA set-up: CORDIC iterations per clock (divides EwaCordIter)")
+      ->check(CLI::Range(1, tu::fmt::kEwaCordIter) & CLI::Validator([](std::string& v) {
+        return tu::fmt::kEwaCordIter % std::stoi(v) ? std::string("must divide EwaCordIter") : std::string();
+      }, "DIVISOR"));
+  c->add_option("--sqrt-step", a.sqrt_step, "EWA set-up: square-root bits per clock (divides the root width)")
+      ->check(CLI::Range(1, tu::ewa::EngineParams{}.root_w) & CLI::Validator([](std::string& v) {
+        return tu::ewa::EngineParams{}.root_w % std::stoi(v) ? std::string("must divide the root width") : std::string();
+      }, "DIVISOR"));
+  c->add_option("--engine-compare", a.compare,
+                 "also render the scene through the RTL (Verilator) in this process: both cycle totals, ratios")
+      ->check(CLI::IsMember({"rtl"}));
+  c->add_flag("--json", a.json, "print one JSON object");
+  return c;
+}
+
+int run_sysmodel(const SysmodelArgs& a) {
+  const scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  const auto t0 = std::chrono::steady_clock::now();
+  // Per-pixel work (texels walked, levels tried) from the bit-accurate C-model render.
+  const render::Frame frame = render::render_cmodel(s, tu::scene::Filter::Ewa);
+  const sysmodel::Workload wl = sysmodel::scene_workload(s, frame);
+  const double work_s = seconds_since(t0);
+  sysmodel::UnitConfig cfg;
+  cfg.pixel_fifo = a.fifo_depth;
+  cfg.ewa.cord_unroll = a.cord_unroll;
+  cfg.ewa.sqrt_step = a.sqrt_step;
+  auto r = sysmodel::simulate(sysmodel::texture_unit(cfg), wl);
+  const double model_s = seconds_since(t0);
+  // Speed: the fastest of three identical runs (a short run is easily disturbed by other load).
+  if (a.compare == "rtl")
+    for (int i = 0; i < 2; ++i)
+      r.sim_seconds = std::min(r.sim_seconds, sysmodel::simulate(sysmodel::texture_unit(cfg), wl).sim_seconds);
+  // The RTL render of the same scene in this process: the Verilated tu_texture_unit, no stalls.
+  // Its cycle count runs to the cycle after the last output, the model's to the last output.
+  cosim::RtlRender rtl;
+  double rtl_s = 0;
+  if (a.compare == "rtl") {
+    const ewa::EngineParams rtl_ewa;
+    if (a.fifo_depth != 4 || a.cord_unroll != rtl_ewa.cord_unroll || a.sqrt_step != rtl_ewa.sqrt_step)
+      throw std::invalid_argument("--engine-compare rtl: the RTL top is built with FifoDepth 4, CordUnroll " +
+                                  std::to_string(rtl_ewa.cord_unroll) + ", SqrtStep " +
+                                  std::to_string(rtl_ewa.sqrt_step) + "; drop the what-if options");
+    const auto t1 = std::chrono::steady_clock::now();
+    rtl = cosim::render_rtl(s);
+    rtl_s = seconds_since(t1);
+  }
+  const uint64_t model_cycles = r.total_cycles + 1;
+  const double cycle_ratio = rtl.cycles ? static_cast<double>(model_cycles) / static_cast<double>(rtl.cycles) : 0;
+  const double speed_sim = r.sim_seconds > 0 ? rtl.sim_wall_s / r.sim_seconds : 0;
+  const double speed_all = model_s > 0 ? rtl_s / model_s : 0;
+  if (a.json) {
+    auto j = sysmodel::to_json(r);
+    j["scene"] = s.source;
+    j["spans"] = wl.spans.size();
+    j["workload_seconds"] = work_s;
+    j["model_seconds"] = model_s;
+    if (a.compare == "rtl") {
+      j["rtl"] = {{"cycles", rtl.cycles}, {"sim_seconds", rtl.sim_wall_s}, {"seconds", rtl_s},
+                  {"mismatches", rtl.mismatches}, {"ok", rtl.ok()}};
+      j["model_cycles"] = model_cycles;  // total_cycles + 1: counted like the RTL
+      j["cycle_ratio"] = cycle_ratio;
+      j["speed_ratio_sim"] = speed_sim;
+      j["speed_ratio_total"] = speed_all;
+    }
+    std::cout << j.dump() << "\n";
+  } else {
+    std::printf("scene %s: %zu spans, %zu covered pixels (per-pixel work from the C model: %.3f s)\n",
+                s.source.c_str(), wl.spans.size(), wl.pixels.size(), work_s);
+    std::cout << sysmodel::table(r);
+    if (a.compare == "rtl") {
+      std::printf("RTL (Verilator tu_texture_unit): %llu cycles, %llu mismatches vs C model, simulation %.3f s, "
+                  "render %.3f s\n",
+                  static_cast<unsigned long long>(rtl.cycles), static_cast<unsigned long long>(rtl.mismatches),
+                  rtl.sim_wall_s, rtl_s);
+      std::printf("SystemC model: %llu cycles (to the cycle after the last output), simulation %.3f s, "
+                  "with the C-model work %.3f s\n",
+                  static_cast<unsigned long long>(model_cycles), r.sim_seconds, model_s);
+      std::printf("cycles model / RTL = %.5f (%+.3f%%); speed: simulation %.1fx, end to end %.1fx\n",
+                  cycle_ratio, 100 * (cycle_ratio - 1), speed_sim, speed_all);
+    }
+  }
+  return rtl.ok() || a.compare.empty() ? 0 : 1;
+}
+
+}  // namespace tu::cli
