@@ -8,8 +8,15 @@
 namespace {
 using namespace tu;
 
+// The default scene at half resolution (the same view): a quarter of the pixels keeps the
+// sanitizer build fast.
 const scene::Scene& scn() {
-  static const auto s = scene::default_scene();
+  static const auto s = [] {
+    auto d = scene::default_scene();
+    d.camera.width /= 2;
+    d.camera.height /= 2;
+    return d;
+  }();
   return s;
 }
 

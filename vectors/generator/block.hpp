@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,16 @@ vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count,
 
 // Split/join a file row by role.
 Row pick(const Row& row, const std::vector<int>& idx);
+
+// `count` rows from one generator call each (gen(rng) -> Row), seeded with `seed`.
+template <class Gen>
+std::vector<Row> random_rows(uint64_t count, uint64_t seed, Gen gen) {
+  std::mt19937_64 rng(seed);
+  std::vector<Row> rows;
+  rows.reserve(count);
+  while (rows.size() < count) rows.push_back(gen(rng));
+  return rows;
+}
 
 // Block::inputs for the three standard sets: golden() and stiff() are fixed, random(count, seed).
 template <class Golden, class Stiff, class Random>

@@ -108,16 +108,12 @@ std::vector<Row> stiff_inputs() {
 }
 
 std::vector<Row> random_inputs(uint64_t count, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::vector<Row> rows;
-  rows.reserve(count);
-  while (rows.size() < count) {
+  return random_rows(count, seed, [](std::mt19937_64& rng) {
     Pixel p{ewa::fx::random_in(rng), {}};
     p.cfg.weights = static_cast<ewa::fx::Weights>(rng() % 3);
     p.cfg.max_texels = rng() % 8 == 0 ? static_cast<uint32_t>(1 + rng() % 2048) : 1024;
-    rows.push_back(row_of(p));
-  }
-  return rows;
+    return row_of(p);
+  });
 }
 
 Row ref_of(const Row& r) {
