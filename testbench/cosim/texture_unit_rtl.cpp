@@ -189,7 +189,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   out.cycles = rr.sim_cycles;
   out.hung = rr.hung;
   out.extra_outputs = rr.extra_outputs;
-  if (o.has_ewa) out.predicted_cycles = ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency()));
+  const auto front = static_cast<uint64_t>(ewa::texture_unit_front_latency());
+  out.predicted_cycles = o.has_ewa ? ewa::stream_cycles(costs, front)
+                                   : ewa::bilinear_stream_cycles(expect.pixels.size(), front);
   out.frame.image = expect.image;
   for (size_t i = 0; i < rr.outputs.size(); ++i) {
     const Row& q = rr.outputs[i];
