@@ -21,13 +21,12 @@ ewa::fx::Weights weights_of(scene::WeightSource w) {
   }
   return ewa::fx::Weights::Formula;
 }
+}  // namespace
 
-// log2(max anisotropy) as B2's laniso input (u(EllAnisoW).EllLogF, rounded, saturated).
 uint32_t laniso_code(double max_aniso) {
   const double l = std::round(std::ldexp(std::log2(std::max(1.0, max_aniso)), fmt::kEllLogF));
   return static_cast<uint32_t>(std::min(l, std::ldexp(1.0, fmt::kEllAnisoW) - 1));
 }
-}  // namespace
 
 Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, const CmodelOptions& opt) {
   const int w = s.camera.width, h = s.camera.height;

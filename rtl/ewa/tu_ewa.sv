@@ -2,7 +2,8 @@
 // docs/blocks/ewa.md "RTL"): a set-up unit (tu_ewa_setup: CORDIC direction, level loop with the
 // texel cap, walk start values) and a walker (tu_ewa_walk: one texel per clock, weights,
 // accumulation, normalisation) connected by a one-record hand-over, so the set-up of pixel i+1
-// overlaps the walk of pixel i. Data-dependent cycles; the exact count is ewa::cycles (ewa_cycles.hpp).
+// overlaps the walk of pixel i. Data-dependent cycles; exact count: ewa::stream_cycles
+// (cmodel/blocks/ewa/ewa_cycles.hpp).
 module tu_ewa #(
   parameter int unsigned CordUnroll = 2,
   parameter int unsigned SqrtStep   = 4

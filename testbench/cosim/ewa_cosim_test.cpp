@@ -99,5 +99,9 @@ TEST(TextureUnitRtl, BilinearOnlyTopEqualsCModelWithStalls) {
   const auto r = cosim::render_rtl(small_scene(), o);
   EXPECT_TRUE(r.ok()) << r.first_mismatch;
   EXPECT_GT(r.frame.pixels.size(), 1000u);
+  o.stall_prob = 0;
+  const auto q = cosim::render_rtl(small_scene(), o);
+  EXPECT_TRUE(q.ok()) << q.first_mismatch;
+  EXPECT_EQ(q.cycles, q.predicted_cycles);
 }
 }  // namespace

@@ -70,12 +70,6 @@ template <class V>
 Row sample(V& d) {
   return Row{d.x_o, d.y_o, d.rgba_o, d.level_o, d.visited_o, d.inside_o, d.flags_o, d.eflags_o};
 }
-
-// log2(max anisotropy) as B2's laniso input, as the C-model engine sets it.
-uint32_t laniso_code(double max_aniso) {
-  const double l = std::round(std::ldexp(std::log2(std::max(1.0, max_aniso)), fmt::kEllLogF));
-  return static_cast<uint32_t>(std::min(l, std::ldexp(1.0, fmt::kEllAnisoW) - 1));
-}
 }  // namespace
 
 RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
@@ -147,7 +141,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       for (size_t j = 0; j < 6; ++j) r[kK + 2 * j] = lo(kk[j]), r[kK + 2 * j + 1] = hi(kk[j]);
       r[kDm] = code(dm, fmt::kEllDetW);
       r[kDexp] = code(dexp, fmt::kEllDetExpW);
-      r[kLaniso] = laniso_code(m.max_aniso);
+      r[kLaniso] = render::laniso_code(m.max_aniso);
       r[kMaxlod] = static_cast<uint64_t>(top);
       r[kBase] = ob.base;
       r[kLw] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].width));
@@ -195,7 +189,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   out.cycles = rr.sim_cycles;
   out.hung = rr.hung;
   out.extra_outputs = rr.extra_outputs;
-  if (o.has_ewa) out.predicted_cycles = ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency()));
+  const auto front = static_cast<uint64_t>(ewa::texture_unit_front_latency());
+  out.predicted_cycles = o.has_ewa ? ewa::stream_cycles(costs, front)
+                                   : ewa::bilinear_stream_cycles(expect.pixels.size(), front);
   out.frame.image = expect.image;
   for (size_t i = 0; i < rr.outputs.size(); ++i) {
     const Row& q = rr.outputs[i];

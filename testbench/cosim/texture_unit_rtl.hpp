@@ -30,7 +30,7 @@ struct RtlRender {
   render::Frame frame;               // RTL pixels
   uint64_t spans = 0;
   uint64_t cycles = 0;               // measured: first span offered to the last pixel out
-  uint64_t predicted_cycles = 0;     // ewa::stream_cycles (EWA; exact with no stalls)
+  uint64_t predicted_cycles = 0;     // ewa::stream_cycles / bilinear_stream_cycles (no stalls)
   uint64_t mismatches = 0;           // pixels differing from render_cmodel (any field)
   std::string first_mismatch;
   bool hung = false;

@@ -61,11 +61,10 @@ int run_render(const RenderArgs& a) {
                 (unsigned long long)r.mismatches, r.first_mismatch.empty() ? "" : "; first: ",
                 r.first_mismatch.c_str());
     const double n = static_cast<double>(std::max<size_t>(1, r.frame.pixels.size()));
-    std::printf("cycles measured %llu (%.2f/pixel)", (unsigned long long)r.cycles, double(r.cycles) / n);
-    if (ro.has_ewa)
-      std::printf(", predicted %llu (%.2f/pixel, %+.2f %%)", (unsigned long long)r.predicted_cycles,
-                  double(r.predicted_cycles) / n,
-                  100.0 * (double(r.predicted_cycles) / double(std::max<uint64_t>(1, r.cycles)) - 1));
+    std::printf("cycles measured %llu (%.2f/pixel), predicted %llu (%.2f/pixel, %+.2f %%)",
+                (unsigned long long)r.cycles, double(r.cycles) / n, (unsigned long long)r.predicted_cycles,
+                double(r.predicted_cycles) / n,
+                100.0 * (double(r.predicted_cycles) / double(std::max<uint64_t>(1, r.cycles)) - 1));
     std::printf("; simulated %.0f RTL pixels/s (%.2f s)\n", n / r.sim_wall_s, r.sim_wall_s);
   } else {
     frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt) : render::render_ref(s, f);
@@ -192,12 +191,10 @@ bool demo_render_rtl(const scene::Scene& s, const render::Frame& ewa_ref, const 
     const auto png = (std::filesystem::path(out_dir) / (std::string("rtl_") + r.name + ".png")).string();
     img::write_png_rgba(png, res.frame.image);
     const double n = static_cast<double>(std::max<size_t>(1, res.frame.pixels.size()));
-    char pred[32] = "-", err[32] = "-";
-    if (r.has_ewa) {
-      std::snprintf(pred, sizeof pred, "%.3f", double(res.predicted_cycles) / n);
-      std::snprintf(err, sizeof err, "%+.3f %%",
-                    100.0 * (double(res.predicted_cycles) / double(std::max<uint64_t>(1, res.cycles)) - 1));
-    }
+    char pred[32], err[32];
+    std::snprintf(pred, sizeof pred, "%.3f", double(res.predicted_cycles) / n);
+    std::snprintf(err, sizeof err, "%+.3f %%",
+                  100.0 * (double(res.predicted_cycles) / double(std::max<uint64_t>(1, res.cycles)) - 1));
     std::printf("%-12s %8zu %10llu %8.2f dB %13.3f %13s %9s %12.0f  %s\n", r.name, res.frame.pixels.size(),
                 (unsigned long long)res.mismatches, tex::psnr(res.frame.image, ewa_ref.image),
                 double(res.cycles) / n, pred, err, n / res.sim_wall_s, png.c_str());

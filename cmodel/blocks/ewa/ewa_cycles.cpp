@@ -40,6 +40,10 @@ uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival,
   return px.empty() ? 0 : last_out + 1;
 }
 
+uint64_t bilinear_stream_cycles(uint64_t pixels, uint64_t first_arrival) {
+  return pixels == 0 ? 0 : first_arrival + 7 * pixels;
+}
+
 int texture_unit_front_latency() { return 2 + 1 + fmt::kPerspLatency + 1; }
 
 }  // namespace tu::ewa

@@ -44,6 +44,10 @@ int walk_cycles(const PixelCost& c);  // hand-over to output valid
 uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival = 0,
                        const EngineParams& p = {});
 
+// The bilinear-only top (tu_texture_unit HasEwa = 0, tu_bilinear): 7 clocks per pixel (accept,
+// four texel reads, last data, output), pixels back to back.
+uint64_t bilinear_stream_cycles(uint64_t pixels, uint64_t first_arrival = 0);
+
 // Front-end latency of tu_texture_unit: span accepted at cycle 0 -> first pixel at the EWA
 // engine's input: span set-up (2) + expander register (1) + B1 (PerspLatency) + FIFO (1).
 int texture_unit_front_latency();

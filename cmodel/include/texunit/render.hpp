@@ -53,6 +53,9 @@ struct CmodelOptions {
   std::optional<scene::WeightSource> weights;  // overrides every material's EWA weight source
   bool progress = false;  // a simple progress bar on stderr
 };
+// log2(max anisotropy) as B2's laniso input (u(EllAnisoW).EllLogF, rounded, saturated); the RTL
+// render engine sets the same.
+uint32_t laniso_code(double max_aniso);
 Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter = {},
                     const CmodelOptions& opt = {});
 
