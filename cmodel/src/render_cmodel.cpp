@@ -1,11 +1,13 @@
 // The C-model render engine: the bit-accurate pipeline B1 -> B2 -> filter per covered pixel.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
+#include "pom/relief.hpp"
 #include "texunit/render.hpp"
 
 namespace tu::render {
@@ -20,6 +22,32 @@ ewa::fx::Weights weights_of(scene::WeightSource w) {
     case scene::WeightSource::Table2d: return ewa::fx::Weights::Table2d;
   }
   return ewa::fx::Weights::Formula;
+}
+
+// Relief (docs/blocks/relief.md §9): B1's u, v codes (level-0 texels, TexUvF bits) become
+// texture repeats with PomUvF bits, the material's method shifts them, and they come back. The
+// tangent-space view is the shader's float input, quantised to the unit's s16.14 (as render_ref).
+// Widths are powers of two, so the conversions are shifts: exact while the texture is at most
+// 2^(PomUvF - TexUvF) = 256 texels wide, floored otherwise (finer than the unit's uv quantum).
+int64_t shift_code(int64_t c, int by) { return by >= 0 ? c * (int64_t(1) << by) : c >> -by; }
+
+void shift_relief_fx(const scene::Scene& s, const Cover& c, const relief::Maps& maps, const tex::Texture& tx,
+                     int x, int y, int64_t* u, int64_t* v, PixelRecord* rec) {
+  const auto& obj = s.objects[static_cast<size_t>(c.object)];
+  const auto& tri = obj.triangles[static_cast<size_t>(c.triangle)];
+  const auto& rel = *s.materials.at(obj.material).relief;
+  persp::Hit hit;
+  relief::TangentView tv;
+  if (!persp::ray_hit(s.camera, tri, x, y, &hit) || !relief::tangent_view(tri, s.camera.pos, hit.s, hit.r, &tv))
+    return;  // degenerate uv mapping: no shift (as render_ref)
+  const int lw = std::countr_zero(static_cast<unsigned>(tx.levels[0].width));
+  const int lh = std::countr_zero(static_cast<unsigned>(tx.levels[0].height));
+  const int du = fmt::kPomUvF - fmt::kTexUvF;
+  const auto r = relief::shift_uv_fx(maps, shift_code(*u, du - lw), shift_code(*v, du - lh),
+                                     relief::quantise(tv, rel.scale), rel.method, rel.layers);
+  *u = shift_code(r.u, lw - du);
+  *v = shift_code(r.v, lh - du);
+  rec->relief_n = static_cast<int>(r.n);
 }
 }  // namespace
 
@@ -46,6 +74,11 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
                                         "object " + std::to_string(o) + " triangle " + std::to_string(t)));
     coefs.push_back(std::move(k));
   }
+  std::vector<std::optional<relief::Maps>> reliefs;  // per object with relief and opt.relief
+  for (const auto& o : s.objects)
+    reliefs.push_back(opt.relief && s.materials.at(o.material).relief
+                          ? std::optional(relief::make_maps(s, o.material))
+                          : std::nullopt);
   for (int y = 0; y < h; ++y) {
     if (opt.progress && (y % 8 == 0 || y == h - 1))
       std::fprintf(stderr, "\rC-model render %3d%%", (y + 1) * 100 / h);
@@ -61,10 +94,12 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       ewa::fx::In in;
       in.u = px.u;
       in.v = px.v;
+      PixelRecord rec;
+      if (const auto& maps = reliefs[static_cast<size_t>(c.object)]; maps && !px.flag)
+        shift_relief_fx(s, c, *maps, tx, x, y, &in.u, &in.v, &rec);
       if (opt.uv_shift) opt.uv_shift(x, y, c.object, &in.u, &in.v);
       in.b2 = ellipse::fx::analytic(
           ellipse::fx::make_in(k, x, y, laniso_code(m.max_aniso), static_cast<uint32_t>(top)));
-      PixelRecord rec;
       rec.x = x, rec.y = y, rec.object = c.object;
       rec.u = std::ldexp(double(in.u), -fmt::kTexUvF);
       rec.v = std::ldexp(double(in.v), -fmt::kTexUvF);

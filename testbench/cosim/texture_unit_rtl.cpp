@@ -78,6 +78,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   const scene::Filter filter = o.has_ewa ? scene::Filter::Ewa : scene::Filter::Bilinear;
   render::CmodelOptions copt;
   copt.weights = o.weights;
+  copt.relief = false;  // the RTL top has no relief stage: compare the texture path
   const render::Frame expect = render::render_cmodel(s, filter, copt);
 
   // Textures in the RAM, per-triangle set-up.

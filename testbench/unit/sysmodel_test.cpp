@@ -159,7 +159,7 @@ TEST(Sysmodel, DefaultSceneStreamCoversEveryPixelOnce) {
   auto s = tu::scene::default_scene();
   s.camera.width = 128;
   s.camera.height = 96;
-  const auto frame = tu::render::render_cmodel(s, tu::scene::Filter::Ewa);
+  const auto frame = tu::render::render_cmodel(s, tu::scene::Filter::Ewa, {.relief = false});
   const auto wl = scene_workload(s, frame);
   ASSERT_FALSE(wl.spans.empty());
   ASSERT_EQ(wl.pixels.size(), frame.pixels.size());
