@@ -16,11 +16,26 @@ struct Row {
   int64_t cells = -1, flip_flops = -1, multipliers = -1, memory_bits = -1;
   std::string area_source = "n/a", rtl_top, notes;
   double cmodel_ns_per_item = 0;
+  double rtl_sim_items_per_s = -1;  // -1: not measured (rtl_sim_source says why)
+  std::string rtl_sim_source = "not measured: no RTL";
+  std::string err_unit;             // what max_abs_err is measured in
   std::string json() const;
 };
 
+struct Options {
+  std::vector<std::string> blocks;  // report groups; empty: every group
+  std::string json, plots, markdown;
+  std::string root = ".";
+  std::string yosys_cache;          // JSON cache of Yosys results keyed by the RTL files' hash
+  bool yosys = true;                // false: area "not measured: " + no_yosys_why
+  std::string no_yosys_why = "--no-yosys";
+  uint64_t count = 20000;           // random vectors per registry block (plus its stiff set)
+};
+
+// Report groups in output order (block names of the rows).
+std::vector<std::string> groups();
+std::vector<Row> rows(const Options& opt);
 std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string& root, bool yosys);
-int run(const std::vector<std::string>& blocks, const std::string& json, const std::string& plots,
-        const std::string& root);
+int run(const Options& opt);
 
 }  // namespace tu::report

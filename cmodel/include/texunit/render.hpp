@@ -18,6 +18,8 @@ struct PixelRecord {
   double u = 0, v = 0;  // level-0 texels
   double lod = 0;       // mip level used (EWA: the walk's level; trilinear: the blend position)
   int texels = 0;       // texels read
+  double aniso = 1;          // footprint anisotropy major / minor (after the material's clamp)
+  double footprint_lod = 0;  // log2 of the clamped minor axis, in [0, coarsest level] (`texunit plan`)
   img::Rgba8 color;
 };
 
