@@ -248,8 +248,9 @@ int run(const Options& opt) {
   std::optional<render::Frame> tri;
   if (q_lod <= kMinifyLod && q_aniso <= kIsoAniso) {
     const double p = psnr_covered(bil, ewa);
-    filter_why += "bilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB; ";
+    filter_why += "bilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
     if (p >= s.budget.min_psnr_db) filter = "bilinear", filter_psnr = p, chosen_frame = &bil;
+    else filter_why += "; ";
   } else {
     filter_why += "bilinear: footprint gate fails (p99 LOD " + fmt("%.2f", q_lod) + ", p99 anisotropy " + fmt("%.2f", q_aniso) + "); ";
   }
@@ -257,7 +258,7 @@ int run(const Options& opt) {
     if (q_aniso <= kIsoAniso) {
       tri = render::render_ref(s, scene::Filter::Trilinear);
       const double p = psnr_covered(*tri, ewa);
-      filter_why += "trilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB; ";
+      filter_why += "trilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
       if (p >= s.budget.min_psnr_db) filter = "trilinear", filter_psnr = p, chosen_frame = &*tri;
     } else {
       filter_why += "trilinear: footprint gate fails (p99 anisotropy " + fmt("%.2f", q_aniso) + ")";
@@ -267,12 +268,9 @@ int run(const Options& opt) {
   // 3. Blocks and variants from the measured table.
   const std::string psnr_field = s.source + ": /error_budget/min_psnr_db = " + fmt("%g", s.budget.min_psnr_db);
   const std::string texel_field = s.source + ": /error_budget/max_texel_err = " + fmt("%g", s.budget.max_texel_err);
-  auto pixel_persp = rows_of("persp");
-  pixel_persp.erase(std::remove_if(pixel_persp.begin(), pixel_persp.end(), [](const TRow* r) { return r->variant == "setup"; }),
-                    pixel_persp.end());
-  const TRow* persp = cheapest(pixel_persp, [&](const TRow& r) { return r.max_abs <= s.budget.max_texel_err; },
+  const TRow* persp = cheapest(rows_of("persp"), [&](const TRow& r) { return r.max_abs <= s.budget.max_texel_err; },
                                [](const TRow& r) { return -r.max_abs; }, texel_field, "persp", "%.4g texel");
-  const TRow* setup = one("persp", "setup");
+  const TRow* setup = one("persp_setup", "setup");
   auto db_ok = [&](const TRow& r) { return weight_db(r) >= s.budget.min_psnr_db; };
   std::vector<const TRow*> weight_cands = rows_of("gauss_weight");
   for (const TRow* r : rows_of("weight_table")) weight_cands.push_back(r);

@@ -204,19 +204,25 @@ void area(Row& r, const Options& opt, AreaCache& cache) {
   r.area_source = "yosys synth";
 }
 
+// Registry-backed groups: (group, variant, registry block, RTL binding or null, RTL top).
+struct Spec {
+  std::string group, variant, block;
+  const cosim::RtlBlock* rtl;
+  std::string top, err_unit;  // err_unit: what the registry's error function measures
+};
+
 // Rows of a registry block: error over its random + stiff vectors, C-model speed, RTL timing and
 // simulation speed, area.
-Row registry_row(const std::string& group, const std::string& variant, const std::string& block,
-                 const cosim::RtlBlock* rtl, const std::string& top, const Options& opt, AreaCache& cache) {
-  const auto& b = blocks::find(block);
+Row registry_row(const Spec& spec, const Options& opt, AreaCache& cache) {
+  const auto& b = blocks::find(spec.block);
   auto in = b.inputs("random", opt.count, 7);
   if (std::find(b.sets.begin(), b.sets.end(), "stiff") != b.sets.end())
     for (auto& x : b.inputs("stiff", 0, 0)) in.push_back(std::move(x));
   Row r;
-  r.block = group;
-  r.variant = variant;
-  r.scheme = block;
-  r.err_unit = b.err_metric.empty() ? "block output unit" : b.err_metric.substr(4);
+  r.block = spec.group;
+  r.variant = spec.variant;
+  r.scheme = spec.block;
+  r.err_unit = spec.err_unit;
   double sum_sq = 0;
   uint64_t n = 0, flagged = 0;
   for (const auto& x : in) {
@@ -240,9 +246,9 @@ Row registry_row(const std::string& group, const std::string& variant, const std
   r.latency_cycles = b.latency_cycles;
   r.ii_cycles = b.ii_cycles;
   r.cycles_source = "declared (block registry)";
-  if (rtl) {
-    r.rtl_top = top;
-    measure_rtl(r, *rtl, b, in);
+  if (spec.rtl) {
+    r.rtl_top = spec.top;
+    measure_rtl(r, *spec.rtl, b, in);
   }
   area(r, opt, cache);
   std::ostringstream no;
@@ -368,12 +374,6 @@ std::string jint(int64_t x, const std::string& why) { return x < 0 ? jstr(why) :
 
 std::string na(int64_t x) { return x < 0 ? std::string("n/a") : std::to_string(x); }
 
-// Registry-backed groups: (group, variant, registry block, RTL binding or null, RTL top).
-struct Spec {
-  std::string group, variant, block;
-  const cosim::RtlBlock* rtl;
-  std::string top;
-};
 const cosim::RtlBlock* rtl_or_null(const std::string& name) {
   try {
     return &cosim::find_rtl(name);
@@ -384,22 +384,23 @@ const cosim::RtlBlock* rtl_or_null(const std::string& name) {
 std::vector<Spec> registry_specs() {
   static const cosim::RtlBlock direct = cosim::rtl_persp_direct();
   std::vector<Spec> v = {
-      {"reciprocal", "faithful_25b", "reciprocal", rtl_or_null("reciprocal"), "tu_reciprocal"},
-      {"persp", "incremental", "persp", rtl_or_null("persp"), "tu_persp"},
-      {"persp", "direct", "persp", &direct, "tu_persp_direct"},
-      {"persp", "klane4", "persp_k4", rtl_or_null("persp_k4"), "tu_persp_klane"},
-      {"persp", "setup", "persp_setup", rtl_or_null("persp_setup"), "tu_persp_setup"},
-      {"ellipse", "analytic", "ellipse", rtl_or_null("ellipse"), "tu_ellipse"},
-      {"pom_layers", "pom_layers", "pom_layers", rtl_or_null("pom_layers"), "tu_pom_layers"},
-      {"pom_march", "pom_march", "pom_march", rtl_or_null("pom_march"), "tu_pom_march"},
-      {"iter_parallax", "iter_parallax", "iter_parallax", rtl_or_null("iter_parallax"), "tu_iter_parallax"}};
+      {"reciprocal", "faithful_25b", "reciprocal", rtl_or_null("reciprocal"), "tu_reciprocal", "1/M, absolute"},
+      {"persp", "incremental", "persp", rtl_or_null("persp"), "tu_persp", "texels"},
+      {"persp", "direct", "persp", &direct, "tu_persp_direct", "texels"},
+      {"persp", "klane4", "persp_k4", rtl_or_null("persp_k4"), "tu_persp_klane", "texels (item = 4 pixels)"},
+      {"persp_setup", "setup", "persp_setup", rtl_or_null("persp_setup"), "tu_persp_setup", "seed value (0: exact)"},
+      {"ellipse", "analytic", "ellipse", rtl_or_null("ellipse"), "tu_ellipse", "LOD (mip levels)"},
+      {"pom_layers", "pom_layers", "pom_layers", rtl_or_null("pom_layers"), "tu_pom_layers", "layers"},
+      {"pom_march", "pom_march", "pom_march", rtl_or_null("pom_march"), "tu_pom_march", "march steps"},
+      {"iter_parallax", "iter_parallax", "iter_parallax", rtl_or_null("iter_parallax"), "tu_iter_parallax",
+       "uv in 2^-16 units"}};
   // Any other registry block (e.g. a new one) gets a row of its own; the Gaussian blocks have
   // the exhaustive producers below.
   for (const auto& b : blocks::all()) {
     const bool known = b.name.rfind("clip_", 0) == 0 || b.name.rfind("weight_table", 0) == 0 ||
                        b.name == "gauss_weight" ||
                        std::any_of(v.begin(), v.end(), [&](const Spec& x) { return x.block == b.name; });
-    if (!known) v.push_back({b.name, b.name, b.name, rtl_or_null(b.name), "tu_" + b.name});
+    if (!known) v.push_back({b.name, b.name, b.name, rtl_or_null(b.name), "tu_" + b.name, b.err_metric});
   }
   return v;
 }
@@ -422,6 +423,25 @@ std::vector<size_t> frontier(const std::vector<std::pair<double, double>>& pts) 
 
 double cycles_x(const Row& r) { return static_cast<double>(r.latency_cycles) + r.ii_cycles; }
 
+// A block's rows that have the plotted measure (cycles, or Yosys cells), their points
+// (measure, max abs error) and which of them are on the Pareto frontier.
+struct Points {
+  std::vector<const Row*> rows;
+  std::vector<std::pair<double, double>> xy;
+  std::set<const Row*> front;
+};
+Points points(const std::vector<Row>& rs, const std::string& grp, bool by_cells) {
+  Points p;
+  for (const auto& r : rs) {
+    const double x = by_cells ? static_cast<double>(r.cells) : cycles_x(r);
+    if (r.block != grp || x <= 0 || r.latency_cycles < 0 || r.max_abs_err <= 0) continue;
+    p.rows.push_back(&r);
+    p.xy.emplace_back(x, r.max_abs_err);
+  }
+  for (size_t i : frontier(p.xy)) p.front.insert(p.rows[i]);
+  return p;
+}
+
 // Per block: error against cycles and against Yosys cells, frontier joined by a line.
 void plots(const std::vector<Row>& rs, const std::string& dir) {
   fs::create_directories(dir);
@@ -430,22 +450,15 @@ void plots(const std::vector<Row>& rs, const std::string& dir) {
   g << "set terminal pngcairo size 900,600 noenhanced\nset logscale y\nset grid\nset key bottom left\n";
   for (const auto& grp : groups()) {
     for (int by_cells = 0; by_cells < 2; ++by_cells) {
-      std::vector<const Row*> sel;
-      std::vector<std::pair<double, double>> pts;
-      for (const auto& r : rs) {
-        const double x = by_cells ? static_cast<double>(r.cells) : cycles_x(r);
-        if (r.block != grp || x <= 0 || r.latency_cycles < 0 || r.max_abs_err <= 0) continue;
-        sel.push_back(&r);
-        pts.emplace_back(x, r.max_abs_err);
-      }
-      if (sel.empty()) continue;
+      const Points p = points(rs, grp, by_cells);
+      if (p.rows.empty()) continue;
       const std::string stem = dir + "/" + grp + (by_cells ? "_error_vs_cells" : "_error_vs_cycles");
       std::ofstream d(stem + ".dat"), fr(stem + "_frontier.dat");
-      for (size_t i = 0; i < sel.size(); ++i)
-        d << pts[i].first << " " << pts[i].second << " " << sel[i]->variant << "/" << sel[i]->scheme << "\n";
-      for (size_t i : frontier(pts)) fr << pts[i].first << " " << pts[i].second << "\n";
+      for (size_t i = 0; i < p.rows.size(); ++i)
+        d << p.xy[i].first << " " << p.xy[i].second << " " << p.rows[i]->variant << "/" << p.rows[i]->scheme << "\n";
+      for (size_t i : frontier(p.xy)) fr << p.xy[i].first << " " << p.xy[i].second << "\n";
       g << "set output '" << stem << ".png'\nset title '" << grp << ": max abs error ("
-        << sel[0]->err_unit << ") against " << (by_cells ? "area" : "cycles") << "'\n"
+        << p.rows[0]->err_unit << ") against " << (by_cells ? "area" : "cycles") << "'\n"
         << "set xlabel '" << (by_cells ? "Yosys cells (synth, generic gates)" : "latency + II (cycles)") << "'\n"
         << "set ylabel 'max abs error'\n"
         << "plot '" << stem << ".dat' using 1:2 with points pt 7 ps 1.2 title 'variant', '"
@@ -454,7 +467,10 @@ void plots(const std::vector<Row>& rs, const std::string& dir) {
     }
   }
   g.close();
-  if (std::system(("gnuplot " + gp).c_str()) != 0) throw std::runtime_error("report: gnuplot failed on " + gp);
+  // gnuplot warns about the zero-width range of one-variant blocks: keep its log for failures only.
+  if (std::system(("gnuplot " + gp + " 2>" + gp + ".log").c_str()) != 0)
+    throw std::runtime_error("report: gnuplot failed on " + gp + " (see " + gp + ".log)");
+  fs::remove(gp + ".log");
   std::cerr << "wrote plots to " << dir << "\n";
 }
 
@@ -489,15 +505,17 @@ void markdown(const std::vector<Row>& rs, const Options& opt) {
       o << "\n\n";
     }
     o << "| variant | scheme | max abs err | rms err | max ULP | latency | II | cycles from | cells | mul | "
-         "C model ns/item | RTL sim items/s | notes |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+         "C model ns/item | RTL sim items/s | Pareto | notes |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    const Points pc = points(rs, grp, false), pa = points(rs, grp, true);
     for (const auto& r : rs) {
       if (r.block != grp) continue;
+      const std::string pareto = std::string(pc.front.count(&r) ? "cycles " : "") + (pa.front.count(&r) ? "cells" : "");
       o << "| " << r.variant << " | " << r.scheme << " | " << fmt_g(r.max_abs_err) << " | " << fmt_g(r.rms_err)
         << " | " << fmt_g(r.max_ulp_err, "%.3g") << " | " << na(r.latency_cycles) << " | " << fmt_g(r.ii_cycles, "%.3g")
         << " | " << r.cycles_source << " | " << (r.cells < 0 ? r.area_source : std::to_string(r.cells)) << " | "
         << na(r.multipliers) << " | " << fmt_g(r.cmodel_ns_per_item, "%.1f") << " | "
         << (r.rtl_sim_items_per_s < 0 ? r.rtl_sim_source : fmt_g(r.rtl_sim_items_per_s, "%.0f")) << " | "
-        << r.notes << " |\n";
+        << pareto << " | " << r.notes << " |\n";
     }
   }
   std::ofstream(opt.markdown) << o.str();
@@ -545,7 +563,7 @@ std::vector<Row> rows(const Options& opt) {
     else if (g == "weight_table") r = table_rows(opt, cache);
     else
       for (const auto& s : registry_specs())
-        if (s.group == g) r.push_back(registry_row(s.group, s.variant, s.block, s.rtl, s.top, opt, cache));
+        if (s.group == g) r.push_back(registry_row(s, opt, cache));
     std::cerr << "report: " << g << " (" << r.size() << " rows)\n";
     out.insert(out.end(), r.begin(), r.end());
   }
