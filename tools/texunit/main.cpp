@@ -202,11 +202,17 @@ int main(int argc, char** argv) {
   rep->add_flag("--no-yosys", no_yosys, "do not synthesise (cells: not measured)");
   rep->add_option("--root", ro.root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
 
+  std::string rtl_top;
+  auto* rtf = app.add_subcommand("rtl-files", "list the RTL files a top needs (package first), for Yosys / Verilator scripts");
+  rtf->add_option("TOP", rtl_top, "module name, e.g. tu_persp")->required();
+  rtf->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+
   tu::plan::Options po;
   auto* pln = app.add_subcommand("plan", "specialise the unit to a scene: blocks, variants, RTL configuration");
   pln->add_option("SCENE", po.scene, "scene JSON file, or 'default'")->required();
   pln->add_option("--report", po.report, "measured report table (scripts/report.sh)");
   pln->add_option("--out", po.out_sv, "write the RTL configuration package (tu_unit_cfg_pkg) here");
+  pln->add_option("--out-full", po.out_full_sv, "write the full unit's configuration package here");
   pln->add_flag("--json", po.json, "print the plan as JSON");
 
   tu::cli::RenderArgs render_args;
@@ -223,6 +229,10 @@ int main(int argc, char** argv) {
       return tu::report::run(ro);
     }
     if (*pln) return tu::plan::run(po);
+    if (*rtf) {
+      for (const auto& f : tu::report::rtl_files(root, rtl_top)) std::cout << f << "\n";
+      return 0;
+    }
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*rqc) return cmd_relief_quality(rq);
     if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000, demo_out);

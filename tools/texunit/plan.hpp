@@ -14,6 +14,7 @@ struct Options {
   std::string scene;                             // file, or "default"
   std::string report = "docs/report/report.json";  // measured table (`scripts/report.sh`)
   std::string out_sv;                            // SystemVerilog package; empty: none
+  std::string out_full_sv;                       // the same for the full unit (area comparison)
   bool json = false;
 };
 

@@ -114,6 +114,8 @@ uint64_t fnv1a(const std::string& s, uint64_t h = 1469598103934665603ull) {
 // The files a top needs: the package(s) it or its submodules name, then the module files of
 // every tu_* module reachable from the top (sorted, so the Yosys input does not depend on order
 // of discovery).
+}  // namespace
+
 std::vector<std::string> rtl_files(const std::string& root, const std::string& top) {
   std::map<std::string, std::string> module_file, text;
   const std::regex decl(R"(^\s*(module|package)\s+(\w+))");
@@ -135,7 +137,8 @@ std::vector<std::string> rtl_files(const std::string& root, const std::string& t
     const std::string f = module_file.at(todo.back());
     todo.pop_back();
     if (!files.insert(f).second) continue;
-    const std::string& t = text.at(f);
+    // Names in comments are not instances.
+    const std::string t = std::regex_replace(text.at(f), std::regex("//[^\n]*"), "");
     for (auto it = std::sregex_iterator(t.begin(), t.end(), ident); it != std::sregex_iterator(); ++it) {
       const std::string n = it->str();
       if (!module_file.count(n)) continue;
@@ -148,6 +151,8 @@ std::vector<std::string> rtl_files(const std::string& root, const std::string& t
     if (!pkgs.count(f)) out.push_back(f);
   return out;
 }
+
+namespace {
 
 struct AreaCache {
   std::string path;
