@@ -27,7 +27,8 @@ cells() {
   while read -r name value; do
     if grep -qx "$name" <<<"$declared"; then chp+="chparam -set $name $value $top; "; set+="$name=$value "; fi
   done < <(params "$1")
-  yosys -q -l "$dir/log" -p "read_verilog -sv $files; $chp hierarchy -top $top; proc; flatten; opt; synth -flatten -top $top; tee -o $dir/stat stat" >/dev/null
+  yosys -q -l "$dir/log" -p "read_verilog -sv $files; $chp hierarchy -top $top; proc; flatten; opt; synth -flatten -top $top; tee -o $dir/stat stat" >/dev/null 2>"$dir/err" ||
+    { cat "$dir/err" >&2; exit 2; }
   echo "$(grep -E 'Number of cells' "$dir/stat" | tail -1 | awk '{print $NF}') ${set:-(no parameter of $top set)}"
 }
 
