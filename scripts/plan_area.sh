@@ -32,8 +32,10 @@ cells() {
   echo "$(grep -E 'Number of cells' "$dir/stat" | tail -1 | awk '{print $NF}') ${set:-(no parameter of $top set)}"
 }
 
-read -r full full_set <<<"$(cells "$dir/full.sv")"
-read -r plan plan_set <<<"$(cells "$dir/plan.sv")"
+full_out=$(cells "$dir/full.sv")  # an assignment, so that a failed synthesis stops the script
+plan_out=$(cells "$dir/plan.sv")
+read -r full full_set <<<"$full_out"
+read -r plan plan_set <<<"$plan_out"
 echo "$top full:        $full cells  ($full_set)"
 echo "$top specialised: $plan cells  ($plan_set) for $scene"
 if [ "$full_set" != "$plan_set" ] && [ "$plan" -ge "$full" ]; then
