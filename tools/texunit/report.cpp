@@ -439,7 +439,7 @@ Points points(const std::vector<Row>& rs, const std::string& grp, bool by_cells)
   Points p;
   for (const auto& r : rs) {
     const double x = by_cells ? static_cast<double>(r.cells) : cycles_x(r);
-    if (r.block != grp || x <= 0 || r.latency_cycles < 0 || r.max_abs_err <= 0) continue;
+    if (r.block != grp || x <= 0 || r.latency_cycles < 0 || !(r.max_abs_err >= 0)) continue;
     p.rows.push_back(&r);
     p.xy.emplace_back(x, r.max_abs_err);
   }
@@ -455,7 +455,10 @@ void plots(const std::vector<Row>& rs, const std::string& dir) {
   g << "set terminal pngcairo size 900,600 noenhanced\nset logscale y\nset grid\nset key bottom left\n";
   for (const auto& grp : groups()) {
     for (int by_cells = 0; by_cells < 2; ++by_cells) {
-      const Points p = points(rs, grp, by_cells);
+      // Error 0 (bit-exact blocks) has no place on the log scale: frontier only, not drawn.
+      Points p = points(rs, grp, by_cells);
+      for (size_t i = p.rows.size(); i-- > 0;)
+        if (p.xy[i].second <= 0) p.rows.erase(p.rows.begin() + static_cast<long>(i)), p.xy.erase(p.xy.begin() + static_cast<long>(i));
       if (p.rows.empty()) continue;
       const std::string stem = dir + "/" + grp + (by_cells ? "_error_vs_cells" : "_error_vs_cycles");
       std::ofstream d(stem + ".dat"), fr(stem + "_frontier.dat");
