@@ -452,7 +452,8 @@ void plots(const std::vector<Row>& rs, const std::string& dir) {
   fs::create_directories(dir);
   const std::string gp = dir + "/report.gp";
   std::ofstream g(gp);
-  g << "set terminal pngcairo size 900,600 noenhanced\nset logscale y\nset grid\nset key bottom left\n";
+  g << "set terminal pngcairo size 900,600 noenhanced\nset logscale y\nset grid\nset key bottom left\n"
+    << "set offsets graph 0.05, graph 0.3, graph 0.1, graph 0.1\n";  // room for the labels
   for (const auto& grp : groups()) {
     for (int by_cells = 0; by_cells < 2; ++by_cells) {
       // Error 0 (bit-exact blocks) has no place on the log scale: frontier only, not drawn.
@@ -471,7 +472,7 @@ void plots(const std::vector<Row>& rs, const std::string& dir) {
         << "set ylabel 'max abs error'\n"
         << "plot '" << stem << ".dat' using 1:2 with points pt 7 ps 1.2 title 'variant', '"
         << stem << "_frontier.dat' using 1:2 with linespoints lw 2 pt 6 ps 2 title 'Pareto frontier', '"
-        << stem << ".dat' using 1:2:3 with labels font ',8' offset 0,0.8 notitle\n";
+        << stem << ".dat' using 1:2:3 with labels rotate by 25 left font ',8' offset 0.5,0.5 notitle\n";
     }
   }
   g.close();
