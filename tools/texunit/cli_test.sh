@@ -69,6 +69,13 @@ SV
     if "$tu" plan "$tmp/tight2.json" 2>"$tmp/err2" >/dev/null; then fail "accepted max_texel_err 0.001"; fi
     grep -q "/error_budget/max_texel_err = 0.001: no persp variant reaches it" "$tmp/err2" || fail "message: $(cat "$tmp/err2")"
     ;;
+  plan_area_ui_quad)
+    # The RTL top synthesised with the full and with ui_quad's parameters (pre-techmap cells):
+    # the plan sets HasEwa = 0 and the cells drop (the script fails otherwise).
+    TU_TEXUNIT="$tu" scripts/plan_area.sh --coarse docs/scenes/ui_quad.json >"$tmp/out"
+    cat "$tmp/out"
+    grep -q "full: .*HasEwa=1" "$tmp/out" && grep -q "specialised: .*HasEwa=0" "$tmp/out" || fail "HasEwa not set"
+    ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"
