@@ -4,6 +4,7 @@
 // registry (random + stiff vectors) and its Verilated RTL.
 #include "report.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
