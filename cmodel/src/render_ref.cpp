@@ -100,6 +100,9 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
       rec.x = x, rec.y = y, rec.object = c.object, rec.u = u, rec.v = v;
       const auto j = ellipse::analytic(k, x, y);
       const ellipse::FootprintParams fp{m.max_aniso, static_cast<double>(tx.num_levels() - 1)};
+      const auto foot = ellipse::footprint(j, fp);
+      rec.aniso = foot.aniso;
+      rec.footprint_lod = foot.lod;
       switch (filter.value_or(m.filter)) {
         case scene::Filter::Nearest:
           rec.color = tx.fetch(0, static_cast<int64_t>(std::floor(u)), static_cast<int64_t>(std::floor(v)));
@@ -110,7 +113,7 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
           rec.texels = 4;
           break;
         case scene::Filter::Trilinear:
-          rec.lod = ellipse::footprint(j, fp).lod;
+          rec.lod = foot.lod;
           rec.color = to8(tex::trilinear_ref(tx, rec.lod, u, v));
           rec.texels = 8;
           break;

@@ -122,3 +122,21 @@ TEST(RenderRef, DumpAndHeatmap) {
   for (const auto& p : h.px) EXPECT_EQ(p, (img::Rgba8{0, 0, 0, 255}));
 }
 }  // namespace
+
+// Every scene in docs/scenes/ loads with the scene loader and renders with the float reference
+// (`texunit render SCENE --engine ref`), covering pixels of every object.
+TEST(RenderRef, EveryDocsSceneLoadsAndRenders) {
+  int scenes = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(TU_SOURCE_DIR) + "/docs/scenes")) {
+    if (e.path().extension() != ".json") continue;
+    SCOPED_TRACE(e.path().string());
+    const auto s = tu::scene::load(e.path().string());
+    EXPECT_LE(s.camera.width * s.camera.height, 128 * 96) << "keep docs scenes small (test time)";
+    const auto f = tu::render::render_ref(s);
+    std::vector<int> per_object(s.objects.size());
+    for (const auto& p : f.pixels) ++per_object[static_cast<size_t>(p.object)];
+    for (size_t o = 0; o < per_object.size(); ++o) EXPECT_GT(per_object[o], 0) << s.objects[o].name;
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 2);
+}

@@ -11,6 +11,7 @@
 #include "complexity/complexity.hpp"
 #include "pom/relief_quality.hpp"
 #include "cosim.hpp"
+#include "plan.hpp"
 #include "render_cmd.hpp"
 #include "sysmodel_cmd.hpp"
 #include "report.hpp"
@@ -193,13 +194,33 @@ int main(int argc, char** argv) {
   rqc->add_option("--scale", rq.scale, "height scale S")->check(CLI::Range(0.0, 0.99));
   rqc->add_option("--debug-dir", rq.debug_dir, "write layer-count debug PNGs here")->check(CLI::ExistingDirectory);
 
-  std::vector<std::string> rep_blocks;
-  std::string rep_json, rep_plots;
-  auto* rep = app.add_subcommand("report", "error / cycles / area per block variant (docs/blocks/gaussian.md)");
-  rep->add_option("--blocks", rep_blocks, "clip_volume,gauss_weight,weight_table,pom_layers,pom_march,iter_parallax,pom_unit")->delimiter(',')->required();
-  rep->add_option("--json", rep_json, "write the rows as a JSON array");
-  rep->add_option("--plots", rep_plots, "directory for error_vs_cycles.png / error_vs_cells.png");
-  rep->add_option("--root", root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
+  tu::report::Options ro;
+  bool no_yosys = false;
+  auto* rep = app.add_subcommand("report", "error / cycles / area / speed of every block variant (docs/report.md)");
+  std::string known;
+  for (const auto& g : tu::report::groups()) known += (known.empty() ? "" : ",") + g;
+  rep->add_option("--blocks", ro.blocks, "comma-separated subset of " + known + " (default: all)")->delimiter(',');
+  rep->add_option("--json", ro.json, "write the rows as a JSON array");
+  rep->add_option("--plots", ro.plots, "directory for the per-block Pareto plots (gnuplot PNG)");
+  rep->add_option("--markdown", ro.markdown, "write a Markdown table grouped per block");
+  rep->add_option("--count", ro.count, "random vectors per registry block (plus its stiff set)")
+      ->check(CLI::Range(1ull, 1ull << 26));
+  rep->add_option("--yosys-cache", ro.yosys_cache, "JSON cache of Yosys results (keyed by the RTL files' hash)");
+  rep->add_flag("--no-yosys", no_yosys, "do not synthesise (cells: not measured)");
+  rep->add_option("--root", ro.root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
+
+  std::string rtl_top;
+  auto* rtf = app.add_subcommand("rtl-files", "list the RTL files a top needs (package first), for Yosys / Verilator scripts");
+  rtf->add_option("TOP", rtl_top, "module name, e.g. tu_persp")->required();
+  rtf->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+
+  tu::plan::Options po;
+  auto* pln = app.add_subcommand("plan", "specialise the unit to a scene: blocks, variants, RTL configuration");
+  pln->add_option("SCENE", po.scene, "scene JSON file, or 'default'")->required();
+  pln->add_option("--report", po.report, "measured report table (scripts/report.sh)");
+  pln->add_option("--out", po.out_sv, "write the RTL configuration package (tu_unit_cfg_pkg) here");
+  pln->add_option("--out-full", po.out_full_sv, "write the full unit's configuration package here");
+  pln->add_flag("--json", po.json, "print the plan as JSON");
 
   tu::cli::RenderArgs render_args;
   auto* rnd = tu::cli::add_render(app, render_args);
@@ -213,7 +234,15 @@ int main(int argc, char** argv) {
     if (*sysm) return tu::cli::run_sysmodel(sysmodel_args);
     if (*cos) return cmd_cosim(block, file, stall, seed, fst, json);
     if (*gen) return cmd_gen_rtl(root, check);
-    if (*rep) return tu::report::run(rep_blocks, rep_json, rep_plots, root);
+    if (*rep) {
+      ro.yosys = !no_yosys;
+      return tu::report::run(ro);
+    }
+    if (*pln) return tu::plan::run(po);
+    if (*rtf) {
+      for (const auto& f : tu::report::rtl_files(root, rtl_top)) std::cout << f << "\n";
+      return 0;
+    }
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*rqc) return cmd_relief_quality(rq);
     if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000, demo_out);

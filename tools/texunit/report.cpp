@@ -1,9 +1,11 @@
-// `texunit report`: one row per block variant with error, cycles, area and C-model speed; the
-// first piece of the project-wide "error against run time" report. Generic rows: a block adds a
-// row producer to `producers()`.
+// `texunit report`: one row per block variant with error, cycles, area, C-model speed and RTL
+// simulation speed: the project-wide "error against run time" table (docs/report.md).
+// Gaussian rows use exhaustive C-model statistics; every other block's rows come from the block
+// registry (random + stiff vectors) and its Verilated RTL.
 #include "report.hpp"
 #include "report_relief.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -12,7 +14,11 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <regex>
+#include <set>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "block.hpp"
 #include "cosim.hpp"
@@ -22,9 +28,15 @@
 
 namespace fs = std::filesystem;
 
+namespace tu::cosim {
+RtlBlock rtl_persp_direct();  // persp_rtl.cpp (same vectors as persp, not in the registry)
+}
+
 namespace tu::report {
 
 namespace {
+using json = nlohmann::json;
+
 template <class F>
 double ns_per_item(F&& f, uint64_t items) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -39,6 +51,28 @@ double ns_per_item(F&& f, uint64_t items) {
   return ns / static_cast<double>(items * static_cast<uint64_t>(reps));
 }
 
+// Latency / II measured on the Verilated RTL (stall-free prefix) and its simulation throughput
+// with 30% random stalls, checked bit for bit against the C model: a report row never carries the
+// speed of an RTL that disagrees with the model.
+void measure_rtl(Row& r, const cosim::RtlBlock& rtl, const blocks::Block& b, const std::vector<blocks::Row>& in) {
+  const std::vector<blocks::Row> prefix(in.begin(), in.begin() + static_cast<long>(std::min<size_t>(in.size(), 256)));
+  const auto [lat, ii] = rtl.timing(prefix);
+  r.latency_cycles = static_cast<int64_t>(lat);
+  r.ii_cycles = ii;
+  r.cycles_source = "measured (Verilator " + r.rtl_top + ")";
+  cosim::RunOptions ro;
+  ro.stall_prob = 0.3;
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto rr = rtl.run(in, ro);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (size_t i = 0; i < in.size(); ++i)
+    if (rr.hung || i >= rr.outputs.size() || rr.outputs[i] != b.model(in[i]))
+      throw std::runtime_error("report: " + r.rtl_top + " differs from the C model of block '" + b.name +
+                               "' at vector " + std::to_string(i) + " (run `texunit cosim`)");
+  r.rtl_sim_items_per_s = static_cast<double>(in.size()) / s;
+  r.rtl_sim_source = "measured (Verilator, " + std::to_string(in.size()) + " vectors, 30% stalls)";
+}
+
 // Verilator timing (measured) or the scheduler's estimate.
 void cycles(Row& r, const std::string& graph) {
   const auto pred = sched::schedule(gauss::scheme(graph));
@@ -49,44 +83,187 @@ void cycles(Row& r, const std::string& graph) {
   const auto& lim = gauss::scheme(graph).limits;
   if (lim.count("mul")) r.multipliers = std::min<int64_t>(r.multipliers, lim.at("mul"));
   try {
+    const auto& rtl = cosim::find_rtl(graph);
     const auto& b = blocks::find(graph);
-    std::vector<cosim::Row> in = b.inputs("random", 64, 3);
-    const auto [lat, ii] = cosim::find_rtl(graph).timing(in);
-    r.latency_cycles = static_cast<int>(lat);
-    r.ii_cycles = ii;
-    r.cycles_source = "measured (Verilator " + graph + ")";
     r.rtl_top = "tu_" + graph;
+    measure_rtl(r, rtl, b, b.inputs("random", 4096, 3));
   } catch (const std::invalid_argument&) {
   }
 }
 
-void area(Row& r, const std::string& root) {
-  if (r.rtl_top.empty()) return;
-  const std::string rtl = root + "/rtl/";
-  std::string files = rtl + "0_pkg/tu_formats_pkg.sv " + rtl + "common/tu_pipe_valid.sv ";
-  for (const char* f : {"generated/tu_clip_coef_mm3.sv", "generated/tu_clip_seg_mm1.sv", "generated/tu_wtab1d_rom.sv",
-                        "generated/tu_wtab2d_rom.sv",
-                        "gauss/tu_clip_abs.sv", "gauss/tu_clip_fold.sv", "gauss/tu_clip_mulfloor.sv"})
-    files += rtl + f + " ";
-  files += rtl + "gauss/" + r.rtl_top + ".sv";
-  const std::string cmd = root + "/scripts/yosys_area.sh " + r.rtl_top + " " + files + " 2>/dev/null";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return;
-  char buf[512];
-  std::string out;
-  while (fgets(buf, sizeof buf, p)) out += buf;
-  if (pclose(p) != 0) return;
-  auto num = [&](const std::string& key) {
-    const auto k = out.find("\"" + key + "\": ");
-    return k == std::string::npos ? -1 : std::atoi(out.c_str() + k + key.size() + 4);
-  };
-  r.cells = num("cells");
-  r.flip_flops = num("flip_flops");
-  r.multipliers = num("multipliers");
+// A row whose variant has no RTL of its own (the structure's RTL was timed): keep the timing as
+// an estimate, drop the RTL speed and area.
+void no_rtl(Row& r, const std::string& cycles_source) {
+  r.rtl_top.clear();
+  r.cycles_source = cycles_source;
+  r.rtl_sim_items_per_s = -1;
+  r.rtl_sim_source = "not measured: no RTL for this variant";
+}
+
+// ---- area: Yosys on the RTL top and exactly the files it instantiates, cached by content hash ----
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+uint64_t fnv1a(const std::string& s, uint64_t h = 1469598103934665603ull) {
+  for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+// The files a top needs: the package(s) it or its submodules name, then the module files of
+// every tu_* module reachable from the top (sorted, so the Yosys input does not depend on order
+// of discovery).
+}  // namespace
+
+std::vector<std::string> rtl_files(const std::string& root, const std::string& top) {
+  std::map<std::string, std::string> module_file, text;
+  const std::regex decl(R"(^\s*(module|package)\s+(\w+))");
+  for (const auto& e : fs::recursive_directory_iterator(fs::path(root) / "rtl")) {
+    if (e.path().extension() != ".sv") continue;
+    const std::string t = slurp(e.path());
+    std::istringstream ls(t);
+    for (std::string line; std::getline(ls, line);) {
+      std::smatch m;
+      if (std::regex_search(line, m, decl)) module_file[m[2]] = e.path().string();
+    }
+    text[e.path().string()] = t;
+  }
+  if (!module_file.count(top)) throw std::invalid_argument("report: RTL top '" + top + "' not found under " + root + "/rtl");
+  std::set<std::string> files, pkgs;
+  std::vector<std::string> todo = {top};
+  const std::regex ident(R"(\btu_\w+)");
+  while (!todo.empty()) {
+    const std::string f = module_file.at(todo.back());
+    todo.pop_back();
+    if (!files.insert(f).second) continue;
+    // Names in comments are not instances.
+    const std::string t = std::regex_replace(text.at(f), std::regex("//[^\n]*"), "");
+    for (auto it = std::sregex_iterator(t.begin(), t.end(), ident); it != std::sregex_iterator(); ++it) {
+      const std::string n = it->str();
+      if (!module_file.count(n)) continue;
+      if (n.size() > 4 && n.compare(n.size() - 4, 4, "_pkg") == 0) pkgs.insert(module_file.at(n));
+      else todo.push_back(n);
+    }
+  }
+  std::vector<std::string> out(pkgs.begin(), pkgs.end());
+  for (const auto& f : files)
+    if (!pkgs.count(f)) out.push_back(f);
+  return out;
+}
+
+namespace {
+
+struct AreaCache {
+  std::string path;
+  json j = json::object();
+  explicit AreaCache(std::string p) : path(std::move(p)) {
+    if (path.empty() || !fs::exists(path)) return;
+    try {
+      j = json::parse(slurp(path));
+    } catch (const json::exception& e) {
+      throw std::runtime_error(path + ": not a Yosys cache (" + e.what() + "); delete it to rebuild");
+    }
+  }
+  void save() const {
+    if (path.empty()) return;
+    if (fs::path(path).has_parent_path()) fs::create_directories(fs::path(path).parent_path());
+    std::ofstream(path + ".tmp") << j.dump(1) << "\n";
+    fs::rename(path + ".tmp", path);
+  }
+};
+
+void area(Row& r, const Options& opt, AreaCache& cache) {
+  if (r.rtl_top.empty()) {
+    r.area_source = "not measured: no RTL";
+    return;
+  }
+  if (!opt.yosys) {
+    r.area_source = "not measured: " + opt.no_yosys_why;
+    return;
+  }
+  const auto files = rtl_files(opt.root, r.rtl_top);
+  uint64_t h = fnv1a(slurp(fs::path(opt.root) / "scripts/yosys_area.sh"));
+  std::string list;
+  for (const auto& f : files) {
+    h = fnv1a(fs::path(f).filename().string() + slurp(f), h);
+    list += f + " ";
+  }
+  char key[17];
+  std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(h));
+  json& e = cache.j[r.rtl_top];
+  if (!e.is_object() || e.value("hash", "") != key) {
+    std::cerr << "yosys: synthesising " << r.rtl_top << " (" << files.size() << " files)\n";
+    FILE* p = popen((opt.root + "/scripts/yosys_area.sh " + r.rtl_top + " " + list + " 2>/dev/null").c_str(), "r");
+    std::string out;
+    char buf[512];
+    while (p && fgets(buf, sizeof buf, p)) out += buf;
+    if (!p || pclose(p) != 0) throw std::runtime_error("report: Yosys failed on " + r.rtl_top + " (run scripts/yosys_area.sh " + r.rtl_top + " " + list + ")");
+    e = json::parse(out);
+    e["hash"] = key;
+    cache.save();
+  }
+  r.cells = e.at("cells").get<int64_t>();
+  r.flip_flops = e.at("flip_flops").get<int64_t>();
+  r.multipliers = e.at("multipliers").get<int64_t>();
   r.area_source = "yosys synth";
 }
 
-std::vector<Row> clip_rows(const std::string& root, bool yosys) {
+// Registry-backed groups: (group, variant, registry block, RTL binding or null, RTL top).
+struct Spec {
+  std::string group, variant, block;
+  const cosim::RtlBlock* rtl;
+  std::string top, err_unit;  // err_unit: what the registry's error function measures
+};
+
+// Rows of a registry block: error over its random + stiff vectors, C-model speed, RTL timing and
+// simulation speed, area.
+Row registry_row(const Spec& spec, const Options& opt, AreaCache& cache) {
+  const auto& b = blocks::find(spec.block);
+  auto in = b.inputs("random", opt.count, 7);
+  if (std::find(b.sets.begin(), b.sets.end(), "stiff") != b.sets.end())
+    for (auto& x : b.inputs("stiff", 0, 0)) in.push_back(std::move(x));
+  Row r;
+  r.block = spec.group;
+  r.variant = spec.variant;
+  r.scheme = spec.block;
+  r.err_unit = spec.err_unit;
+  double sum_sq = 0;
+  uint64_t n = 0, flagged = 0;
+  for (const auto& x : in) {
+    const auto e = b.error(x, b.model(x), b.ref(x));
+    if (!e.valid) {
+      ++flagged;
+      continue;
+    }
+    r.max_abs_err = std::max(r.max_abs_err, e.abs);
+    r.max_ulp_err = std::max(r.max_ulp_err, e.ulp);
+    sum_sq += e.abs * e.abs;
+    ++n;
+  }
+  r.rms_err = n ? std::sqrt(sum_sq / static_cast<double>(n)) : 0;
+  const size_t timed = std::min<size_t>(in.size(), 4096);
+  r.cmodel_ns_per_item = ns_per_item([&] {
+    uint64_t s = 0;
+    for (size_t i = 0; i < timed; ++i) s += b.model(in[i])[0];
+    return s;
+  }, timed);
+  r.latency_cycles = b.latency_cycles;
+  r.ii_cycles = b.ii_cycles;
+  r.cycles_source = "declared (block registry)";
+  if (spec.rtl) {
+    r.rtl_top = spec.top;
+    measure_rtl(r, *spec.rtl, b, in);
+  }
+  area(r, opt, cache);
+  std::ostringstream no;
+  no << opt.count << " random + " << (in.size() - opt.count) << " stiff vectors, " << flagged << " flagged (excluded)";
+  r.notes = no.str();
+  return r;
+}
+std::vector<Row> clip_rows(const Options& opt, AreaCache& cache) {
   // variant -> schemes (graph names); RTL exists for the graphs that are block names.
   const std::map<std::string, std::vector<std::string>> schemes = {
       {"seed_p1", {"clip_p1"}},        {"seed_p2", {"est_clip_horner_deg2", "est_clip_seq_deg2"}},
@@ -105,6 +282,7 @@ std::vector<Row> clip_rows(const std::string& root, bool yosys) {
     for (const auto& g : schemes.at(v.name)) {
       Row r;
       r.block = "clip_volume";
+      r.err_unit = "volume (0..1)";
       r.variant = v.name;
       r.scheme = g;
       r.max_abs_err = st.max_abs;
@@ -115,10 +293,9 @@ std::vector<Row> clip_rows(const std::string& root, bool yosys) {
       // The RTL implements the minimax coefficients; seed coefficients on the same structure are
       // estimates (same operators, different constants).
       if ((v.name == "seed_p1" || v.name == "seed_p3") && !r.rtl_top.empty()) {
-        r.rtl_top.clear();
-        r.cycles_source = "estimated (" + g + "; RTL has the mm coefficients)";
+        no_rtl(r, "estimated (" + g + "; RTL has the mm coefficients)");
       }
-      if (yosys) area(r, root);
+      area(r, opt, cache);
       std::ostringstream n;
       n << "approx " << st.max_approx << " + round " << st.max_round
         << (st.monotonic_half ? ", monotonic on [0,0.5]" : ", NOT monotonic on [0,0.5]")
@@ -130,10 +307,11 @@ std::vector<Row> clip_rows(const std::string& root, bool yosys) {
   return rows;
 }
 
-std::vector<Row> weight_rows(const std::string& root, bool yosys) {
+std::vector<Row> weight_rows(const Options& opt, AreaCache& cache) {
   const auto st = gauss::weight_exhaustive();
   Row r;
   r.block = "gauss_weight";
+  r.err_unit = "weight (0..1)";
   r.variant = "three_squarings";
   r.scheme = "gauss_weight";
   r.max_abs_err = st.max_abs;
@@ -145,12 +323,12 @@ std::vector<Row> weight_rows(const std::string& root, bool yosys) {
     return s;
   }, 1 << 16);
   cycles(r, "gauss_weight");
-  if (yosys) area(r, root);
+  area(r, opt, cache);
   r.notes = st.monotonic ? "exhaustive over 2^16 Q codes, monotonic" : "NOT monotonic";
   return {r};
 }
 
-std::vector<Row> table_rows(const std::string& root, bool yosys) {
+std::vector<Row> table_rows(const Options& opt, AreaCache& cache) {
   std::vector<Row> rows;
   const auto comp = gauss::table_stats(2, 0);
   for (int kind = 0; kind < 2; ++kind)
@@ -158,6 +336,7 @@ std::vector<Row> table_rows(const std::string& root, bool yosys) {
       const auto st = gauss::table_stats(kind, l);
       Row r;
       r.block = "weight_table";
+      r.err_unit = "weight (0..1)";
       r.variant = std::string(kind ? "2d_" : "1d_") + std::to_string(1 << l);
       r.scheme = kind ? "weight_table_2d" : "weight_table_1d";
       r.max_abs_err = st.max_abs;
@@ -168,10 +347,9 @@ std::vector<Row> table_rows(const std::string& root, bool yosys) {
       // only; other sizes have the same structure (estimate; the ROM depth differs).
       const int rtl_l = kind ? gauss::kWtab2dRtlLog2N : gauss::kWtabRtlLog2N;
       if (!r.rtl_top.empty() && l != rtl_l) {
-        r.rtl_top.clear();
-        r.cycles_source = "estimated (" + r.scheme + "; RTL has N = " + std::to_string(1 << rtl_l) + ")";
+        no_rtl(r, "estimated (" + r.scheme + "; RTL has N = " + std::to_string(1 << rtl_l) + ")");
       }
-      if (yosys) area(r, root);
+      area(r, opt, cache);
       const gauss::Table1D t1(kind ? 4 : l);
       const gauss::Table2D t2(kind ? l : 4);
       r.cmodel_ns_per_item = ns_per_item([&] {
@@ -197,92 +375,256 @@ std::string jnum(double x) {
   os << x;
   return os.str();
 }
-std::string jint(int64_t x) { return x < 0 ? "\"n/a\"" : std::to_string(x); }
-std::string jstr(const std::string& s) {
-  std::string o = "\"";
-  for (char c : s) o += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
-  return o + "\"";
+std::string jstr(const std::string& s) { return json(s).dump(); }
+// A measured count, or the reason it is missing.
+std::string jint(int64_t x, const std::string& why) { return x < 0 ? jstr(why) : std::to_string(x); }
+
+std::string na(int64_t x) { return x < 0 ? std::string("n/a") : std::to_string(x); }
+
+const cosim::RtlBlock* rtl_or_null(const std::string& name) {
+  try {
+    return &cosim::find_rtl(name);
+  } catch (const std::invalid_argument&) {
+    return nullptr;
+  }
+}
+std::vector<Spec> registry_specs() {
+  static const cosim::RtlBlock direct = cosim::rtl_persp_direct();
+  std::vector<Spec> v = {
+      {"reciprocal", "faithful_25b", "reciprocal", rtl_or_null("reciprocal"), "tu_reciprocal", "1/M, absolute"},
+      {"persp", "incremental", "persp", rtl_or_null("persp"), "tu_persp", "texels"},
+      {"persp", "direct", "persp", &direct, "tu_persp_direct", "texels"},
+      {"persp", "klane4", "persp_k4", rtl_or_null("persp_k4"), "tu_persp_klane", "texels (item = 4 pixels)"},
+      {"persp_setup", "setup", "persp_setup", rtl_or_null("persp_setup"), "tu_persp_setup", "seed value (0: exact)"},
+      {"ellipse", "analytic", "ellipse", rtl_or_null("ellipse"), "tu_ellipse", "LOD (mip levels)"},
+      {"pom_layers", "pom_layers", "pom_layers", rtl_or_null("pom_layers"), "tu_pom_layers", "layers"},
+      {"pom_march", "pom_march", "pom_march", rtl_or_null("pom_march"), "tu_pom_march", "march steps"},
+      {"iter_parallax", "iter_parallax", "iter_parallax", rtl_or_null("iter_parallax"), "tu_iter_parallax",
+       "uv in 2^-16 units"}};
+  // Any other registry block (e.g. a new one) gets a row of its own; the Gaussian blocks have
+  // the exhaustive producers below.
+  for (const auto& b : blocks::all()) {
+    const bool known = b.name.rfind("clip_", 0) == 0 || b.name.rfind("weight_table", 0) == 0 ||
+                       b.name == "gauss_weight" ||
+                       std::any_of(v.begin(), v.end(), [&](const Spec& x) { return x.block == b.name; });
+    if (!known) v.push_back({b.name, b.name, b.name, rtl_or_null(b.name), "tu_" + b.name, b.err_metric});
+  }
+  return v;
+}
+const std::vector<std::string> kGauss = {"clip_volume", "gauss_weight", "weight_table"};
+
+// Pareto frontier (minimise both): indices sorted by x.
+std::vector<size_t> frontier(const std::vector<std::pair<double, double>>& pts) {
+  std::vector<size_t> idx(pts.size());
+  for (size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+  std::sort(idx.begin(), idx.end(), [&](size_t a, size_t b) { return pts[a] < pts[b]; });
+  std::vector<size_t> f;
+  double best = INFINITY;
+  for (size_t i : idx)
+    if (pts[i].second < best) {
+      best = pts[i].second;
+      f.push_back(i);
+    }
+  return f;
+}
+
+double cycles_x(const Row& r) { return static_cast<double>(r.latency_cycles) + r.ii_cycles; }
+
+// A block's rows that have the plotted measure (cycles, or Yosys cells), their points
+// (measure, max abs error) and which of them are on the Pareto frontier.
+struct Points {
+  std::vector<const Row*> rows;
+  std::vector<std::pair<double, double>> xy;
+  std::set<const Row*> front;
+};
+Points points(const std::vector<Row>& rs, const std::string& grp, bool by_cells) {
+  Points p;
+  for (const auto& r : rs) {
+    const double x = by_cells ? static_cast<double>(r.cells) : cycles_x(r);
+    if (r.block != grp || x <= 0 || r.latency_cycles < 0 || !(r.max_abs_err >= 0)) continue;
+    p.rows.push_back(&r);
+    p.xy.emplace_back(x, r.max_abs_err);
+  }
+  for (size_t i : frontier(p.xy)) p.front.insert(p.rows[i]);
+  return p;
+}
+
+// Per block: error against cycles and against Yosys cells, frontier joined by a line.
+void plots(const std::vector<Row>& rs, const std::string& dir) {
+  fs::create_directories(dir);
+  const std::string gp = dir + "/report.gp";
+  std::ofstream g(gp);
+  g << "set terminal pngcairo size 900,600 noenhanced\nset logscale y\nset grid\nset key bottom left\n"
+    << "set offsets graph 0.05, graph 0.3, graph 0.1, graph 0.1\n";  // room for the labels
+  for (const auto& grp : groups()) {
+    for (int by_cells = 0; by_cells < 2; ++by_cells) {
+      // Error 0 (bit-exact blocks) has no place on the log scale: frontier only, not drawn.
+      Points p = points(rs, grp, by_cells);
+      for (size_t i = p.rows.size(); i-- > 0;)
+        if (p.xy[i].second <= 0) p.rows.erase(p.rows.begin() + static_cast<long>(i)), p.xy.erase(p.xy.begin() + static_cast<long>(i));
+      if (p.rows.empty()) continue;
+      const std::string stem = dir + "/" + grp + (by_cells ? "_error_vs_cells" : "_error_vs_cycles");
+      std::ofstream d(stem + ".dat"), fr(stem + "_frontier.dat");
+      for (size_t i = 0; i < p.rows.size(); ++i)
+        d << p.xy[i].first << " " << p.xy[i].second << " " << p.rows[i]->variant << "/" << p.rows[i]->scheme << "\n";
+      for (size_t i : frontier(p.xy)) fr << p.xy[i].first << " " << p.xy[i].second << "\n";
+      g << "set output '" << stem << ".png'\nset title '" << grp << ": max abs error ("
+        << p.rows[0]->err_unit << ") against " << (by_cells ? "area" : "cycles") << "'\n"
+        << "set xlabel '" << (by_cells ? "Yosys cells (synth, generic gates)" : "latency + II (cycles)") << "'\n"
+        << "set ylabel 'max abs error'\n"
+        << "plot '" << stem << ".dat' using 1:2 with points pt 7 ps 1.2 title 'variant', '"
+        << stem << "_frontier.dat' using 1:2 with linespoints lw 2 pt 6 ps 2 title 'Pareto frontier', '"
+        << stem << ".dat' using 1:2:3 with labels rotate by 25 left font ',8' offset 0.5,0.5 notitle\n";
+    }
+  }
+  g.close();
+  // gnuplot warns about the zero-width range of one-variant blocks: keep its log for failures only.
+  if (std::system(("gnuplot " + gp + " 2>" + gp + ".log").c_str()) != 0)
+    throw std::runtime_error("report: gnuplot failed on " + gp + " (see " + gp + ".log)");
+  fs::remove(gp + ".log");
+  std::cerr << "wrote plots to " << dir << "\n";
+}
+
+std::string fmt_g(double x, const char* f = "%.4g") {
+  char b[64];
+  std::snprintf(b, sizeof b, f, x);
+  return b;
+}
+
+void markdown(const std::vector<Row>& rs, const Options& opt) {
+  std::ostringstream o;
+  o << "# Error against run time: every block and variant\n\n"
+    << "Generated by `scripts/report.sh` (`texunit report --count " << opt.count
+    << "`); do not edit by hand. Column meanings: [README](../README.md#reading-the-report--specialising-the-unit).\n"
+    << "Error is against the block's float reference, in the unit named per block; cycles are latency + II "
+       "from Verilator where an RTL exists (else the estimator, column *cycles from*); cells / multipliers from "
+       "Yosys `synth` (generic gates) on the RTL top; C-model ns per item timed on this machine; RTL items/s is "
+       "the Verilator co-simulation throughput with 30% random stalls (outputs checked against the C model).\n";
+  for (const auto& grp : groups()) {
+    bool any = false;
+    for (const auto& r : rs) any = any || r.block == grp;
+    if (!any) continue;
+    std::string unit;
+    for (const auto& r : rs)
+      if (r.block == grp) unit = r.err_unit;
+    o << "\n## " << grp << "\n\nerror unit: " << unit << "\n\n";
+    if (!opt.plots.empty() && fs::exists(opt.plots + "/" + grp + "_error_vs_cycles.png")) {
+      const auto rel = fs::relative(fs::absolute(opt.plots), fs::absolute(opt.markdown).parent_path()).string();
+      o << "![" << grp << " error vs cycles](" << rel << "/" << grp << "_error_vs_cycles.png)";
+      if (fs::exists(opt.plots + "/" + grp + "_error_vs_cells.png"))
+        o << " ![" << grp << " error vs cells](" << rel << "/" << grp << "_error_vs_cells.png)";
+      o << "\n\n";
+    }
+    o << "| variant | scheme | max abs err | rms err | max ULP | latency | II | cycles from | cells | mul | "
+         "C model ns/item | RTL sim items/s | Pareto | notes |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    const Points pc = points(rs, grp, false), pa = points(rs, grp, true);
+    for (const auto& r : rs) {
+      if (r.block != grp) continue;
+      const std::string pareto = std::string(pc.front.count(&r) ? "cycles " : "") + (pa.front.count(&r) ? "cells" : "");
+      o << "| " << r.variant << " | " << r.scheme << " | " << fmt_g(r.max_abs_err) << " | " << fmt_g(r.rms_err)
+        << " | " << fmt_g(r.max_ulp_err, "%.3g") << " | " << na(r.latency_cycles) << " | " << fmt_g(r.ii_cycles, "%.3g")
+        << " | " << r.cycles_source << " | " << (r.cells < 0 ? r.area_source : std::to_string(r.cells)) << " | "
+        << na(r.multipliers) << " | " << fmt_g(r.cmodel_ns_per_item, "%.1f") << " | "
+        << (r.rtl_sim_items_per_s < 0 ? r.rtl_sim_source : fmt_g(r.rtl_sim_items_per_s, "%.0f")) << " | "
+        << pareto << " | " << r.notes << " |\n";
+    }
+  }
+  std::ofstream(opt.markdown) << o.str();
+  std::cerr << "wrote " << opt.markdown << "\n";
 }
 }  // namespace
 
 std::string Row::json() const {
   return "{\"block\": " + jstr(block) + ", \"variant\": " + jstr(variant) + ", \"scheme\": " +
-         jstr(scheme) + ", \"max_abs_err\": " + jnum(max_abs_err) + ", \"rms_err\": " +
-         jnum(rms_err) + ", \"max_ulp_err\": " + jnum(max_ulp_err) + ", \"latency_cycles\": " +
-         jint(latency_cycles) + ", \"ii_cycles\": " + jnum(ii_cycles) + ", \"cycles_source\": " +
-         jstr(cycles_source) + ", \"cells\": " + jint(cells) + ", \"flip_flops\": " +
-         jint(flip_flops) + ", \"multipliers\": " + jint(multipliers) + ", \"area_source\": " +
-         jstr(area_source) + ", \"memory_bits\": " + jint(memory_bits) +
-         ", \"cmodel_ns_per_item\": " + jnum(cmodel_ns_per_item) + ", \"rtl_sim_items_per_s\": " +
-         jnum(rtl_sim_items_per_s) + ", \"err_unit\": " + jstr(err_unit) + ", \"notes\": " + jstr(notes) + "}";
+         jstr(scheme) + ", \"err_unit\": " + jstr(err_unit) + ", \"max_abs_err\": " + jnum(max_abs_err) +
+         ", \"rms_err\": " + jnum(rms_err) + ", \"max_ulp_err\": " + jnum(max_ulp_err) +
+         ", \"latency_cycles\": " + jint(latency_cycles, "n/a") + ", \"ii_cycles\": " + jnum(ii_cycles) +
+         ", \"cycles_source\": " + jstr(cycles_source) + ", \"cells\": " + jint(cells, area_source) +
+         ", \"flip_flops\": " + jint(flip_flops, area_source) + ", \"multipliers\": " +
+         jint(multipliers, area_source) + ", \"area_source\": " + jstr(area_source) + ", \"rtl_top\": " +
+         jstr(rtl_top) + ", \"memory_bits\": " + jint(memory_bits, "n/a") + ", \"cmodel_ns_per_item\": " +
+         jnum(cmodel_ns_per_item) + ", \"rtl_sim_items_per_s\": " +
+         (rtl_sim_items_per_s < 0 ? jstr(rtl_sim_source) : jnum(rtl_sim_items_per_s)) +
+         ", \"rtl_sim_source\": " + jstr(rtl_sim_source) + ", \"notes\": " + jstr(notes) + "}";
 }
 
-std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string& root, bool yosys) {
+std::vector<std::string> groups() {
+  std::vector<std::string> g;
+  for (const auto& s : registry_specs())
+    if (std::find(g.begin(), g.end(), s.group) == g.end() && s.group != "pom_setup" && s.group != "pom_refine")
+      g.push_back(s.group);  // pom_setup, pom_refine: rows of pom_unit (report_relief.cpp)
+  g.insert(g.begin() + 3, kGauss.begin(), kGauss.end());  // after reciprocal, persp, ellipse: B1 .. B5 order
+  return g;
+}
+
+std::vector<Row> rows(const Options& opt) {
+  const auto known = groups();
+  for (const auto& b : opt.blocks)
+    if (std::find(known.begin(), known.end(), b) == known.end()) {
+      std::string k;
+      for (const auto& n : known) k += (k.empty() ? "" : ", ") + n;
+      throw std::invalid_argument("report: unknown block '" + b + "' (known: " + k + ")");
+    }
+  AreaCache cache(opt.yosys ? opt.yosys_cache : "");
   std::vector<Row> out;
-  for (const auto& b : blocks) {
+  for (const auto& g : known) {
+    if (!opt.blocks.empty() && std::find(opt.blocks.begin(), opt.blocks.end(), g) == opt.blocks.end()) continue;
     std::vector<Row> r;
-    if (b == "clip_volume") r = clip_rows(root, yosys);
-    else if (b == "gauss_weight") r = weight_rows(root, yosys);
-    else if (b == "weight_table") r = table_rows(root, yosys);
-    else if (is_relief_block(b)) r = relief_rows({b}, root, yosys);  // report_relief.cpp
-    else throw std::invalid_argument("report: unknown block '" + b + "' (known: clip_volume, gauss_weight, weight_table, pom_layers, pom_march, iter_parallax, pom_unit)");
+    if (g == "clip_volume") r = clip_rows(opt, cache);
+    else if (g == "gauss_weight") r = weight_rows(opt, cache);
+    else if (g == "weight_table") r = table_rows(opt, cache);
+    else if (is_relief_block(g)) {
+      // report_relief.cpp: the engines' cycles per pixel on the bricks scene stream, pom_unit with
+      // its stages pom_setup and pom_refine; area from the same Yosys cache.
+      r = relief_rows({g}, opt.root, false);
+      for (auto& x : r) area(x, opt, cache);
+    } else
+      for (const auto& s : registry_specs())
+        if (s.group == g) r.push_back(registry_row(s, opt, cache));
+    std::cerr << "report: " << g << " (" << r.size() << " rows)\n";
     out.insert(out.end(), r.begin(), r.end());
   }
   return out;
 }
 
-int run(const std::vector<std::string>& blocks, const std::string& json, const std::string& plots,
-        const std::string& root) {
-  const bool yosys = std::system("command -v yosys >/dev/null 2>&1") == 0;
-  const auto rs = rows(blocks, root, yosys);
-  std::printf("%-12s %-16s %-22s %10s %10s %9s %4s %5s %6s %4s %9s %8s\n", "block", "variant", "scheme",
-              "max_abs", "rms", "max_ulp", "lat", "II", "cells", "mul", "mem_bits", "ns/item");
-  auto na = [](int64_t x) { return x < 0 ? std::string("n/a") : std::to_string(x); };
+std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string& root, bool yosys) {
+  Options o;
+  o.blocks = blocks;
+  o.root = root;
+  o.yosys = yosys;
+  return rows(o);
+}
+
+int run(const Options& in) {
+  Options opt = in;
+  if (opt.yosys && std::system("command -v yosys >/dev/null 2>&1") != 0) {
+    opt.yosys = false;
+    opt.no_yosys_why = "yosys not installed";
+  }
+  // Everything is measured before any file is written: a failure leaves no partial output.
+  const auto rs = rows(opt);
+  std::printf("%-13s %-16s %-20s %10s %10s %9s %4s %5s %6s %4s %8s %10s\n", "block", "variant", "scheme",
+              "max_abs", "rms", "max_ulp", "lat", "II", "cells", "mul", "ns/item", "rtl_item/s");
   for (const auto& r : rs)
-    std::printf("%-12s %-16s %-22s %10.4g %10.4g %9.2f %4s %5.2f %6s %4s %9s %8.2f\n", r.block.c_str(),
+    std::printf("%-13s %-16s %-20s %10.4g %10.4g %9.3g %4s %5.2f %6s %4s %8.1f %10s\n", r.block.c_str(),
                 r.variant.c_str(), r.scheme.c_str(), r.max_abs_err, r.rms_err, r.max_ulp_err,
-                na(r.latency_cycles).c_str(), r.ii_cycles, na(r.cells).c_str(),
-                na(r.multipliers).c_str(), na(r.memory_bits).c_str(), r.cmodel_ns_per_item);
-  if (!yosys) std::printf("(yosys not installed: cells n/a)\n");
-  if (!json.empty()) {
-    std::ofstream o(json);
+                na(r.latency_cycles).c_str(), r.ii_cycles, na(r.cells).c_str(), na(r.multipliers).c_str(),
+                r.cmodel_ns_per_item, r.rtl_sim_items_per_s < 0 ? "n/a" : fmt_g(r.rtl_sim_items_per_s, "%.0f").c_str());
+  if (!opt.yosys) std::printf("(cells: not measured: yosys not installed or --no-yosys)\n");
+  if (!opt.json.empty()) {
+    std::ofstream o(opt.json);
     o << "[\n";
     for (size_t i = 0; i < rs.size(); ++i) o << "  " << rs[i].json() << (i + 1 < rs.size() ? ",\n" : "\n");
     o << "]\n";
-    std::cerr << "wrote " << json << "\n";
+    std::cerr << "wrote " << opt.json << "\n";
   }
-  if (!plots.empty()) {
-    fs::create_directories(plots);
-    const std::string dat = plots + "/report.dat";
-    {
-      std::ofstream d(dat);
-      d << "# block variant scheme max_abs_err latency ii cells\n";
-      for (const auto& r : rs)
-        if (r.latency_cycles >= 0)
-          d << r.block << "/" << r.variant << "/" << r.scheme << " " << r.max_abs_err << " "
-            << r.latency_cycles << " " << r.ii_cycles << " " << r.cells << "\n";
-    }
-    const std::string gp = plots + "/report.gp";
-    {
-      std::ofstream g(gp);
-      g << "set terminal pngcairo size 1200,800 noenhanced\nset logscale y\nset grid\nset key off\n"
-        << "set ylabel 'max abs error'\n"
-        << "set output '" << plots << "/error_vs_cycles.png'\n"
-        << "set xlabel 'cycles per item (latency + II; estimated where no RTL)'\n"
-        << "plot '" << dat << "' using ($3+$4):2 with points pt 7, '' using ($3+$4):2:1 with labels font ',7' offset 0,0.7\n"
-        << "set output '" << plots << "/error_vs_cells.png'\n"
-        << "set xlabel 'Yosys cells (synth, generic)'\n"
-        << "plot '" << dat << "' using ($5 > 0 ? $5 : 1/0):2 with points pt 7, '' using ($5 > 0 ? $5 : 1/0):2:1 with labels font ',7' offset 0,0.7\n";
-    }
-    for (const auto& b : blocks)
-      if (is_relief_block(b)) {
-        std::cerr << (relief_plot(plots) ? "wrote " + plots + "/relief_psnr_vs_steps.png, relief_psnr_vs_cycles.png\n"
-                                         : std::string("gnuplot failed (relief plots skipped)\n"));
-        break;
-      }
-    if (std::system(("gnuplot " + gp).c_str()) != 0) std::cerr << "gnuplot failed (plots skipped)\n";
-    else std::cerr << "wrote " << plots << "/error_vs_cycles.png, error_vs_cells.png\n";
+  if (!opt.plots.empty()) {
+    plots(rs, opt.plots);
+    if (std::any_of(rs.begin(), rs.end(), [](const Row& r) { return is_relief_block(r.block); }))
+      std::cerr << (relief_plot(opt.plots) ? "wrote " + opt.plots + "/relief_psnr_vs_steps.png, relief_psnr_vs_cycles.png\n"
+                                            : std::string("gnuplot failed (relief plots skipped)\n"));
   }
+  if (!opt.markdown.empty()) markdown(rs, opt);
   return 0;
 }
 

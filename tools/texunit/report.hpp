@@ -22,8 +22,24 @@ struct Row {
   std::string json() const;
 };
 
+struct Options {
+  std::vector<std::string> blocks;  // report groups; empty: every group
+  std::string json, plots, markdown;
+  std::string root = ".";
+  std::string yosys_cache;          // JSON cache of Yosys results keyed by the RTL files' hash
+  bool yosys = true;                // false: area "not measured: " + no_yosys_why
+  std::string no_yosys_why = "--no-yosys";
+  uint64_t count = 20000;           // random vectors per registry block (plus its stiff set)
+};
+
+// The files an RTL top needs, in Yosys/Verilator order: packages first, then every module file
+// reachable from the top (found by name under ROOT/rtl).
+std::vector<std::string> rtl_files(const std::string& root, const std::string& top);
+
+// Report groups in output order (block names of the rows).
+std::vector<std::string> groups();
+std::vector<Row> rows(const Options& opt);
 std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string& root, bool yosys);
-int run(const std::vector<std::string>& blocks, const std::string& json, const std::string& plots,
-        const std::string& root);
+int run(const Options& opt);
 
 }  // namespace tu::report

@@ -24,6 +24,8 @@ struct PixelRecord {
   uint32_t b2_flags = 0;   // C-model engine: B2 flags (ellipse_fx.hpp; kHorizon = B1 guard)
   uint32_t ewa_flags = 0;  // C-model engine, EWA: ewa::fx flags (ewa_fx.hpp)
   int levels = 0;          // C-model engine, EWA: mip levels the set-up tried (ewa::pixel_cost)
+  double aniso = 1;          // footprint anisotropy major / minor (after the material's clamp)
+  double footprint_lod = 0;  // log2 of the clamped minor axis, in [0, coarsest level] (`texunit plan`)
   img::Rgba8 color;
   int relief_n = 0;     // relief materials: layers N of the material's method (0: no relief)
 };

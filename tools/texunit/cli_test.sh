@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# CLI tests of `texunit report` and `texunit plan` (registered in CMakeLists.txt, one case each).
+# Usage: cli_test.sh TEXUNIT SOURCE_DIR CASE
+set -euo pipefail
+tu=$1; src=$2; case=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$src"
+fail() { echo "FAIL ($case): $*" >&2; exit 1; }
+val() { python3 -c "import json,sys; d=json.load(open('$1')); print(eval(sys.argv[1]))" "$2"; }
+case $case in
+  report_fields)
+    # Measured fields are numbers; a field that is not measured says why.
+    "$tu" report --blocks reciprocal,persp --count 2000 --no-yosys --json "$tmp/r.json" >/dev/null
+    [ "$(val "$tmp/r.json" "len(d)")" = 4 ] || fail "expected 4 rows (reciprocal + 3 persp variants)"
+    [ "$(val "$tmp/r.json" "all(r['cells'] == 'not measured: --no-yosys' for r in d)")" = True ] || fail "cells reason"
+    [ "$(val "$tmp/r.json" "all(isinstance(r['rtl_sim_items_per_s'], (int, float)) and r['rtl_sim_items_per_s'] > 0 for r in d)")" = True ] || fail "rtl speed"
+    [ "$(val "$tmp/r.json" "all(r['cycles_source'].startswith('measured') for r in d)")" = True ] || fail "cycles source"
+    [ "$(val "$tmp/r.json" "[r['max_abs_err'] for r in d if r['variant'] == 'incremental'][0] < 1/16")" = True ] || fail "persp error"
+    ;;
+  report_bad_block)
+    if "$tu" report --blocks recip --no-yosys --json "$tmp/r.json" 2>"$tmp/err"; then fail "accepted an unknown block"; fi
+    grep -q "unknown block 'recip' (known: reciprocal, persp" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    [ ! -e "$tmp/r.json" ] || fail "partial output written"
+    ;;
+  plan_default)
+    "$tu" plan default --json --out "$tmp/cfg.sv" >"$tmp/p.json"
+    [ "$(val "$tmp/p.json" "d['filter'], d['relief'], d['persp'].split('/')[0]")" = "('ewa', True, 'persp')" ] || fail "$(cat "$tmp/p.json")"
+    grep -q "localparam bit HasEwa = 1'b1;" "$tmp/cfg.sv" || fail "HasEwa"
+    ;;
+  plan_ui_quad)
+    # Head-on, magnified: bilinear instead of EWA, no relief hardware; fewer cells than the full unit.
+    "$tu" plan docs/scenes/ui_quad.json --json --out "$tmp/tu_unit_cfg_pkg.sv" >"$tmp/p.json"
+    [ "$(val "$tmp/p.json" "d['filter'], d['relief']")" = "('bilinear', False)" ] || fail "$(cat "$tmp/p.json")"
+    [ "$(val "$tmp/p.json" "d['specialised']['cells_sum_of_blocks'] < d['full']['cells_sum_of_blocks']")" = True ] || fail "area"
+    grep -q "localparam bit HasEwa = 1'b0;" "$tmp/tu_unit_cfg_pkg.sv" || fail "HasEwa"
+    grep -q "localparam bit HasRelief = 1'b0;" "$tmp/tu_unit_cfg_pkg.sv" || fail "HasRelief"
+    # The package lints (-Wall) as the RTL top would read it.
+    cat >"$tmp/tu_cfg_user.sv" <<'SV'
+module tu_cfg_user (
+  output logic [4:0]  has_o,
+  output logic [2:0]  wsrc_o,
+  output logic [31:0] sizes_o
+);
+  assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasRelief,
+                  tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax};
+  assign wsrc_o = tu_unit_cfg_pkg::WeightSources;
+  assign sizes_o = tu_unit_cfg_pkg::PomMaxLayers + tu_unit_cfg_pkg::WtabLog2N + tu_unit_cfg_pkg::Wtab2dLog2N +
+                   tu_unit_cfg_pkg::PerspLanes;
+endmodule
+SV
+    verilator --lint-only -Wall "$tmp/tu_unit_cfg_pkg.sv" "$tmp/tu_cfg_user.sv" || fail "package does not lint"
+    ;;
+  plan_corridor)
+    "$tu" plan docs/scenes/corridor.json --json >"$tmp/p.json"
+    [ "$(val "$tmp/p.json" "d['filter'], d['relief']")" = "('ewa', True)" ] || fail "$(cat "$tmp/p.json")"
+    [ "$(val "$tmp/p.json" "any('iter_parallax' in b for b in d['specialised']['blocks'])")" = True ] || fail "iterative relief"
+    ;;
+  plan_too_tight)
+    sed 's/"min_psnr_db": 40/"min_psnr_db": 100/' docs/scenes/corridor.json >"$tmp/tight.json"
+    set +e
+    "$tu" plan "$tmp/tight.json" --out "$tmp/cfg.sv" >"$tmp/out" 2>"$tmp/err"
+    rc=$?
+    set -e
+    [ $rc = 2 ] || fail "exit $rc, expected 2"
+    grep -q "tight.json: /error_budget/min_psnr_db = 100: no .* variant reaches it (best: " "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    [ ! -e "$tmp/cfg.sv" ] && [ ! -s "$tmp/out" ] || fail "partial output"
+    sed 's/"max_texel_err": 0.03125/"max_texel_err": 0.001/' docs/scenes/corridor.json >"$tmp/tight2.json"
+    if "$tu" plan "$tmp/tight2.json" 2>"$tmp/err2" >/dev/null; then fail "accepted max_texel_err 0.001"; fi
+    grep -q "/error_budget/max_texel_err = 0.001: no persp variant reaches it" "$tmp/err2" || fail "message: $(cat "$tmp/err2")"
+    ;;
+  plan_area_ui_quad)
+    # The RTL top synthesised with the full and with ui_quad's parameters (pre-techmap cells):
+    # the plan sets HasEwa = 0 and the cells drop (the script fails otherwise).
+    TU_TEXUNIT="$tu" scripts/plan_area.sh --coarse docs/scenes/ui_quad.json >"$tmp/out"
+    cat "$tmp/out"
+    grep -q "full: .*HasEwa=1" "$tmp/out" && grep -q "specialised: .*HasEwa=0" "$tmp/out" || fail "HasEwa not set"
+    ;;
+  *) fail "unknown case" ;;
+esac
+echo "ok ($case)"

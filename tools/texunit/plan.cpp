@@ -1,0 +1,394 @@
+// `texunit plan`: see plan.hpp and README "Reading the report / specialising the unit".
+#include "plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+#include <nlohmann/json.hpp>
+
+#include "texunit/render.hpp"
+#include "texunit/scene.hpp"
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace tu::plan {
+
+namespace {
+
+// Footprint thresholds: below them a pixel needs neither mip selection nor an anisotropic filter.
+constexpr double kMinifyLod = 0.5;  // footprint LOD (log2 texels per pixel) still served by level 0
+constexpr double kIsoAniso = 2.0;   // major / minor still served by an isotropic (trilinear) filter
+constexpr double kQuantile = 0.99;  // the gates use the 99th percentile (1% of pixels may exceed)
+
+struct TRow {
+  std::string block, variant, scheme, rtl_top;
+  double max_abs = 0, rms = 0, ii = 0, cells = -1;  // cells -1: not measured
+  int64_t latency = 0, mul = 0;
+  std::string name() const { return block + "/" + variant + (scheme == variant ? "" : " (" + scheme + ")"); }
+  // Cheapest = fewest Yosys cells; without Yosys numbers, fewest multipliers.
+  double cost() const { return cells >= 0 ? cells : 1e12 + static_cast<double>(mul); }
+};
+
+std::vector<TRow> load_table(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot read the report table (run scripts/report.sh)");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::exception& e) {
+    throw std::runtime_error(path + ": malformed JSON (" + e.what() + ")");
+  }
+  if (!j.is_array()) throw std::runtime_error(path + ": expected a JSON array of report rows");
+  std::vector<TRow> rows;
+  for (size_t i = 0; i < j.size(); ++i) {
+    const auto& r = j[i];
+    auto field = [&](const char* k) -> const json& {
+      if (!r.is_object() || !r.contains(k))
+        throw std::runtime_error(path + ": /" + std::to_string(i) + "/" + k + ": missing");
+      return r.at(k);
+    };
+    auto num = [&](const char* k, bool optional) {
+      const json& v = field(k);
+      if (v.is_number()) return v.get<double>();
+      if (optional && v.is_string()) return -1.0;  // "not measured: ..." or "n/a"
+      throw std::runtime_error(path + ": /" + std::to_string(i) + "/" + k + ": expected a number");
+    };
+    auto str = [&](const char* k) {
+      if (!field(k).is_string()) throw std::runtime_error(path + ": /" + std::to_string(i) + "/" + k + ": expected a string");
+      return field(k).get<std::string>();
+    };
+    TRow t;
+    t.block = str("block"), t.variant = str("variant"), t.scheme = str("scheme"), t.rtl_top = str("rtl_top");
+    t.max_abs = num("max_abs_err", false), t.rms = num("rms_err", false), t.ii = num("ii_cycles", false);
+    t.latency = static_cast<int64_t>(num("latency_cycles", true));
+    t.cells = num("cells", true);
+    t.mul = static_cast<int64_t>(num("multipliers", true));
+    rows.push_back(t);
+  }
+  return rows;
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<size_t>(q * static_cast<double>(v.size() - 1))];
+}
+
+// PSNR (RGB, 8-bit peak) over the pixels both frames cover: the background would inflate it.
+double psnr_covered(const render::Frame& a, const render::Frame& b) {
+  double se = 0;
+  size_t n = 0;
+  for (const auto& p : a.pixels) {
+    const auto& c = a.image.at(p.x, p.y);
+    const auto& d = b.image.at(p.x, p.y);
+    for (int k = 0; k < 3; ++k) {
+      const double e = (k == 0 ? c.r - d.r : k == 1 ? c.g - d.g : c.b - d.b);
+      se += e * e;
+    }
+    n += 3;
+  }
+  return se == 0 ? INFINITY : 10 * std::log10(255.0 * 255.0 * static_cast<double>(n) / se);
+}
+
+double texels_per_pixel(const render::Frame& f) {
+  double t = 0;
+  for (const auto& p : f.pixels) t += p.texels;
+  return f.pixels.empty() ? 0 : t / static_cast<double>(f.pixels.size());
+}
+
+// Weight and clip-volume errors in dB: 20 log10(1 / rms) with the value range [0, 1] as the peak,
+// i.e. the PSNR of the weights themselves. The colour of a normalised weighted mean carries at
+// most this relative error; it stands in for a render PSNR until the bit-accurate EWA lands.
+double weight_db(const TRow& r) { return r.rms > 0 ? 20 * std::log10(1 / r.rms) : INFINITY; }
+
+std::string fmt(const char* f, double x) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, x);
+  return b;
+}
+
+// Cheapest row with an RTL among `cands` meeting `ok`; else a BudgetError naming `field`.
+const TRow* cheapest(const std::vector<const TRow*>& cands, const std::function<bool(const TRow&)>& ok,
+                     const std::function<double(const TRow&)>& score, const std::string& field,
+                     const std::string& what, const char* unit) {
+  const TRow* best = nullptr;
+  const TRow* closest = nullptr;
+  for (const TRow* r : cands) {
+    if (!closest || score(*r) > score(*closest)) closest = r;
+    if (ok(*r) && (!best || r->cost() < best->cost())) best = r;
+  }
+  if (!closest) throw std::runtime_error("report table has no " + what + " row with an RTL (run scripts/report.sh)");
+  if (!best)
+    throw BudgetError(field + ": no " + what + " variant reaches it (best: " + closest->name() + " at " +
+                      fmt(unit, std::fabs(score(*closest))) + ")");
+  return best;
+}
+
+struct Unit {
+  std::vector<std::vector<std::vector<const TRow*>>> stages;  // stage -> alternatives -> sequence
+  std::vector<const TRow*> area_only;                        // e.g. per-scanline set-up
+  double texels_per_pixel = 1;
+  std::vector<const TRow*> all() const {
+    std::vector<const TRow*> v = area_only;
+    for (const auto& s : stages)
+      for (const auto& a : s) v.insert(v.end(), a.begin(), a.end());
+    return v;
+  }
+  int64_t latency() const {
+    int64_t l = 0;
+    for (const auto& s : stages) {
+      int64_t m = 0;
+      for (const auto& a : s) {
+        int64_t sum = 0;
+        for (const TRow* r : a) sum += r->latency;
+        m = std::max(m, sum);
+      }
+      l += m;
+    }
+    return l;
+  }
+  double ii() const {
+    double m = 1;
+    for (const TRow* r : all()) m = std::max(m, r->ii);
+    return m;
+  }
+  double cells() const {
+    double c = 0;
+    for (const TRow* r : all()) c += r->cells < 0 ? 0 : r->cells;
+    return c;
+  }
+  bool cells_measured() const {
+    return std::all_of(area_only.begin(), area_only.end(), [](const TRow* r) { return r->cells >= 0; }) &&
+           std::all_of(stages.begin(), stages.end(), [](const auto& s) {
+             return std::all_of(s.begin(), s.end(), [](const auto& a) {
+               return std::all_of(a.begin(), a.end(), [](const TRow* r) { return r->cells >= 0; });
+             });
+           });
+  }
+  // One texel per cycle through the filter, and no more than one pixel per II.
+  double frame_cycles(size_t pixels) const {
+    return static_cast<double>(pixels) * std::max(ii(), texels_per_pixel) + static_cast<double>(latency());
+  }
+};
+
+json unit_json(const Unit& u, size_t pixels) {
+  json b = json::array();
+  for (const TRow* r : u.all()) b.push_back(r->name());
+  return {{"blocks", b},
+          {"pixel_latency_cycles", u.latency()},
+          {"ii_cycles", u.ii()},
+          {"texels_per_pixel", u.texels_per_pixel},
+          {"frame_cycles", u.frame_cycles(pixels)},
+          {"cells_sum_of_blocks", u.cells_measured() ? json(u.cells()) : json("not measured: yosys not installed")}};
+}
+
+// The RTL configuration: tu_unit_cfg_pkg, read by the RTL top.
+struct Config {
+  bool trilinear, ewa, relief, pom, iter_parallax;
+  int pom_max_layers, weight_sources, wtab_log2n, wtab2d_log2n, persp_lanes;
+};
+std::string package(const Config& c, const std::string& origin) {
+  std::ostringstream sv;
+  sv << "// Generated by " << origin << ": do not edit.\n"
+     << "// Unit configuration read by the RTL top; generate blocks leave out what is 0.\n"
+     << "package tu_unit_cfg_pkg;\n"
+     << "  localparam bit HasTrilinear = 1'b" << c.trilinear << ";  // footprint / LOD (tu_ellipse)\n"
+     << "  localparam bit HasEwa = 1'b" << c.ewa << ";  // EWA texel walk, clip volume and weights\n"
+     << "  localparam bit HasRelief = 1'b" << c.relief << ";\n"
+     << "  localparam bit HasPom = 1'b" << c.pom << ";  // tu_pom_layers + tu_pom_march\n"
+     << "  localparam bit HasIterParallax = 1'b" << c.iter_parallax << ";\n"
+     << "  localparam int unsigned PomMaxLayers = " << c.pom_max_layers << ";\n"
+     << "  // bit 0: formula (tu_gauss_weight), bit 1: 1-D table, bit 2: 2-D table\n"
+     << "  localparam logic [2:0] WeightSources = 3'd" << c.weight_sources << ";\n"
+     << "  localparam int unsigned WtabLog2N = " << c.wtab_log2n << ";\n"
+     << "  localparam int unsigned Wtab2dLog2N = " << c.wtab2d_log2n << ";\n"
+     << "  localparam int unsigned PerspLanes = " << c.persp_lanes << ";\n"
+     << "endpackage\n";
+  return sv.str();
+}
+
+}  // namespace
+
+int run(const Options& opt) {
+  const scene::Scene s = opt.scene == "default" ? scene::default_scene() : scene::load(opt.scene);
+  const auto table = load_table(opt.report);
+  auto rows_of = [&](const std::string& block) {
+    std::vector<const TRow*> v;
+    for (const auto& r : table)
+      if (r.block == block && !r.rtl_top.empty()) v.push_back(&r);
+    return v;
+  };
+  auto one = [&](const std::string& block, const std::string& variant) -> const TRow* {
+    for (const TRow* r : rows_of(block))
+      if (r->variant == variant) return r;
+    throw std::runtime_error(opt.report + ": no row " + block + "/" + variant + " with an RTL");
+  };
+
+  // 1. Footprints and relief per material, from the float reference (level-0 bilinear render: the
+  //    footprint is recorded for every pixel whatever the filter).
+  const render::Frame bil = render::render_ref(s, scene::Filter::Bilinear);
+  if (bil.pixels.empty()) throw std::runtime_error(s.source + ": the scene covers no pixel");
+  std::vector<double> aniso, lod;
+  std::map<std::string, size_t> material_pixels;
+  bool relief = false, iterative = false, pom = false;
+  int max_layers = 0;
+  for (const auto& p : bil.pixels) {
+    aniso.push_back(p.aniso);
+    lod.push_back(p.footprint_lod);
+    const auto& m = s.materials.at(s.objects[static_cast<size_t>(p.object)].material);
+    ++material_pixels[m.name];
+    if (m.relief) {
+      relief = true;
+      max_layers = std::max(max_layers, m.relief->layers);
+      (m.relief->method == scene::ReliefMethod::Iterative ? iterative : pom) = true;
+    }
+  }
+  const double q_aniso = quantile(aniso, kQuantile), q_lod = quantile(lod, kQuantile);
+  json hist_lod = json::object(), hist_aniso = json::object();
+  for (double l : lod) {
+    const std::string k = std::to_string(static_cast<int>(std::floor(l)));
+    hist_lod[k] = hist_lod.value(k, 0) + 1;
+  }
+  for (double a : aniso) {
+    const std::string k = a < 2 ? "1-2" : a < 4 ? "2-4" : a < 8 ? "4-8" : a < 16 ? "8-16" : "16+";
+    hist_aniso[k] = hist_aniso.value(k, 0) + 1;
+  }
+
+  // 2. Filter: the cheapest whose footprint gate passes and whose render meets min_psnr_db
+  //    against the float EWA reference.
+  const render::Frame ewa = render::render_ref(s, scene::Filter::Ewa);
+  std::string filter = "ewa", filter_why;
+  double filter_psnr = INFINITY;
+  const render::Frame* chosen_frame = &ewa;
+  std::optional<render::Frame> tri;
+  if (q_lod <= kMinifyLod && q_aniso <= kIsoAniso) {
+    const double p = psnr_covered(bil, ewa);
+    filter_why += "bilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
+    if (p >= s.budget.min_psnr_db) filter = "bilinear", filter_psnr = p, chosen_frame = &bil;
+    else filter_why += "; ";
+  } else {
+    filter_why += "bilinear: footprint gate fails (p99 LOD " + fmt("%.2f", q_lod) + ", p99 anisotropy " + fmt("%.2f", q_aniso) + "); ";
+  }
+  if (filter == "ewa") {
+    if (q_aniso <= kIsoAniso) {
+      tri = render::render_ref(s, scene::Filter::Trilinear);
+      const double p = psnr_covered(*tri, ewa);
+      filter_why += "trilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
+      if (p >= s.budget.min_psnr_db) filter = "trilinear", filter_psnr = p, chosen_frame = &*tri;
+    } else {
+      filter_why += "trilinear: footprint gate fails (p99 anisotropy " + fmt("%.2f", q_aniso) + ")";
+    }
+  }
+
+  // 3. Blocks and variants from the measured table.
+  const std::string psnr_field = s.source + ": /error_budget/min_psnr_db = " + fmt("%g", s.budget.min_psnr_db);
+  const std::string texel_field = s.source + ": /error_budget/max_texel_err = " + fmt("%g", s.budget.max_texel_err);
+  const TRow* persp = cheapest(rows_of("persp"), [&](const TRow& r) { return r.max_abs <= s.budget.max_texel_err; },
+                               [](const TRow& r) { return -r.max_abs; }, texel_field, "persp", "%.4g texel");
+  const TRow* setup = one("persp_setup", "setup");
+  auto db_ok = [&](const TRow& r) { return weight_db(r) >= s.budget.min_psnr_db; };
+  std::vector<const TRow*> weight_cands = rows_of("gauss_weight");
+  for (const TRow* r : rows_of("weight_table")) weight_cands.push_back(r);
+  std::vector<const TRow*> relief_rows;
+  if (pom) relief_rows = {one("pom_layers", "pom_layers"), one("pom_march", "pom_march")};
+  if (iterative) relief_rows.push_back(one("iter_parallax", "iter_parallax"));
+
+  Unit spec;
+  spec.area_only = {setup};
+  spec.stages.push_back({{persp}});
+  if (relief) spec.stages.push_back({relief_rows});
+  const TRow *weights = nullptr, *clip = nullptr;
+  if (filter != "bilinear") spec.stages.push_back({{one("ellipse", "analytic")}});
+  if (filter == "ewa") {
+    weights = cheapest(weight_cands, db_ok, weight_db, psnr_field, "EWA weight source", "%.1f dB");
+    clip = cheapest(rows_of("clip_volume"), db_ok, weight_db, psnr_field, "clip_volume", "%.1f dB");
+    spec.stages.push_back({{clip}});
+    spec.stages.push_back({{weights}});
+  }
+  spec.texels_per_pixel = texels_per_pixel(*chosen_frame);
+
+  // The full unit: every block, every weight source and relief method, EWA texel walk.
+  Unit full;
+  full.area_only = {setup};
+  full.stages.push_back({{persp}});
+  full.stages.push_back({{one("pom_layers", "pom_layers"), one("pom_march", "pom_march")}, {one("iter_parallax", "iter_parallax")}});
+  full.stages.push_back({{one("ellipse", "analytic")}});
+  const auto clips = rows_of("clip_volume");
+  const TRow* full_clip = clip ? clip : *std::min_element(clips.begin(), clips.end(), [](auto* a, auto* b) { return a->cost() < b->cost(); });
+  full.stages.push_back({{full_clip}});
+  std::vector<std::vector<const TRow*>> all_weights;
+  for (const TRow* r : weight_cands) all_weights.push_back({r});
+  full.stages.push_back(all_weights);
+  full.texels_per_pixel = texels_per_pixel(ewa);
+
+  // 4. RTL configuration.
+  const bool has_ewa = filter == "ewa", has_tri = filter != "bilinear";
+  auto weight_bit = [&](const TRow* w) { return !w ? 0 : w->block == "gauss_weight" ? 1 : w->scheme == "weight_table_1d" ? 2 : 4; };
+  auto log2n = [&](const std::string& scheme) {
+    for (const TRow* r : weight_cands)
+      if (r->scheme == scheme) return static_cast<int>(std::lround(std::log2(std::stod(r->variant.substr(3)))));
+    return 0;
+  };
+  const std::string origin = "`texunit plan " + opt.scene + "` from " + opt.report;
+  const Config planned{has_tri, has_ewa, relief, pom, iterative, max_layers, weight_bit(weights),
+                       log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1};
+  // The full unit: everything in, relief up to the scene format's 256 layers.
+  const Config everything{true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes};
+
+  const size_t px = bil.pixels.size();
+  json out = {{"scene", s.source},
+              {"report_table", opt.report},
+              {"covered_pixels", px},
+              {"footprint", {{"p99_lod", q_lod}, {"p99_anisotropy", q_aniso}, {"lod_histogram", hist_lod},
+                             {"anisotropy_histogram", hist_aniso}}},
+              {"budget", {{"max_texel_err", s.budget.max_texel_err}, {"min_psnr_db", s.budget.min_psnr_db}}},
+              {"filter", filter},
+              {"filter_psnr_db", std::isinf(filter_psnr) ? json("reference") : json(filter_psnr)},
+              {"filter_reasons", filter_why},
+              {"relief", relief},
+              {"persp", persp->name()},
+              {"weights", weights ? json(weights->name()) : json(nullptr)},
+              {"weights_db", weights ? json(weight_db(*weights)) : json(nullptr)},
+              {"clip_volume", clip ? json(clip->name()) : json(nullptr)},
+              {"specialised", unit_json(spec, px)},
+              {"full", unit_json(full, px)},
+              {"area_note", "cells are the sum of the blocks' Yosys cells (each block synthesised alone)"}};
+  // Everything is decided before anything is written.
+  for (const auto& [path, cfg, what] : {std::tuple{opt.out_sv, planned, "specialised"}, {opt.out_full_sv, everything, "full"}}) {
+    if (path.empty()) continue;
+    std::ofstream(path + ".tmp") << package(cfg, origin + " (" + what + " unit)");
+    fs::rename(path + ".tmp", path);
+    std::cerr << "wrote " << path << "\n";
+  }
+  if (opt.json) {
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
+  std::printf("scene %s: %zu covered pixels; footprint p99 LOD %.2f, p99 anisotropy %.2f\n", s.source.c_str(), px, q_lod, q_aniso);
+  std::printf("budget: max_texel_err %g texel, min_psnr_db %g dB\n", s.budget.max_texel_err, s.budget.min_psnr_db);
+  std::printf("filter: %s (%s)\n", filter.c_str(), filter_why.c_str());
+  std::printf("relief: %s\n", relief ? (pom && iterative ? "pom + iterative" : pom ? "pom" : "iterative") : "none (no relief hardware)");
+  std::printf("persp: %s, max %.4g texel\n", persp->name().c_str(), persp->max_abs);
+  if (weights) std::printf("weights: %s, %.1f dB; clip volume: %s, %.1f dB (20 log10(1/rms))\n", weights->name().c_str(),
+                           weight_db(*weights), clip->name().c_str(), weight_db(*clip));
+  std::printf("\n%-12s %10s %6s %13s %14s %12s\n", "unit", "latency", "II", "texels/pixel", "frame cycles", "cells (sum)");
+  for (const auto& [name, u] : {std::pair<const char*, const Unit*>{"specialised", &spec}, {"full", &full}})
+    std::printf("%-12s %10lld %6.2f %13.2f %14.0f %12s\n", name, static_cast<long long>(u->latency()), u->ii(),
+                u->texels_per_pixel, u->frame_cycles(px), u->cells_measured() ? fmt("%.0f", u->cells()).c_str() : "not measured");
+  std::printf("cells: sum of the blocks' Yosys cells (each block synthesised alone; texel fetch not included)\n"
+              "frame cycles: pixels x max(II, texels per pixel) + latency (one texel per cycle)\n");
+  return 0;
+}
+
+}  // namespace tu::plan
