@@ -22,7 +22,7 @@ TEST(SysmodelRtl, SceneCyclesWithinFivePercentAndTenTimesFaster) {
   s.camera.height = 96;
   const auto rtl = cosim::render_rtl(s);
   ASSERT_TRUE(rtl.ok()) << rtl.first_mismatch;
-  const auto wl = sysmodel::scene_workload(s, render::render_cmodel(s, tu::scene::Filter::Ewa, {.relief = false}));
+  const auto wl = sysmodel::scene_workload(s, render::render_cmodel(s, tu::scene::Filter::Ewa, tu::render::texture_path_only()));
   ASSERT_EQ(wl.pixels.size(), rtl.frame.pixels.size());
   // Fastest of three runs: the speed claim is about the model, not about the machine's load.
   sysmodel::Result r;

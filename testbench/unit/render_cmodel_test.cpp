@@ -10,11 +10,18 @@ using namespace tu;
 
 // The default scene at half resolution (the same view): a quarter of the pixels keeps the
 // sanitizer build fast.
+scene::Scene half_default() {
+  auto d = scene::default_scene();
+  d.camera.width /= 2;
+  d.camera.height /= 2;
+  return d;
+}
+// Without relief: the filter tests measure the texture path (the float reference's relief is the
+// 256-layer ideal march, the C model's the material's method; ReliefFollowsTheMaterial covers it).
 const scene::Scene& scn() {
   static const auto s = [] {
-    auto d = scene::default_scene();
-    d.camera.width /= 2;
-    d.camera.height /= 2;
+    auto d = half_default();
+    for (auto& [name, m] : d.materials) m.relief.reset();
     return d;
   }();
   return s;
@@ -75,3 +82,30 @@ TEST(RenderCmodel, UvShiftHookMovesTheSample) {
 }
 
 }  // namespace
+
+// Relief in the C-model engine: only the relief material's pixels move (against the texture path
+// alone), and the method (adaptive POM, fixed point) stays close to the float reference's
+// 256-layer march with exact refinement (38.3 dB measured on this half-size default scene).
+TEST(RenderCmodel, ReliefFollowsTheMaterial) {
+  const auto s = half_default();
+  const auto with = render::render_cmodel(s, scene::Filter::Ewa);
+  const auto without = render::render_cmodel(s, scene::Filter::Ewa, render::texture_path_only());
+  ASSERT_EQ(with.pixels.size(), without.pixels.size());
+  size_t moved = 0, relief_pixels = 0;
+  for (size_t i = 0; i < with.pixels.size(); ++i) {
+    const auto& p = with.pixels[i];
+    const bool has = s.materials.at(s.objects[static_cast<size_t>(p.object)].material).relief.has_value();
+    relief_pixels += has;
+    const bool same = p.u == without.pixels[i].u && p.v == without.pixels[i].v;
+    if (!has) {
+      EXPECT_TRUE(same) << p.x << "," << p.y;
+      EXPECT_EQ(p.relief_n, 0);
+    } else {
+      moved += !same;
+      EXPECT_GE(p.relief_n, 4);  // adaptive POM: N in [Nmin = 4, Nmax]
+    }
+  }
+  ASSERT_GT(relief_pixels, 0u);
+  EXPECT_GT(moved, relief_pixels / 2);
+  EXPECT_GT(tex::psnr(with.image, render::render_ref(s, scene::Filter::Ewa).image), 35);
+}

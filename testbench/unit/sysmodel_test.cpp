@@ -159,7 +159,7 @@ TEST(Sysmodel, DefaultSceneStreamCoversEveryPixelOnce) {
   auto s = tu::scene::default_scene();
   s.camera.width = 128;
   s.camera.height = 96;
-  const auto frame = tu::render::render_cmodel(s, tu::scene::Filter::Ewa, {.relief = false});
+  const auto frame = tu::render::render_cmodel(s, tu::scene::Filter::Ewa, tu::render::texture_path_only());
   const auto wl = scene_workload(s, frame);
   ASSERT_FALSE(wl.spans.empty());
   ASSERT_EQ(wl.pixels.size(), frame.pixels.size());
@@ -171,9 +171,10 @@ TEST(Sysmodel, DefaultSceneStreamCoversEveryPixelOnce) {
       EXPECT_EQ(p.y, sp.y);
       EXPECT_EQ(p.x, sp.x0 + static_cast<int>(k));
     }
-    if (i > 0 && wl.spans[i - 1].y == sp.y)  // a new span on the same row: a new triangle or a gap
+    if (i > 0 && wl.spans[i - 1].y == sp.y) {  // a new span on the same row: a new triangle or a gap
       EXPECT_TRUE(wl.spans[i - 1].x0 + static_cast<int>(wl.spans[i - 1].count) < sp.x0 ||
                   wl.spans[i - 1].triangle != sp.triangle || wl.spans[i - 1].object != sp.object);
+    }
   }
   std::vector<tu::ewa::PixelCost> costs;
   for (const auto& p : wl.pixels) {

@@ -47,7 +47,7 @@ int run_sysmodel(const SysmodelArgs& a) {
   const scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
   const auto t0 = std::chrono::steady_clock::now();
   // Per-pixel work (texels walked, levels tried) from the bit-accurate C-model render.
-  const render::Frame frame = render::render_cmodel(s, tu::scene::Filter::Ewa, {.relief = false});
+  const render::Frame frame = render::render_cmodel(s, tu::scene::Filter::Ewa, tu::render::texture_path_only());
   const sysmodel::Workload wl = sysmodel::scene_workload(s, frame);
   const double work_s = seconds_since(t0);
   sysmodel::UnitConfig cfg;

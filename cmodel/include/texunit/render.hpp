@@ -59,6 +59,12 @@ struct CmodelOptions {
   // texture path alone, as the RTL texture-unit top (no relief stage yet) computes it.
   bool relief = true;
 };
+// The options of the texture path alone (relief off), for comparisons with the RTL top.
+inline CmodelOptions texture_path_only() {
+  CmodelOptions o;
+  o.relief = false;
+  return o;
+}
 // log2(max anisotropy) as B2's laniso input (u(EllAnisoW).EllLogF, rounded, saturated); the RTL
 // render engine sets the same.
 uint32_t laniso_code(double max_aniso);
