@@ -1,7 +1,7 @@
 // Simulation top of the texture unit: tu_texture_unit with the texel RAM model attached; the
 // testbench loads every texture of the scene through the RAM's write port before the spans.
 module tu_texture_unit_sim #(
-  parameter int unsigned HasEwa = 1,
+  parameter int unsigned HasEwa = {31'b0, tu_unit_cfg_pkg::HasEwa},
   parameter int unsigned Words  = 1 << 20
 ) (
   input  logic                                  clk_i,
