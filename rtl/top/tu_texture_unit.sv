@@ -11,8 +11,8 @@
 // whole; the FIFO in front of the data-dependent filter lets them run ahead by FifoDepth pixels.
 // The filter reads texels through a port with 1-cycle read latency (tu_texel_ram in simulation).
 module tu_texture_unit #(
-  // Defaults from the unit configuration (rtl/top/tu_unit_cfg_pkg.sv: the full unit as committed;
-  // `texunit plan SCENE --out rtl/top/tu_unit_cfg_pkg.sv` specialises it to a scene).
+  // Defaults from the unit configuration (rtl/0_pkg/tu_unit_cfg_pkg.sv: the full unit as committed;
+  // `texunit plan SCENE --out rtl/0_pkg/tu_unit_cfg_pkg.sv` specialises it to a scene).
   parameter int unsigned HasEwa    = {31'b0, tu_unit_cfg_pkg::HasEwa},  // 1: EWA engine (tu_ewa); 0: bilinear at level 0 only
   parameter int unsigned FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (

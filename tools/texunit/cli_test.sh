@@ -54,7 +54,7 @@ SV
   cfg_pkg_full)
     # The committed configuration the RTL top reads by default is the full unit's, as plan writes it.
     "$tu" plan default --out-full "$tmp/full.sv" >/dev/null
-    diff -u rtl/top/tu_unit_cfg_pkg.sv "$tmp/full.sv" || fail "rtl/top/tu_unit_cfg_pkg.sv is not the full unit: texunit plan default --out-full rtl/top/tu_unit_cfg_pkg.sv"
+    diff -u rtl/0_pkg/tu_unit_cfg_pkg.sv "$tmp/full.sv" || fail "rtl/0_pkg/tu_unit_cfg_pkg.sv is not the full unit: texunit plan default --out-full rtl/0_pkg/tu_unit_cfg_pkg.sv"
     ;;
   plan_corridor)
     "$tu" plan docs/scenes/corridor.json --json >"$tmp/p.json"
