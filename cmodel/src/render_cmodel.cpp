@@ -33,13 +33,9 @@ int64_t shift_code(int64_t c, int by) { return by >= 0 ? c * (int64_t(1) << by) 
 
 void shift_relief_fx(const scene::Scene& s, const Cover& c, const relief::Maps& maps, const tex::Texture& tx,
                      int x, int y, int64_t* u, int64_t* v, PixelRecord* rec) {
-  const auto& obj = s.objects[static_cast<size_t>(c.object)];
-  const auto& tri = obj.triangles[static_cast<size_t>(c.triangle)];
-  const auto& rel = *s.materials.at(obj.material).relief;
-  persp::Hit hit;
+  const auto& rel = *s.materials.at(s.objects[static_cast<size_t>(c.object)].material).relief;
   relief::TangentView tv;
-  if (!persp::ray_hit(s.camera, tri, x, y, &hit) || !relief::tangent_view(tri, s.camera.pos, hit.s, hit.r, &tv))
-    return;  // degenerate uv mapping: no shift (as render_ref)
+  if (!relief::pixel_view(s, c.object, c.triangle, x, y, &tv)) return;  // no shift (as render_ref)
   const int lw = std::countr_zero(static_cast<unsigned>(tx.levels[0].width));
   const int lh = std::countr_zero(static_cast<unsigned>(tx.levels[0].height));
   const int du = fmt::kPomUvF - fmt::kTexUvF;
@@ -133,7 +129,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           break;
         }
         case scene::Filter::Ewa: {
-          const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), 1024});
+          const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels});
           rec.color = r.color;
           rec.lod = r.level;
           rec.texels = static_cast<int>(r.texels_visited);

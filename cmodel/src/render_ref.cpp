@@ -24,13 +24,9 @@ img::Rgba8 to8(const tex::RgbaF& c) { return {to8(c.r), to8(c.g), to8(c.b), to8(
 // the material's method (the layer-count debug image).
 void shift_relief(const scene::Scene& s, const Cover& c, const relief::Maps& maps, const tex::Texture& tx,
                   int x, int y, double* u, double* v, PixelRecord* rec) {
-  const auto& obj = s.objects[static_cast<size_t>(c.object)];
-  const auto& tri = obj.triangles[static_cast<size_t>(c.triangle)];
-  const auto& rel = *s.materials.at(obj.material).relief;
-  persp::Hit hit;
+  const auto& rel = *s.materials.at(s.objects[static_cast<size_t>(c.object)].material).relief;
   relief::TangentView tv;
-  if (!persp::ray_hit(s.camera, tri, x, y, &hit) || !relief::tangent_view(tri, s.camera.pos, hit.s, hit.r, &tv))
-    return;
+  if (!relief::pixel_view(s, c.object, c.triangle, x, y, &tv)) return;
   const double W = tx.levels[0].width, H = tx.levels[0].height, one = std::ldexp(1.0, fmt::kPomUvF);
   rec->relief_n = static_cast<int>(relief::layers_at(maps, std::llround(*u / W * one), std::llround(*v / H * one),
                                                      relief::quantise(tv, rel.scale), rel.method, rel.layers));
@@ -118,7 +114,7 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
           rec.texels = 8;
           break;
         case scene::Filter::Ewa: {
-          const auto r = ewa::filter_ref(tx, u, v, j, {m.max_aniso, 1024});
+          const auto r = ewa::filter_ref(tx, u, v, j, {m.max_aniso, ewa::kDefaultMaxTexels});
           rec.color = to8(r.color);
           rec.lod = r.level;
           rec.texels = r.texels_visited;

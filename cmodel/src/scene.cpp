@@ -298,6 +298,11 @@ const std::string& default_scene_json() {
 
 Scene default_scene() { return parse(default_scene_json(), "<default scene>", "."); }
 
+Scene without_relief(Scene s) {
+  for (auto& [name, m] : s.materials) m.relief.reset();
+  return s;
+}
+
 std::vector<persp::Triangle> in_texels(const Object& o, int tex_width, int tex_height) {
   std::vector<persp::Triangle> out = o.triangles;
   for (auto& t : out)

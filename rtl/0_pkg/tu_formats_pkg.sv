@@ -83,6 +83,7 @@ package tu_formats_pkg;
   localparam int unsigned TexLodF = 8;  // LOD fraction bits: trilinear blend weight
   localparam int unsigned TexMaxLevels = 13;  // mip levels: up to 4096 texels on a side
   localparam int unsigned TexAddrW = 26;  // texel RAM word address (RGBA8 words, all levels of several textures)
+  localparam int unsigned TexRamLog2Words = 20;  // simulation texel RAM of the texture-unit top: 2^N RGBA8 words
   localparam int unsigned PerspLatency = 8;  // per-pixel pipeline latency in cycles, II = 1
   localparam int unsigned EllNumW = 48;  // derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac
   localparam int unsigned EllNumF = 32;

@@ -2,7 +2,7 @@
 // testbench loads every texture of the scene through the RAM's write port before the spans.
 module tu_texture_unit_sim #(
   parameter int unsigned HasEwa = {31'b0, tu_unit_cfg_pkg::HasEwa},
-  parameter int unsigned Words  = 1 << 20
+  parameter int unsigned Words  = 1 << tu_formats_pkg::TexRamLog2Words
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,

@@ -14,7 +14,7 @@
 namespace tu::cosim {
 
 namespace {
-constexpr uint64_t kRamWords = uint64_t(1) << 20;  // tu_texture_unit_sim Words
+constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;  // tu_texture_unit_sim Words
 
 uint64_t lo(i128 v) { return static_cast<uint64_t>(v); }
 uint64_t hi(i128 v) { return static_cast<uint64_t>(v >> 64); }
@@ -149,7 +149,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       r[kLh] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].height));
       r[kClamp] = ob.tex.wrap == tex::Wrap::Clamp;
       r[kWsrc] = static_cast<uint64_t>(o.weights.value_or(m.weights));
-      r[kCap] = 1024;
+      r[kCap] = ewa::kDefaultMaxTexels;
       spans.push_back(r);
       for (int px = x; px <= x1; ++px, ++pix) {
         if (!o.has_ewa || pix >= expect.pixels.size()) continue;

@@ -19,11 +19,7 @@ scene::Scene half_default() {
 // Without relief: the filter tests measure the texture path (the float reference's relief is the
 // 256-layer ideal march, the C model's the material's method; ReliefFollowsTheMaterial covers it).
 const scene::Scene& scn() {
-  static const auto s = [] {
-    auto d = half_default();
-    for (auto& [name, m] : d.materials) m.relief.reset();
-    return d;
-  }();
+  static const auto s = scene::without_relief(half_default());
   return s;
 }
 

@@ -324,8 +324,7 @@ int run(const Options& opt) {
   // own block). Rows the engine does not implement keep their 20 log10(1/rms).
   std::map<const TRow*, double> render_db;
   if (filter == "ewa") {
-    scene::Scene flat = s;
-    for (auto& [name, m] : flat.materials) m.relief.reset();
+    const scene::Scene flat = scene::without_relief(s);
     const render::Frame ref_flat = render::render_ref(flat, scene::Filter::Ewa);
     for (const TRow* r : weight_cands)
       if (const auto src = engine_source(*r)) {

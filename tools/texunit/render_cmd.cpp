@@ -129,8 +129,7 @@ bool demo_render(const std::string& out_dir) {
   // The filters are measured on the texture path (relief off on both sides: the RTL top has no
   // relief stage yet); the relief method is measured on its own row against the float reference's
   // 256-layer march.
-  scene::Scene flat = s;
-  for (auto& [name, m] : flat.materials) m.relief.reset();
+  const scene::Scene flat = scene::without_relief(s);
   const auto ewa_flat = render::render_ref(flat, scene::Filter::Ewa);
   demo_render_cmodel(flat, ewa_flat, out_dir);
   demo_render_relief(s, ewa, out_dir);

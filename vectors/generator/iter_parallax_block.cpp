@@ -57,9 +57,7 @@ Block make_iter_parallax() {
   Block b;
   b.name = "iter_parallax";
   b.description = "iterative parallax (seed 002): 3 mul + 4 add per iteration, cap, threshold, flag";
-  auto F = [](const char* n, vec::Role r, const char* f) {
-    return vec::Field{n, r, vec::FieldFormat::parse(f)};
-  };
+  const auto F = field;  // block.hpp
   b.fields = {F("u", vec::Role::In, "u16.16"),      F("v", vec::Role::In, "u16.16"),
               F("su", vec::Role::In, "s32.16"),     F("sv", vec::Role::In, "s32.16"),
               F("sh", vec::Role::In, "s32.16"),     F("tu", vec::Role::Out, "u16.16"),
@@ -67,11 +65,7 @@ Block make_iter_parallax() {
               F("nonconv", vec::Role::Out, "u1.0"), F("ref_u", vec::Role::Ref, "f64"),
               F("ref_v", vec::Role::Ref, "f64")};
   b.sets = {"golden", "stiff", "random"};
-  b.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
-    if (set == "golden") return golden_inputs();
-    if (set == "stiff") return stiff_inputs();
-    return random_inputs(count, seed);
-  };
+  b.inputs = standard_sets(golden_inputs, stiff_inputs, random_inputs);
   b.model = [](const Row& in) {
     const auto o = pom::iter_parallax(depth(), static_cast<int64_t>(in[0]),
                                       static_cast<int64_t>(in[1]),

@@ -58,9 +58,7 @@ Block make_pom_march() {
   Block b;
   b.name = "pom_march";
   b.description = "POM march engine: exact rule 255*i < h*N, one layer step per clock, bricks ROM";
-  auto F = [](const char* n, vec::Role r, const char* f) {
-    return vec::Field{n, r, vec::FieldFormat::parse(f)};
-  };
+  const auto F = field;  // block.hpp
   b.fields = {F("u", vec::Role::In, "s32.16"),     F("v", vec::Role::In, "s32.16"),
               F("du", vec::Role::In, "s32.16"),    F("dv", vec::Role::In, "s32.16"),
               F("n", vec::Role::In, "u6.0"),       F("tu", vec::Role::Out, "s32.16"),
@@ -68,11 +66,7 @@ Block make_pom_march() {
               F("a", vec::Role::Out, "u16.0"),     F("den", vec::Role::Out, "u16.0"),
               F("ref_steps", vec::Role::Ref, "f64")};
   b.sets = {"golden", "stiff", "random"};
-  b.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
-    if (set == "golden") return golden_inputs();
-    if (set == "stiff") return stiff_inputs();
-    return random_inputs(count, seed);
-  };
+  b.inputs = standard_sets(golden_inputs, stiff_inputs, random_inputs);
   b.model = [](const Row& in) {
     const auto c = pom::march_core(depth(), s32(in[0]), s32(in[1]), s32(in[2]), s32(in[3]),
                                    static_cast<uint32_t>(in[4]));

@@ -42,7 +42,7 @@ enum class Weights { Formula = 0, Table1d = 1, Table2d = 2 };
 
 struct Config {
   Weights weights = Weights::Formula;
-  uint32_t max_texels = 1024;  // u(EwaCountW)
+  uint32_t max_texels = kDefaultMaxTexels;  // u(EwaCountW)
 };
 
 struct In {

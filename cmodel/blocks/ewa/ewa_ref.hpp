@@ -16,9 +16,12 @@
 
 namespace tu::ewa {
 
+// Texel cap of the renderers and the RTL top's span input (bounding-box texels per pixel).
+inline constexpr int kDefaultMaxTexels = 1024;
+
 struct Params {
   double max_aniso = 16;
-  int max_texels = 1024;  // bounding-box texels per pixel before falling back to a coarser level
+  int max_texels = kDefaultMaxTexels;  // bounding-box texels per pixel before falling back to a coarser level
 };
 
 struct Result {

@@ -135,4 +135,10 @@ FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, 
   return o;
 }
 
+bool pixel_view(const scene::Scene& s, int object, int triangle, int x, int y, TangentView* out) {
+  const auto& tri = s.objects[static_cast<size_t>(object)].triangles[static_cast<size_t>(triangle)];
+  persp::Hit hit;
+  return persp::ray_hit(s.camera, tri, x, y, &hit) && tangent_view(tri, s.camera.pos, hit.s, hit.r, out);
+}
+
 }  // namespace tu::relief

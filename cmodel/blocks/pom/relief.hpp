@@ -41,6 +41,10 @@ struct TangentView {
 bool tangent_view(const persp::Triangle& t, const double eye[3], double s, double r,
                   TangentView* out);
 
+// The tangent-space view at pixel (x, y) of triangle `triangle` of object `object` (the ray
+// through the pixel centre, as both render engines use it). False: the ray misses the triangle's
+// plane or the uv mapping is degenerate (no shift).
+bool pixel_view(const scene::Scene& s, int object, int triangle, int x, int y, TangentView* out);
 // The view as the fixed-point unit takes it: s16.14 components, S in u0.16 (clamped to < 1).
 pom::View quantise(const TangentView& v, double scale);
 

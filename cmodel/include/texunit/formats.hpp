@@ -94,6 +94,7 @@
   X(TexLodF, 8, "LOD fraction bits: trilinear blend weight")                                 \
   X(TexMaxLevels, 13, "mip levels: up to 4096 texels on a side")                             \
   X(TexAddrW, 26, "texel RAM word address (RGBA8 words, all levels of several textures)")     \
+  X(TexRamLog2Words, 20, "simulation texel RAM of the texture-unit top: 2^N RGBA8 words")      \
   X(PerspLatency, 8, "per-pixel pipeline latency in cycles, II = 1")                          \
   /* Ellipse parameters and LOD (docs/blocks/ellipse.md) */                                    \
   X(EllNumW, 48, "derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac") \

@@ -78,6 +78,8 @@ Scene load(const std::string& path);
 // brick wall with relief (grazing angles and strong anisotropy on purpose).
 const std::string& default_scene_json();
 Scene default_scene();
+// The same scene with every material's relief removed (the texture path alone).
+Scene without_relief(Scene s);
 
 // Builds the texture named `name` (procedural or PNG) with its mip pyramid.
 tex::Texture build_texture(const Scene& s, const std::string& name);
