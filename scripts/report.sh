@@ -13,5 +13,5 @@ tu=${TU_TEXUNIT:-build/default/tools/texunit/texunit}
 start=$(date +%s)
 "$tu" report --count "$count" --root . --yosys-cache docs/report/yosys_cache.json \
   --json docs/report/report.json --plots docs/report --markdown docs/report.md
-rm -f docs/report/*.dat docs/report/report.gp  # plot inputs; the PNGs and the JSON are the result
+rm -f docs/report/*.dat docs/report/*.gp  # plot inputs; the PNGs and the JSON are the result
 echo "scripts/report.sh: $(( $(date +%s) - start )) s" >&2
