@@ -81,7 +81,7 @@ module tu_relief_stage #(
 
   // Fraction of one texture repeat, PomUvF bits: bits [lw + Sh - 1 -: PomUvF] of u << Sh.
   function automatic logic [PF-1:0] frac(input logic [UvW-1:0] c, input logic [3:0] l);
-    return PF'({c, Sh'(0)} >> l);
+    frac = PF'({c, Sh'(0)} >> l);
   endfunction
 
   // ---- Layers N (3 stages; its side data moves in lockstep under an identical controller) ----
@@ -149,7 +149,7 @@ module tu_relief_stage #(
                                               input logic [3:0] l);
     logic [UvW-1:0] keep;
     keep = ~((UvW'(1) << (5'(l) + 5'(Sh))) - UvW'(1));
-    return (c & keep) | UvW'(((UvW+Sh)'(t) << l) >> Sh);
+    put_back = (c & keep) | UvW'(((UvW+Sh)'(t) << l) >> Sh);
   endfunction
   assign u_o = h_shift ? put_back(h_u, p_u[PF-1:0], h_lw) : h_u;
   assign v_o = h_shift ? put_back(h_v, p_v[PF-1:0], h_lh) : h_v;

@@ -241,16 +241,22 @@ TEST(ReliefStageCosim, StreamCyclesMatchTheEstimator) {
     Bank b;
     const auto sp = scene_pixels(b, method, method == relief::Method::PomFixed ? 8 : 32);
     std::vector<relief::StagePixel> sched;
+    uint64_t shifted = 0, steps = 0;
     for (size_t i = 0; i < sp.px.size(); ++i) {
       const auto e = expect(b, sp.maps[i], sp.px[i]);
       sched.push_back({e.shift, e.steps});
+      shifted += e.shift;
+      steps += e.steps;
     }
     const auto c = check(b, sp.maps, sp.px, 0, 1);
     EXPECT_EQ(c.mismatches, 0u) << c.first;
     const uint64_t predicted = relief::stage_cycles(sched);
-    std::printf("scene stream %s: %zu pixels, cycles measured %llu, predicted %llu\n",
+    std::printf("scene stream %s: %zu pixels (%llu shifted, %.3f steps each), cycles measured %llu, "
+                "predicted %llu, sum(k + 1) over shifted %llu\n",
                 method == relief::Method::PomFixed ? "pom_fixed 8" : "pom_adaptive 32", sp.px.size(),
-                static_cast<unsigned long long>(c.run.cycles), static_cast<unsigned long long>(predicted));
+                static_cast<unsigned long long>(shifted), double(steps) / double(shifted),
+                static_cast<unsigned long long>(c.run.cycles), static_cast<unsigned long long>(predicted),
+                static_cast<unsigned long long>(steps + shifted));
     EXPECT_EQ(c.run.cycles, predicted);
   }
 }
@@ -287,5 +293,9 @@ TEST(ReliefStageCosim, NonReliefPixelsAtOnePerClock) {
   const auto e = expect(b, m, px[100]);
   ASSERT_GT(e.steps, 0u);
   EXPECT_GT(cycles(px), px.size() + 1);
+  // One shifted pixel alone: accepted in cycle 0, out in cycle stage_cycles - 1.
+  std::vector<ReliefPixel> one = {px[100]};
+  std::printf("one shifted pixel, %u march steps: output in cycle %llu (plain pixel: cycle 1)\n", e.steps,
+              static_cast<unsigned long long>(cycles(one) - 1));
 }
 }  // namespace
