@@ -4,7 +4,8 @@
 // word, view_valid_i follows in_valid_i for relief pixels unless view_bubble_i (random) holds it
 // back, so the stage sees pixels waiting for their view word.
 module tu_relief_stage_sim #(
-  parameter int unsigned SideW = 20
+  parameter int unsigned SideW = 20,
+  parameter int unsigned Words = 1 << 17  // depth RAM words (the test's maps take ~72,000)
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -52,7 +53,7 @@ module tu_relief_stage_sim #(
     .d_req_o(d_req), .d_addr_o(d_addr), .d_data_i(d_word[7:0]),
     .out_valid_o, .out_ready_i, .u_o, .v_o, .n_o, .side_o
   );
-  tu_texel_ram u_ram (
+  tu_texel_ram #(.Words(Words)) u_ram (
     .clk_i, .rd_en_i(d_req), .rd_addr_i(d_addr), .rd_data_o(d_word),
     .wr_en_i(ram_we_i), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
   );
