@@ -13,7 +13,10 @@
 module tu_texture_unit #(
   // Defaults from the unit configuration (rtl/0_pkg/tu_unit_cfg_pkg.sv: the full unit as committed;
   // `texunit plan SCENE --out rtl/0_pkg/tu_unit_cfg_pkg.sv` specialises it to a scene).
-  parameter int unsigned HasEwa    = {31'b0, tu_unit_cfg_pkg::HasEwa},  // 1: EWA engine (tu_ewa); 0: bilinear at level 0 only
+  // 1: EWA engine (tu_ewa). 1: bilinear engine at level 0 (tu_bilinear). With both, each span's
+  // filt_i picks the engine; with one, every pixel goes to it (filt_i is ignored).
+  parameter int unsigned HasEwa      = {31'b0, tu_unit_cfg_pkg::HasEwa},
+  parameter int unsigned HasBilinear = {31'b0, tu_unit_cfg_pkg::HasBilinear},
   parameter int unsigned FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -49,6 +52,7 @@ module tu_texture_unit #(
   input  logic                                  tclamp_i,
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
+  input  logic                                  filt_i,  // material filter: 1 EWA, 0 bilinear
   // texel port (1-cycle read latency)
   output logic                                  tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   tex_addr_o,
@@ -73,7 +77,7 @@ module tu_texture_unit #(
   localparam int unsigned AW = tu_formats_pkg::TexAddrW;
   localparam int unsigned NW = tu_formats_pkg::EllNxW;
   // material fields carried per pixel
-  localparam int unsigned MatW  = AW + 4 + 4 + 1 + 2 + tu_formats_pkg::EwaCountW;
+  localparam int unsigned MatW  = AW + 4 + 4 + 1 + 2 + tu_formats_pkg::EwaCountW + 1;
   // per-triangle B2 fields
   localparam int unsigned TriW  = tu_formats_pkg::EllDetW + tu_formats_pkg::EllDetExpW +
                                   tu_formats_pkg::EllAnisoW + tu_formats_pkg::EllMaxLodW;
@@ -88,7 +92,7 @@ module tu_texture_unit #(
   logic [NW-1:0] ns_nux, ns_nvx, ns_nuy, ns_nvy, ns_m, ns_nn;
   logic [SpanW-1:0] span_side, ns_side;
   assign span_side = {a_i, d_i, g_i, x0_i, x1_i, y_i, dm_i, dexp_i, laniso_i, maxlod_i,
-                      tbase_i, tlw_i, tlh_i, tclamp_i, wsrc_i, cap_i};
+                      tbase_i, tlw_i, tlh_i, tclamp_i, wsrc_i, cap_i, filt_i};
   assign in_ready_o = ps_in_ready && ns_in_ready;
 
   tu_persp_setup u_psetup (
@@ -195,53 +199,110 @@ module tu_texture_unit #(
   logic [3:0]    f_lw, f_lh;
   logic [1:0]    f_wsrc;
   logic [tu_formats_pkg::EwaCountW-1:0] f_cap;
+  logic          f_filt;
   logic [UW-1:0] f_u, f_v;
   logic [tu_formats_pkg::EllCoefW-1:0] f_ae, f_ce, f_be;
   logic [tu_formats_pkg::EllLogW-1:0]  f_lmaj, f_lmin;
   logic [tu_formats_pkg::EllLodW-1:0]  f_lod;
   logic [4:0]                          f_eflags;
-  assign {f_x, f_y, f_ovf, f_base, f_lw, f_lh, f_clamp, f_wsrc, f_cap, f_u, f_v, f_guard,
+  assign {f_x, f_y, f_ovf, f_base, f_lw, f_lh, f_clamp, f_wsrc, f_cap, f_filt, f_u, f_v, f_guard,
           f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_eflags} = fq_data;
 
   // ---------------- filter ----------------
   // Per-pixel fields the filter does not carry ride in a FIFO popped with its output (it holds
-  // at most one pixel in flight).
+  // the pixels in flight in the engines).
+  // With both engines, they take turns: a pixel for the other engine waits until the current one
+  // has output all its pixels (cur_q: the engine of the pixels in flight, inflight_q: how many),
+  // so outputs stay in order and only one engine drives the texel port. Engine switches happen
+  // at material changes only (ewa::stream_cycles counts the drain).
   localparam int unsigned OsW = 2 * XW + 2 + 5;
-  logic          os_in_ready, os_valid, flt_in_ready, flt_valid;
+  localparam bit Both = (HasEwa != 0) && (HasBilinear != 0);
+  logic          os_in_ready, os_valid, flt_valid, eng_ready, sel_ewa, can_go, fire_flt, fire_out;
+  logic          cur_q;
+  logic [1:0]    inflight_q;  // <= 2: the sideband FIFO's depth bounds the pixels in flight
   logic [OsW-1:0] os_data;
-  assign fq_ready = flt_in_ready && os_in_ready;
+  logic          ewa_in_ready, ewa_valid, bil_in_ready, bil_valid;
+  logic          ewa_req, bil_req;
+  logic [AW-1:0] ewa_addr, bil_addr;
+  logic [31:0]   ewa_rgba, bil_rgba;
+  assign sel_ewa  = (HasEwa != 0) && ((HasBilinear == 0) || f_filt);
+  assign can_go   = !Both || inflight_q == '0 || cur_q == sel_ewa;
+  assign eng_ready = sel_ewa ? ewa_in_ready : bil_in_ready;
+  assign fq_ready = can_go && eng_ready && os_in_ready;
+  assign fire_flt = fq_valid && fq_ready;
   tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
-    .clk_i, .rst_ni, .in_valid_i(fq_valid && flt_in_ready), .in_ready_o(os_in_ready),
+    .clk_i, .rst_ni, .in_valid_i(fq_valid && can_go && eng_ready), .in_ready_o(os_in_ready),
     .in_data_i({f_x, f_y, f_ovf, f_guard, f_eflags}), .out_valid_o(os_valid),
     .out_ready_i(out_ready_i && flt_valid), .out_data_o(os_data)
   );
+  // The engine of the oldest pixel in flight: cur_q with both, the only one otherwise.
+  logic out_ewa;
+  assign out_ewa     = Both ? cur_q : (HasEwa != 0);
+  assign flt_valid   = out_ewa ? ewa_valid : bil_valid;
   assign out_valid_o = flt_valid && os_valid;
+  assign fire_out    = out_valid_o && out_ready_i;
   assign {x_o, y_o, pflags_o, eflags_o} = os_data;
+  assign rgba_o      = out_ewa ? ewa_rgba : bil_rgba;
+  // Only the engine with pixels in flight reads texels (cur_q is set when it accepts its first).
+  assign tex_req_o   = out_ewa ? ewa_req : bil_req;
+  assign tex_addr_o  = out_ewa ? ewa_addr : bil_addr;
 
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      cur_q      <= 1'b0;
+      inflight_q <= '0;
+    end else begin
+      if (fire_flt) cur_q <= sel_ewa;
+      inflight_q <= inflight_q + {1'b0, fire_flt} - {1'b0, fire_out};
+    end
+  end
+
+  logic [3:0]                           ewa_level;
+  logic [tu_formats_pkg::EwaCountW-1:0] ewa_visited, ewa_inside;
+  logic [4:0]                           ewa_flags;
   if (HasEwa != 0) begin : g_ewa
     tu_ewa u_ewa (
-      .clk_i, .rst_ni, .in_valid_i(fq_valid && os_in_ready), .in_ready_o(flt_in_ready),
+      .clk_i, .rst_ni, .in_valid_i(fq_valid && can_go && os_in_ready && sel_ewa), .in_ready_o(ewa_in_ready),
       .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
       .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh),
       .clamp_i(f_clamp), .wsrc_i(f_wsrc), .cap_i(f_cap),
-      .tex_req_o, .tex_addr_o, .tex_data_i,
-      .out_valid_o(flt_valid), .out_ready_i(out_ready_i && os_valid),
-      .rgba_o, .level_o, .visited_o, .inside_o, .flags_o
+      .tex_req_o(ewa_req), .tex_addr_o(ewa_addr), .tex_data_i,
+      .out_valid_o(ewa_valid), .out_ready_i(out_ready_i && os_valid && out_ewa),
+      .rgba_o(ewa_rgba), .level_o(ewa_level), .visited_o(ewa_visited), .inside_o(ewa_inside),
+      .flags_o(ewa_flags)
     );
-  end else begin : g_bilinear
-    tu_bilinear u_bil (
-      .clk_i, .rst_ni, .in_valid_i(fq_valid && os_in_ready), .in_ready_o(flt_in_ready),
-      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh), .clamp_i(f_clamp),
-      .tex_req_o, .tex_addr_o, .tex_data_i,
-      .out_valid_o(flt_valid), .out_ready_i(out_ready_i && os_valid), .rgba_o
-    );
-    assign level_o   = '0;  // level and texel counts: the C model's records (not compared there)
-    assign visited_o = tu_formats_pkg::EwaCountW'(4);
-    assign inside_o  = '0;
-    assign flags_o   = '0;
+  end else begin : g_no_ewa
+    assign ewa_in_ready = 1'b0;
+    assign ewa_valid    = 1'b0;
+    assign ewa_req      = 1'b0;
+    assign ewa_addr     = '0;
+    assign ewa_rgba     = '0;
+    assign ewa_level    = '0;
+    assign ewa_visited  = '0;
+    assign ewa_inside   = '0;
+    assign ewa_flags    = '0;
     logic unused_ewa;
     assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_wsrc, f_cap};
   end
+  if (HasBilinear != 0) begin : g_bilinear
+    tu_bilinear u_bil (
+      .clk_i, .rst_ni, .in_valid_i(fq_valid && can_go && os_in_ready && !sel_ewa), .in_ready_o(bil_in_ready),
+      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh), .clamp_i(f_clamp),
+      .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i,
+      .out_valid_o(bil_valid), .out_ready_i(out_ready_i && os_valid && !out_ewa), .rgba_o(bil_rgba)
+    );
+  end else begin : g_no_bilinear
+    assign bil_in_ready = 1'b0;
+    assign bil_valid    = 1'b0;
+    assign bil_req      = 1'b0;
+    assign bil_addr     = '0;
+    assign bil_rgba     = '0;
+  end
+  // Bilinear pixels: level 0, four texels, no EWA flags (the C model's records).
+  assign level_o   = out_ewa ? ewa_level : '0;
+  assign visited_o = out_ewa ? ewa_visited : tu_formats_pkg::EwaCountW'(4);
+  assign inside_o  = out_ewa ? ewa_inside : '0;
+  assign flags_o   = out_ewa ? ewa_flags : '0;
 
   logic unused;
   assign unused = ^{b2_eexp, b2_fm, b2_fexp, ex_pix[PixW-1 -: XW]};  // x slot: filled per pixel

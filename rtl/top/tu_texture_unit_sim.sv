@@ -1,7 +1,8 @@
 // Simulation top of the texture unit: tu_texture_unit with the texel RAM model attached; the
 // testbench loads every texture of the scene through the RAM's write port before the spans.
 module tu_texture_unit_sim #(
-  parameter int unsigned HasEwa = {31'b0, tu_unit_cfg_pkg::HasEwa},
+  parameter int unsigned HasEwa      = {31'b0, tu_unit_cfg_pkg::HasEwa},
+  parameter int unsigned HasBilinear = {31'b0, tu_unit_cfg_pkg::HasBilinear},
   parameter int unsigned Words  = 1 << tu_formats_pkg::TexRamLog2Words
 ) (
   input  logic                                  clk_i,
@@ -40,6 +41,7 @@ module tu_texture_unit_sim #(
   input  logic                                  tclamp_i,
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
+  input  logic                                  filt_i,
   // pixel output
   output logic                                  out_valid_o,
   input  logic                                  out_ready_i,
@@ -56,12 +58,12 @@ module tu_texture_unit_sim #(
   logic                                tex_req;
   logic [tu_formats_pkg::TexAddrW-1:0] tex_addr;
   logic [31:0]                         tex_data;
-  tu_texture_unit #(.HasEwa(HasEwa)) u_tu (
+  tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
     .kuy_i, .kvy_i, .m_i, .nn_i, .dm_i, .dexp_i, .laniso_i, .maxlod_i,
-    .tbase_i, .tlw_i, .tlh_i, .tclamp_i, .wsrc_i, .cap_i, .out_valid_o, .out_ready_i,
+    .tbase_i, .tlw_i, .tlh_i, .tclamp_i, .wsrc_i, .cap_i, .filt_i, .out_valid_o, .out_ready_i,
     .x_o, .y_o, .rgba_o, .level_o, .visited_o, .inside_o, .flags_o, .eflags_o,
     .pflags_o,
     .tex_req_o(tex_req), .tex_addr_o(tex_addr), .tex_data_i(tex_data)

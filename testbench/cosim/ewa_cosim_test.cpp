@@ -95,6 +95,7 @@ TEST(TextureUnitRtl, CyclesMatchPrediction) {
 TEST(TextureUnitRtl, BilinearOnlyTopEqualsCModelWithStalls) {
   cosim::RtlRenderOptions o;
   o.has_ewa = false;
+  o.filter = scene::Filter::Bilinear;
   o.stall_prob = 0.3;
   const auto r = cosim::render_rtl(small_scene(), o);
   EXPECT_TRUE(r.ok()) << r.first_mismatch;
@@ -103,5 +104,54 @@ TEST(TextureUnitRtl, BilinearOnlyTopEqualsCModelWithStalls) {
   const auto q = cosim::render_rtl(small_scene(), o);
   EXPECT_TRUE(q.ok()) << q.first_mismatch;
   EXPECT_EQ(q.cycles, q.predicted_cycles);
+  // The bilinear-only unit cannot take an EWA material: a message naming it, no render.
+  o.filter.reset();
+  try {
+    cosim::render_rtl(small_scene(), o);
+    ADD_FAILURE() << "EWA material accepted by the bilinear-only unit";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("/materials/ground/filter: ewa, but the unit is bilinear-only"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Per-material filters on the full unit: ground bilinear, wall EWA. The engines take turns at
+// material changes; cycles = ewa::stream_cycles with the drain rule; 30% stalls lose nothing.
+TEST(TextureUnitRtl, MixedFiltersPerSpan) {
+  auto s = small_scene();
+  s.materials.at("ground").filter = scene::Filter::Bilinear;
+  cosim::RtlRenderOptions o;
+  const auto r = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r.ok()) << r.first_mismatch;
+  EXPECT_EQ(r.cycles, r.predicted_cycles);
+  o.stall_prob = 0.3;
+  const auto q = cosim::render_rtl(s, o);
+  EXPECT_TRUE(q.ok()) << q.first_mismatch;
+  // Both engines were used: the ground's pixels report bilinear's four texels, the wall's EWA's.
+  size_t bil = 0, ewa = 0;
+  for (const auto& p : r.frame.pixels) (p.object == 0 ? bil : ewa) += 1;
+  EXPECT_GT(bil, 500u);
+  EXPECT_GT(ewa, 100u);
+  std::printf("mixed: %zu bilinear + %zu EWA px, cycles %llu = predicted %llu\n", bil, ewa,
+              (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
+}
+
+// The unit `texunit plan` writes for a scene without minification (bilinear only, HasEwa = 0)
+// renders it bit-exactly as the full unit does with the plan's filter on every span.
+TEST(TextureUnitRtl, SpecialisedBilinearUnitRendersAsTheFullUnit) {
+  const auto s = small_scene();
+  cosim::RtlRenderOptions full, spec;
+  full.filter = spec.filter = scene::Filter::Bilinear;
+  spec.has_ewa = false;
+  const auto a = cosim::render_rtl(s, full), b = cosim::render_rtl(s, spec);
+  EXPECT_TRUE(a.ok()) << a.first_mismatch;
+  EXPECT_TRUE(b.ok()) << b.first_mismatch;
+  ASSERT_EQ(a.frame.pixels.size(), b.frame.pixels.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < a.frame.pixels.size(); ++i)
+    differ += !(a.frame.pixels[i].color == b.frame.pixels[i].color && a.frame.pixels[i].x == b.frame.pixels[i].x &&
+                a.frame.pixels[i].y == b.frame.pixels[i].y);
+  EXPECT_EQ(differ, 0u);
+  EXPECT_EQ(a.cycles, b.cycles);  // same engine, same stream
 }
 }  // namespace

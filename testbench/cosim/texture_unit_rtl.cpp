@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "Vtu_texture_unit_sim.h"
@@ -23,7 +24,7 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 // Row layout of one span (two words for each 112-bit numerator constant).
 enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kClamp,
-  kWsrc, kCap, kRowSize
+  kWsrc, kCap, kFilt, kRowSize
 };
 
 template <class V>
@@ -64,6 +65,7 @@ void drive(V& d, const Row& r) {
   d.tclamp_i = static_cast<uint8_t>(r[kClamp]);
   d.wsrc_i = static_cast<uint8_t>(r[kWsrc]);
   d.cap_i = static_cast<uint32_t>(r[kCap]);
+  d.filt_i = static_cast<uint8_t>(r[kFilt]);
 }
 
 template <class V>
@@ -75,11 +77,21 @@ Row sample(V& d) {
 RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   using Coefs = persp::Unit::Coefs;
   const int w = s.camera.width, h = s.camera.height;
-  const scene::Filter filter = o.has_ewa ? scene::Filter::Ewa : scene::Filter::Bilinear;
+  // Each material's filter on this unit.
+  std::map<std::string, bool> ewa_of;
+  for (const auto& [name, m] : s.materials) {
+    const scene::Filter f = o.filter.value_or(m.filter);
+    if (f != scene::Filter::Ewa && f != scene::Filter::Bilinear)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: the RTL texture unit filters with " +
+                                  "ewa or bilinear, not " + std::string(scene::to_string(f)));
+    if (f == scene::Filter::Ewa && !o.has_ewa)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: ewa, but the unit is bilinear-only");
+    ewa_of[name] = f == scene::Filter::Ewa;
+  }
   render::CmodelOptions copt;
   copt.weights = o.weights;
   copt.relief = false;  // the RTL top has no relief stage: compare the texture path
-  const render::Frame expect = render::render_cmodel(s, filter, copt);
+  const render::Frame expect = render::render_cmodel(s, o.filter, copt);
 
   // Textures in the RAM, per-triangle set-up.
   struct Obj {
@@ -150,9 +162,16 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       r[kClamp] = ob.tex.wrap == tex::Wrap::Clamp;
       r[kWsrc] = static_cast<uint64_t>(o.weights.value_or(m.weights));
       r[kCap] = ewa::kDefaultMaxTexels;
+      const bool span_ewa = ewa_of.at(s.objects[static_cast<size_t>(c.object)].material);
+      r[kFilt] = span_ewa;
       spans.push_back(r);
       for (int px = x; px <= x1; ++px, ++pix) {
-        if (!o.has_ewa || pix >= expect.pixels.size()) continue;
+        if (!span_ewa || pix >= expect.pixels.size()) {
+          ewa::PixelCost pc;
+          pc.bilinear = true;
+          costs.push_back(pc);
+          continue;
+        }
         const auto& rec = expect.pixels[pix];
         ewa::fx::In in;
         in.b2 = ellipse::fx::analytic(ellipse::fx::make_in(k, px, y, static_cast<uint32_t>(r[kLaniso]),
@@ -191,8 +210,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   out.hung = rr.hung;
   out.extra_outputs = rr.extra_outputs;
   const auto front = static_cast<uint64_t>(ewa::texture_unit_front_latency());
-  out.predicted_cycles = o.has_ewa ? ewa::stream_cycles(costs, front)
-                                   : ewa::bilinear_stream_cycles(expect.pixels.size(), front);
+  out.predicted_cycles = ewa::stream_cycles(costs, front);
   out.frame.image = expect.image;
   for (size_t i = 0; i < rr.outputs.size(); ++i) {
     const Row& q = rr.outputs[i];
@@ -203,14 +221,18 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     rec.lod = static_cast<double>(q[3]);
     rec.texels = static_cast<int>(q[4]);
     rec.texels_inside = static_cast<int>(q[5]);
-    rec.ewa_flags = o.has_ewa ? static_cast<uint32_t>(q[6]) : 0;
+    rec.ewa_flags = static_cast<uint32_t>(q[6]);
     rec.b2_flags = static_cast<uint32_t>(q[7]);
     if (i < expect.pixels.size()) {
       const auto& e = expect.pixels[i];
       rec.object = e.object, rec.u = e.u, rec.v = e.v;
+      // Bilinear pixels: the unit reports level 0, four texels, no EWA flags (the C model's records
+      // of those are its own bookkeeping, not compared).
+      const bool ewa_px = ewa_of.at(s.objects[static_cast<size_t>(e.object)].material);
       const bool same = rec.x == e.x && rec.y == e.y && rec.color == e.color && rec.b2_flags == e.b2_flags &&
-                        (!o.has_ewa || (rec.lod == e.lod && rec.texels == e.texels &&
-                                        rec.texels_inside == e.texels_inside && rec.ewa_flags == e.ewa_flags));
+                        (ewa_px ? rec.lod == e.lod && rec.texels == e.texels &&
+                                      rec.texels_inside == e.texels_inside && rec.ewa_flags == e.ewa_flags
+                                : rec.lod == 0 && rec.texels == 4 && rec.texels_inside == 0 && rec.ewa_flags == 0);
       if (!same) {
         if (out.mismatches == 0) {
           char buf[256];

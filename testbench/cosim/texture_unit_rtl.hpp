@@ -5,8 +5,10 @@
 //     same visibility as the other engines), with the B1 quantised coefficients, the per-triangle
 //     B2 constants (exact numerator constants and det3, ellipse::fx) and the material;
 //   * textures: every object's texture with its pyramid loaded into the RAM model during reset;
-//   * HasEwa = 1: EWA with each material's (or the given) weight source, 1024-texel cap, checked
-//     against render_cmodel's EWA; HasEwa = 0: the bilinear-only top against its bilinear.
+//   * filters: each material's filter (or the override), ewa or bilinear, chosen per span (filt_i);
+//     EWA with each material's (or the given) weight source and the 1024-texel cap;
+//   * units: the full unit (HasEwa = HasBilinear = 1) or the bilinear-only unit (HasEwa = 0, what
+//     `texunit plan` writes for a scene without minification), checked against render_cmodel.
 // Not on this path: the relief uv shift (render_cmodel's hook) -- scenes are rendered without it.
 #pragma once
 
@@ -20,7 +22,8 @@
 namespace tu::cosim {
 
 struct RtlRenderOptions {
-  bool has_ewa = true;
+  bool has_ewa = true;                         // false: the bilinear-only unit (every filter must be bilinear)
+  std::optional<scene::Filter> filter;         // overrides every material's filter (ewa or bilinear)
   std::optional<scene::WeightSource> weights;  // overrides every material's EWA weight source
   double stall_prob = 0;                       // random input bubbles / output stalls
   uint64_t seed = 1;
@@ -30,7 +33,7 @@ struct RtlRender {
   render::Frame frame;               // RTL pixels
   uint64_t spans = 0;
   uint64_t cycles = 0;               // measured: first span offered to the last pixel out
-  uint64_t predicted_cycles = 0;     // ewa::stream_cycles / bilinear_stream_cycles (no stalls)
+  uint64_t predicted_cycles = 0;     // ewa::stream_cycles (no stalls)
   uint64_t mismatches = 0;           // pixels differing from render_cmodel (any field)
   std::string first_mismatch;
   bool hung = false;
@@ -39,7 +42,8 @@ struct RtlRender {
   bool ok() const { return mismatches == 0 && !hung && extra_outputs == 0; }
 };
 
-// Throws std::runtime_error naming the scene when its textures do not fit the RAM model.
+// Throws std::runtime_error naming the scene when its textures do not fit the RAM model, and
+// std::invalid_argument naming the material when its filter is not one the unit has.
 RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o = {});
 
 }  // namespace tu::cosim

@@ -204,7 +204,7 @@ json unit_json(const Unit& u, size_t pixels) {
 
 // The RTL configuration: tu_unit_cfg_pkg, read by the RTL top.
 struct Config {
-  bool trilinear, ewa, relief, pom, iter_parallax;
+  bool trilinear, ewa, bilinear, relief, pom, iter_parallax;
   int pom_max_layers, weight_sources, wtab_log2n, wtab2d_log2n, persp_lanes;
 };
 std::string package(const Config& c, const std::string& origin) {
@@ -214,6 +214,7 @@ std::string package(const Config& c, const std::string& origin) {
      << "package tu_unit_cfg_pkg;\n"
      << "  localparam bit HasTrilinear = 1'b" << c.trilinear << ";  // footprint / LOD (tu_ellipse)\n"
      << "  localparam bit HasEwa = 1'b" << c.ewa << ";  // EWA texel walk, clip volume and weights\n"
+     << "  localparam bit HasBilinear = 1'b" << c.bilinear << ";  // bilinear engine (per-span choice with EWA)\n"
      << "  localparam bit HasRelief = 1'b" << c.relief << ";\n"
      << "  localparam bit HasPom = 1'b" << c.pom << ";  // tu_pom_layers + tu_pom_march\n"
      << "  localparam bit HasIterParallax = 1'b" << c.iter_parallax << ";\n"
@@ -369,10 +370,10 @@ int run(const Options& opt) {
     return 0;
   };
   const std::string origin = "`texunit plan " + opt.scene + "` from " + opt.report;
-  const Config planned{has_tri, has_ewa, relief, pom, iterative, max_layers, weight_bit(weights),
+  const Config planned{has_tri, has_ewa, !has_ewa, relief, pom, iterative, max_layers, weight_bit(weights),
                        log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1};
   // The full unit: everything in, relief up to the scene format's 256 layers.
-  const Config everything{true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes};
+  const Config everything{true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes};
 
   const size_t px = bil.pixels.size();
   json out = {{"scene", s.source},

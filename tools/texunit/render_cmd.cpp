@@ -22,6 +22,10 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
                  "rendering engine: float reference, bit-accurate C model, or the Verilated "
                  "texture-unit RTL (ewa or bilinear only; compared with the C model pixel by pixel)")
       ->check(CLI::IsMember({"ref", "cmodel", "rtl"}));
+  r->add_option("--rtl-unit", a.rtl_unit,
+                 "--engine rtl: the full unit (EWA and bilinear engines, each material's filter per span) "
+                 "or the bilinear-only unit (HasEwa = 0)")
+      ->check(CLI::IsMember({"full", "bilinear"}));
   r->add_option("--weights", a.weights, "override every material's EWA weight source")
       ->check(CLI::IsMember({"formula", "table1d", "table2d"}));
   r->add_option("--filter", a.filter, "override every material's filter")
@@ -48,16 +52,16 @@ int run_render(const RenderArgs& a) {
   bool ok = true;
   if (a.engine == "rtl") {
     if (f && *f != scene::Filter::Ewa && *f != scene::Filter::Bilinear)
-      throw std::invalid_argument("--engine rtl: the RTL texture unit filters with ewa (HasEwa = 1) or "
-                                  "bilinear (HasEwa = 0), not " + a.filter);
+      throw std::invalid_argument("--engine rtl: the RTL texture unit filters with ewa or bilinear, not " + a.filter);
     cosim::RtlRenderOptions ro;
-    ro.has_ewa = !(f && *f == scene::Filter::Bilinear);
+    ro.has_ewa = a.rtl_unit == "full";
+    ro.filter = f;
     ro.weights = w;
     const auto r = cosim::render_rtl(s, ro);
     frame = r.frame;
     ok = r.ok();
-    std::printf("rtl %s: %zu pixels in %llu spans, %llu mismatches against the C model%s%s\n",
-                ro.has_ewa ? "ewa" : "bilinear", r.frame.pixels.size(), (unsigned long long)r.spans,
+    std::printf("rtl %s unit: %zu pixels in %llu spans, %llu mismatches against the C model%s%s\n",
+                a.rtl_unit.c_str(), r.frame.pixels.size(), (unsigned long long)r.spans,
                 (unsigned long long)r.mismatches, r.first_mismatch.empty() ? "" : "; first: ",
                 r.first_mismatch.c_str());
     const double n = static_cast<double>(std::max<size_t>(1, r.frame.pixels.size()));
@@ -191,13 +195,19 @@ void demo_render_relief(const scene::Scene& s, const render::Frame& ewa_ref, con
 bool demo_render_rtl(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir) {
   struct Row {
     const char* name;
-    bool has_ewa;
+    bool has_ewa;  // false: the bilinear-only unit
+    std::optional<scene::Filter> filter;
     scene::WeightSource weights;
   };
-  const Row rows[] = {{"ewa_formula", true, scene::WeightSource::Formula},
-                      {"ewa_table1d", true, scene::WeightSource::Table1d},
-                      {"ewa_table2d", true, scene::WeightSource::Table2d},
-                      {"bilinear", false, scene::WeightSource::Formula}};
+  // The full unit with every span on EWA, with ground on bilinear (per-material filters: the
+  // engines take turns), and the bilinear-only unit.
+  const Row rows[] = {{"ewa_formula", true, scene::Filter::Ewa, scene::WeightSource::Formula},
+                      {"ewa_table1d", true, scene::Filter::Ewa, scene::WeightSource::Table1d},
+                      {"ewa_table2d", true, scene::Filter::Ewa, scene::WeightSource::Table2d},
+                      {"mixed", true, std::nullopt, scene::WeightSource::Formula},
+                      {"bilinear", false, scene::Filter::Bilinear, scene::WeightSource::Formula}};
+  scene::Scene mixed = s;
+  mixed.materials.at("ground").filter = scene::Filter::Bilinear;
   std::printf("\ndefault scene through the Verilated texture unit (rtl/top/tu_texture_unit.sv: spans ->"
               " B1 -> B2 -> filter), every pixel compared with the C-model engine, no stalls:\n");
   std::printf("%-12s %8s %10s %11s %13s %13s %9s %12s  %s\n", "filter", "pixels", "mismatch",
@@ -206,8 +216,9 @@ bool demo_render_rtl(const scene::Scene& s, const render::Frame& ewa_ref, const 
   for (const auto& r : rows) {
     cosim::RtlRenderOptions o;
     o.has_ewa = r.has_ewa;
+    o.filter = r.filter;
     o.weights = r.weights;
-    const auto res = cosim::render_rtl(s, o);
+    const auto res = cosim::render_rtl(r.filter ? s : mixed, o);
     ok = ok && res.ok();
     const auto png = (std::filesystem::path(out_dir) / (std::string("rtl_") + r.name + ".png")).string();
     img::write_png_rgba(png, res.frame.image);

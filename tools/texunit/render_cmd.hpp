@@ -6,7 +6,7 @@
 namespace tu::cli {
 
 struct RenderArgs {
-  std::string scene, out_dir, dump, engine = "ref", filter, weights;
+  std::string scene, out_dir, dump, engine = "ref", filter, weights, rtl_unit = "full";
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);
