@@ -197,7 +197,7 @@ TEST(ReliefStageCosim, RandomAndExtremesWithStalls) {
     const int m = all[pick(rng)];
     p.u = code();
     p.v = code();
-    p.lw = lw(rng);
+    p.lw = pct(rng) < 4 ? 15 : lw(rng);  // 15: the widest the 4-bit port takes
     p.lh = pct(rng) < 20 ? p.lw : lw(rng);
     p.rel = pct(rng) < 75;
     p.guard = pct(rng) < 8;
