@@ -24,13 +24,9 @@ ewa::fx::Weights weights_of(scene::WeightSource w) {
   return ewa::fx::Weights::Formula;
 }
 
-// Relief (docs/blocks/relief.md §9): B1's u, v codes (level-0 texels, TexUvF bits) become
-// texture repeats with PomUvF bits, the material's method shifts them, and they come back. The
-// tangent-space view is the shader's float input, quantised to the unit's s16.14 (as render_ref).
-// Widths are powers of two, so the conversions are shifts: exact while the texture is at most
-// 2^(PomUvF - TexUvF) = 256 texels wide, floored otherwise (finer than the unit's uv quantum).
-int64_t shift_code(int64_t c, int by) { return by >= 0 ? c * (int64_t(1) << by) : c >> -by; }
-
+// Relief (docs/blocks/relief.md §9): B1's u, v codes are shifted by the material's method
+// (relief::shift_texel_uv_fx, the step the RTL tu_relief_stage implements). The tangent-space
+// view is the shader's float input, quantised to the unit's s16.14 (as render_ref).
 void shift_relief_fx(const scene::Scene& s, const Cover& c, const relief::Maps& maps, const tex::Texture& tx,
                      int x, int y, int64_t* u, int64_t* v, PixelRecord* rec) {
   const auto& rel = *s.materials.at(s.objects[static_cast<size_t>(c.object)].material).relief;
@@ -38,11 +34,10 @@ void shift_relief_fx(const scene::Scene& s, const Cover& c, const relief::Maps& 
   if (!relief::pixel_view(s, c.object, c.triangle, x, y, &tv)) return;  // no shift (as render_ref)
   const int lw = std::countr_zero(static_cast<unsigned>(tx.levels[0].width));
   const int lh = std::countr_zero(static_cast<unsigned>(tx.levels[0].height));
-  const int du = fmt::kPomUvF - fmt::kTexUvF;
-  const auto r = relief::shift_uv_fx(maps, shift_code(*u, du - lw), shift_code(*v, du - lh),
-                                     relief::quantise(tv, rel.scale), rel.method, rel.layers);
-  *u = shift_code(r.u, lw - du);
-  *v = shift_code(r.v, lh - du);
+  const auto r = relief::shift_texel_uv_fx(maps, *u, *v, lw, lh, relief::quantise(tv, rel.scale),
+                                          rel.method, rel.layers);
+  *u = r.u;
+  *v = r.v;
   rec->relief_n = static_cast<int>(r.n);
 }
 }  // namespace

@@ -2,16 +2,22 @@
 // Per pixel: T = (u, v), step dT = (du, dv) (uv: PomUvW bits, PomUvF fraction), N layers.
 //   h_0 = depth(T); while 255*i < h_i*N: T -= dT, h = depth(T), i++      (exact integer rule)
 //   out: T_k, k, a = 255k - h_k*N, den = a + h_{k-1}*N - 255(k-1)   (k = 0: a = den = 0)
-// Depth map: a synchronous 8-bit ROM model (nearest, REPEAT: texel = uv[15:10] of a 64x64 map)
-// holding the procedural bricks map pom::map_bricks(64) (flat faces 26, bevels 153 / 89, mortar
-// 255); that map repeats every 32 texels, so the ROM is addressed by uv[14:10].
+// Depth map, DepthPort = 0: a synchronous 8-bit ROM model (nearest, REPEAT: texel = uv[15:10] of
+// a 64x64 map) holding the procedural bricks map pom::map_bricks(64) (flat faces 26, bevels
+// 153 / 89, mortar 255); that map repeats every 32 texels, so the ROM is addressed by uv[14:10].
+// DepthPort = 1: an external synchronous RAM (1-cycle read latency) holding any power-of-two map
+// of 2^lw x 2^lh bytes at `base` (given with the pixel): address = base + (ty << lw) + tx,
+// tx = floor(u * 2^lw) mod 2^lw (pom::tex_nearest). The read data is used in the cycle after the
+// request and kept in a register afterwards, so a RAM whose output changes (shared port) is fine.
+// Same schedule either way.
 // The address of T_{i+1} = T_i - dT is issued every Run cycle, so the sample is ready on the
 // next cycle. The result moves to the output registers in the pixel's last compare cycle, and the
 // next pixel is accepted in that same cycle (its first depth address replaces the unused next
 // one), so a stream of pixels takes k + 1 cycles per pixel (k + 1 compares) without stalls;
 // one pixel alone: accepted in cycle 0, output in cycle k + 2.
 module tu_pom_march #(
-  parameter int unsigned SideW = 1  // carried with the pixel (the unit's dT and flags)
+  parameter int unsigned SideW = 1,     // carried with the pixel (the unit's dT and flags)
+  parameter int unsigned DepthPort = 0  // 0: bricks ROM; 1: external depth RAM (d_* ports)
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -23,6 +29,13 @@ module tu_pom_march #(
   input  logic [tu_formats_pkg::PomUvW-1:0]   dv_i,
   input  logic [tu_formats_pkg::PomNW-1:0]    n_i,
   input  logic [SideW-1:0]                    side_i,
+  // depth map of the pixel (DepthPort = 1 only): byte address of texel (0, 0), log2 sides
+  input  logic [tu_formats_pkg::TexAddrW-1:0] base_i,
+  input  logic [3:0]                          lw_i,
+  input  logic [3:0]                          lh_i,
+  output logic                                d_req_o,
+  output logic [tu_formats_pkg::TexAddrW-1:0] d_addr_o,
+  input  logic [7:0]                          d_data_i,
   output logic                                out_valid_o,
   input  logic                                out_ready_i,
   output logic [tu_formats_pkg::PomUvW-1:0]   u_o,
@@ -35,13 +48,14 @@ module tu_pom_march #(
   localparam int unsigned UvW = tu_formats_pkg::PomUvW;
   localparam int unsigned NW = tu_formats_pkg::PomNW;
   localparam int unsigned TexLsb = tu_formats_pkg::PomUvF - 6;
+  localparam int unsigned TexAW = tu_formats_pkg::TexAddrW;
 
   typedef enum logic {Idle, Run} state_e;
   state_e state_q;
 
   logic [UvW-1:0] tu_q, tv_q, du_q, dv_q;
   logic [NW-1:0]  n_q, i_q;
-  logic [7:0]     h_q, hp_q;  // h_q: ROM output = depth(T_i); hp_q: depth(T_{i-1})
+  logic [7:0]     h, hp_q;    // h: depth(T_i) (ROM register or RAM data); hp_q: depth(T_{i-1})
   logic           out_valid_q;
   logic [SideW-1:0] side_q;
 
@@ -72,6 +86,7 @@ module tu_pom_march #(
   logic           take_in;        // accept a pixel (Idle, or the previous pixel's last compare)
   logic [15:0]    lhs, rhs, rhs_p;   // 255*i, h*N, h_prev*N (< 2^14)
   logic           fire_in;
+  logic           rd;             // a depth read is issued this cycle
 
   assign out_free    = !out_valid_q || out_ready_i;
   assign finish      = (state_q == Run) && !go;
@@ -84,7 +99,7 @@ module tu_pom_march #(
     nu = tu_q - du_q;
     nv = tv_q - dv_q;
     lhs = 16'(8'd255 * i_q);
-    rhs = 16'(h_q * n_q);
+    rhs = 16'(h * n_q);
     rhs_p = 16'(hp_q * n_q);
     go = lhs < rhs;
     if (take_in) begin
@@ -96,17 +111,66 @@ module tu_pom_march #(
     end
   end
 
+  assign rd = fire_in || (state_q == Run && go);
+
+  if (DepthPort != 0) begin : g_ram
+    logic [TexAW-1:0] base_q;
+    logic [3:0]       lw_q, lh_q;
+    logic [TexAW-1:0] base_a;
+    logic [3:0]       lw_a, lh_a;
+    logic [UvW-1:0]   ua, va;
+    logic [15:0]      tx, ty;
+    logic             rd_q;      // d_data_i answers last cycle's read
+    logic [7:0]       hold_q;    // the last read's data, while no new read is issued
+    always_comb begin
+      if (take_in) begin
+        ua = u_i; va = v_i; base_a = base_i; lw_a = lw_i; lh_a = lh_i;
+      end else begin
+        ua = nu; va = nv; base_a = base_q; lw_a = lw_q; lh_a = lh_q;
+      end
+      // floor(u * 2^lw) mod 2^lw: bits [PomUvF-1 : PomUvF-lw] of u (lw <= 15 < PomUvF)
+      tx = 16'(ua >> (5'(tu_formats_pkg::PomUvF) - 5'(lw_a))) & ((16'd1 << lw_a) - 16'd1);
+      ty = 16'(va >> (5'(tu_formats_pkg::PomUvF) - 5'(lh_a))) & ((16'd1 << lh_a) - 16'd1);
+    end
+    assign d_req_o  = rd;
+    assign d_addr_o = base_a + (TexAW'(ty) << lw_a) + TexAW'(tx);
+    assign h = rd_q ? d_data_i : hold_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        base_q <= '0; lw_q <= '0; lh_q <= '0; rd_q <= 1'b0; hold_q <= '0;
+      end else begin
+        rd_q <= rd;
+        hold_q <= h;
+        if (fire_in) begin
+          base_q <= base_i; lw_q <= lw_i; lh_q <= lh_i;
+        end
+      end
+    end
+    logic unused_rom;
+    assign unused_rom = ^{ax, ay};
+  end else begin : g_rom
+    // synchronous ROM: the address of this cycle is read at the edge (kept while stalled)
+    logic [7:0] h_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) h_q <= '0;
+      else if (rd) h_q <= bricks(ax, ay);
+    end
+    assign h = h_q;
+    assign d_req_o  = 1'b0;
+    assign d_addr_o = '0;
+    logic unused_ram;
+    assign unused_ram = ^{base_i, lw_i, lh_i, d_data_i};
+  end
+
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       state_q <= Idle;
       tu_q <= '0; tv_q <= '0; du_q <= '0; dv_q <= '0;
-      n_q <= '0; i_q <= '0; h_q <= '0; hp_q <= '0;
+      n_q <= '0; i_q <= '0; hp_q <= '0;
       out_valid_q <= 1'b0;
       side_q <= '0; side_o <= '0;
       u_o <= '0; v_o <= '0; steps_o <= '0; a_o <= '0; den_o <= '0;
     end else begin
-      // synchronous ROM: the address of this cycle is read at the edge (kept while stalled)
-      if (fire_in || (state_q == Run && go)) h_q <= bricks(ax, ay);
       // output registers
       if (finish && out_free) begin
         u_o <= tu_q;
@@ -130,7 +194,7 @@ module tu_pom_march #(
         i_q <= '0;
         state_q <= Run;
       end else if (state_q == Run && go) begin
-        hp_q <= h_q;
+        hp_q <= h;
         tu_q <= nu;
         tv_q <= nv;
         i_q <= i_q + 1'b1;

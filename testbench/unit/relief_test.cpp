@@ -156,3 +156,23 @@ TEST(Relief, FlatHeightTextureRendersLikeNoRelief) {
   EXPECT_THROW(relief::make_maps(img::Gray8(48, 64, 255)), std::invalid_argument);
 }
 }  // namespace
+
+// The relief stage's stream-cycle estimator (its equality with Verilator: relief_stage_cosim_test).
+TEST(ReliefStageCycles, PlainPixelsOnePerClockAndStepsAddOneEach) {
+  std::vector<relief::StagePixel> plain(300);
+  EXPECT_EQ(relief::stage_cycles(plain), 301u);
+  EXPECT_EQ(relief::stage_cycles({}), 0u);
+  // A lone shifted pixel: every march step is one more cycle; pixels behind it wait (order).
+  auto with = [&](uint32_t k) {
+    auto p = plain;
+    p[0] = {true, k};
+    return relief::stage_cycles(p);
+  };
+  const uint64_t base = with(0);
+  EXPECT_GT(base, 301u);
+  for (uint32_t k : {1u, 7u, 63u}) EXPECT_EQ(with(k), base + k);
+  // Back-to-back shifted pixels overlap set-up and refinement: k + 1 cycles each.
+  std::vector<relief::StagePixel> pom(200, {true, 5});
+  std::vector<relief::StagePixel> pom2(201, {true, 5});
+  EXPECT_EQ(relief::stage_cycles(pom2) - relief::stage_cycles(pom), 6u);
+}

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "texunit/formats.hpp"
+
 #include "complexity/complexity.hpp"
 #include "pom/pom_layers.hpp"
 
@@ -133,6 +135,72 @@ FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, 
   o.steps = r.steps;
   o.discard = r.discard;
   return o;
+}
+
+int64_t shift_code(int64_t c, int by) { return by >= 0 ? c * (int64_t(1) << by) : c >> -by; }
+
+TexelShift shift_texel_uv_fx(const Maps& m, int64_t u, int64_t v, int lw, int lh,
+                             const pom::View& view, Method method, int layers) {
+  const int du = fmt::kPomUvF - fmt::kTexUvF;
+  const auto r = shift_uv_fx(m, shift_code(u, du - lw), shift_code(v, du - lh), view, method, layers);
+  return {shift_code(r.u, lw - du), shift_code(r.v, lh - du), r.n, r.steps};
+}
+
+uint64_t stage_cycles(const std::vector<StagePixel>& px, int fifo_depth) {
+  // Pipelines hold pixel indices (-1: empty); each advances as a whole (tu_pipe_valid) when its
+  // last stage is empty or taken. Combinational signals from this cycle's state, then the update.
+  using Pipe = std::vector<int>;
+  auto advance = [](Pipe& p, int in) {
+    for (size_t k = p.size() - 1; k > 0; --k) p[k] = p[k - 1];
+    p[0] = in;
+  };
+  Pipe lay(fmt::kPomLayersLatency, -1), set(fmt::kPomSetupLatency, -1), ref(fmt::kPomRefineLatency, -1);
+  std::vector<int> fifo;  // indices, oldest first
+  size_t fifo_head = 0;
+  bool run = false;
+  int cur = -1, mout = -1;  // march: pixel marching, pixel in the output register
+  uint32_t i = 0;
+  size_t next = 0, outs = 0;
+  uint64_t t = 0, last = 0;
+  const auto idle_limit = 1000 + 70 * static_cast<uint64_t>(px.size());
+  while (outs < px.size()) {
+    if (t > idle_limit) throw std::logic_error("relief::stage_cycles: no progress");
+    const bool head = fifo_head < fifo.size();
+    const bool h_shift = head && px[static_cast<size_t>(fifo[fifo_head])].shift;
+    const bool out_fire = head && (!h_shift || ref.back() >= 0);
+    const bool r_en = ref.back() < 0 || h_shift;  // the unit's output is taken at the head
+    const bool out_free = mout < 0 || r_en;
+    const bool go = run && i < px[static_cast<size_t>(cur)].steps;
+    const bool finish = run && !go;
+    const bool take_in = !run || (finish && out_free);
+    const bool s_en = set.back() < 0 || take_in;
+    const bool l_en = lay.back() < 0 || s_en;
+    const bool f_room = fifo.size() - fifo_head < static_cast<size_t>(fifo_depth);
+    const bool fire = next < px.size() && f_room && (!px[next].shift || l_en);
+    // update
+    if (r_en) advance(ref, mout);
+    const int mout_d = finish && out_free ? cur : (r_en ? -1 : mout);
+    if (take_in && set.back() >= 0) {
+      cur = set.back();
+      i = 0;
+      run = true;
+    } else if (go) {
+      ++i;
+    } else if (finish && out_free) {
+      run = false;
+    }
+    mout = mout_d;
+    if (s_en) advance(set, lay.back());
+    if (l_en) advance(lay, fire && px[next].shift ? static_cast<int>(next) : -1);
+    if (out_fire) {
+      ++fifo_head;
+      ++outs;
+      last = t;
+    }
+    if (fire) fifo.push_back(static_cast<int>(next++));
+    ++t;
+  }
+  return px.empty() ? 0 : last + 1;
 }
 
 bool pixel_view(const scene::Scene& s, int object, int triangle, int x, int y, TangentView* out) {

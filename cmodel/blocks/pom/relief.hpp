@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "persp/persp.hpp"
 #include "pom/pom_march.hpp"
@@ -77,5 +78,32 @@ struct FxShift {
 };
 FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, Method method,
                     int layers, bool wrap = true);
+
+// The per-pixel relief step of the texture unit (render engine and RTL tu_relief_stage): B1's u, v
+// codes (level-0 texels of a 2^lw x 2^lh colour texture, TexUvF fraction bits) become texture
+// repeats with PomUvF bits (shift_code: exact while lw <= PomUvF - TexUvF, floored beyond), the
+// method shifts them (shift_uv_fx, wrap: the repeat part is kept aside) and they come back
+// (floored). u, v: shifted codes; n: layers used (POM) or the iteration cap; steps: march steps
+// or iterations (for the cycle estimators).
+struct TexelShift {
+  int64_t u = 0, v = 0;
+  uint32_t n = 0, steps = 0;
+};
+TexelShift shift_texel_uv_fx(const Maps& m, int64_t u, int64_t v, int lw, int lh,
+                             const pom::View& view, Method method, int layers);
+// c * 2^by (by >= 0) or floor(c * 2^by) (by < 0).
+int64_t shift_code(int64_t c, int by);
+
+// Stream cycles of tu_relief_stage with no back-pressure (every input offered from cycle 0, the
+// output always ready, view words with their pixels), counted up to and including the last
+// output's cycle. Pixel: shift = the POM path runs (rel && !guard && view ok), steps = its march
+// steps k. A cycle-by-cycle model of the stage's structure: the sideband FIFO (fifo_depth
+// entries), tu_pom_layers (PomLayersLatency), tu_pom_unit (set-up pipeline, march engine with its
+// output register, refinement pipeline; global stall per pipeline) and the head-of-line join.
+struct StagePixel {
+  bool shift = false;
+  uint32_t steps = 0;
+};
+uint64_t stage_cycles(const std::vector<StagePixel>& px, int fifo_depth = 32);
 
 }  // namespace tu::relief

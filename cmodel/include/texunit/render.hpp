@@ -54,7 +54,7 @@ struct CmodelOptions {
   std::function<void(int x, int y, int object, int64_t* u, int64_t* v)> uv_shift;
   std::optional<scene::WeightSource> weights;  // overrides every material's EWA weight source
   bool progress = false;  // a simple progress bar on stderr
-  // Relief materials: the material's method shifts (u, v) bit-accurately (relief::shift_uv_fx,
+  // Relief materials: the material's method shifts (u, v) bit-accurately (relief::shift_texel_uv_fx,
   // the tu_pom_unit / tu_iter_parallax arithmetic) before uv_shift and the filter. false: the
   // texture path alone, as the RTL texture-unit top (no relief stage yet) computes it.
   bool relief = true;

@@ -1,0 +1,302 @@
+// Relief stage of the texture unit (rtl/pom/tu_relief_stage.sv) against the C model's per-pixel
+// step relief::shift_texel_uv_fx: 0 mismatches with 30 % stalls and view bubbles on (a) every
+// covered pixel of the default scene (wall: relief, ground: none) with pom_fixed / pom_adaptive
+// and 8 / 32 layers, (b) seeded random pixels with extremes; stream cycles without stalls equal
+// relief::stage_cycles; non-relief pixels stream at 1 pixel / clock.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <tuple>
+
+#include "pom/relief.hpp"
+#include "relief_stage_rtl.hpp"
+#include "texture/texture.hpp"
+#include "texunit/render.hpp"
+#include "texunit/scene.hpp"
+
+namespace {
+using namespace tu;
+using cosim::ReliefPixel;
+
+// Depth maps in the RAM model, one after another.
+struct Bank {
+  std::vector<relief::Maps> maps;
+  std::vector<uint32_t> base;
+  std::vector<uint32_t> ram;
+  int add(const img::Gray8& height) { return add(relief::make_maps(height)); }
+  int add(relief::Maps m) {
+    maps.push_back(std::move(m));
+    base.push_back(static_cast<uint32_t>(ram.size()));
+    for (uint8_t d : maps.back().depth.px) ram.push_back(d);
+    return static_cast<int>(maps.size()) - 1;
+  }
+  void place(ReliefPixel* p, int m) const {
+    const auto& d = maps[static_cast<size_t>(m)].depth;
+    p->hbase = base[static_cast<size_t>(m)];
+    p->hlw = std::countr_zero(static_cast<unsigned>(d.width));
+    p->hlh = std::countr_zero(static_cast<unsigned>(d.height));
+  }
+};
+
+img::Gray8 noise(int w, int h, std::mt19937_64& rng) {
+  img::Gray8 g(w, h);
+  for (auto& p : g.px) p = static_cast<uint8_t>(rng());
+  return g;
+}
+
+// The C model's answer for one pixel (and its march steps, for the cycle estimator).
+struct Expect {
+  int64_t u, v;
+  uint32_t n, steps;
+  bool shift;
+};
+Expect expect(const Bank& b, int map, const ReliefPixel& p) {
+  if (!(p.rel && !p.guard && p.ok)) return {p.u, p.v, 0, 0, false};
+  pom::View w = p.view;
+  w.scale = p.scale;
+  const auto r = relief::shift_texel_uv_fx(b.maps[static_cast<size_t>(map)], p.u, p.v, p.lw, p.lh, w,
+                                           p.adaptive ? relief::Method::PomAdaptive : relief::Method::PomFixed,
+                                           p.layers);
+  return {r.u, r.v, r.n, r.steps, true};
+}
+
+// The complexity texel the shader samples at the unshifted uv (relief::layers_at).
+uint32_t complexity_at(const relief::Maps& m, const ReliefPixel& p) {
+  const int du = fmt::kPomUvF - fmt::kTexUvF;
+  return pom::tex_nearest(m.complexity, relief::shift_code(p.u, du - p.lw), relief::shift_code(p.v, du - p.lh));
+}
+
+struct Checked {
+  uint64_t mismatches = 0;
+  std::string first;
+  cosim::ReliefRun run;
+};
+Checked check(const Bank& b, const std::vector<int>& maps, const std::vector<ReliefPixel>& px,
+              double stall, uint64_t seed) {
+  Checked c;
+  c.run = cosim::run_relief_stage(px, b.ram, stall, stall, seed);
+  EXPECT_FALSE(c.run.hung);
+  EXPECT_EQ(c.run.extra_outputs, 0u);
+  EXPECT_EQ(c.run.out.size(), px.size());
+  for (size_t i = 0; i < c.run.out.size() && i < px.size(); ++i) {
+    const auto e = expect(b, maps[i], px[i]);
+    const auto& o = c.run.out[i];
+    EXPECT_TRUE(e.u == static_cast<int32_t>(e.u) && e.v == static_cast<int32_t>(e.v))
+        << "C-model result outside PerspUvW, pixel " << i;
+    if (o.u != e.u || o.v != e.v || o.n != e.n || o.index != (i & 0xfffff)) {
+      if (!c.mismatches++) {
+        char buf[256];
+        std::snprintf(buf, sizeof buf, "pixel %zu: rtl (%lld, %lld, n %u, #%u) c-model (%lld, %lld, n %u)", i,
+                      static_cast<long long>(o.u), static_cast<long long>(o.v), o.n, o.index,
+                      static_cast<long long>(e.u), static_cast<long long>(e.v), e.n);
+        c.first = buf;
+      }
+    }
+  }
+  return c;
+}
+
+// (a) The default scene: every covered pixel in raster order, B1 codes as render_cmodel computes
+// them (its uv_shift hook with relief off sees the unshifted codes), the wall with relief.
+struct ScenePixels {
+  std::vector<ReliefPixel> px;
+  std::vector<int> maps;
+};
+ScenePixels scene_pixels(Bank& b, relief::Method method, int layers) {
+  const auto s = scene::default_scene();
+  const auto cov = render::visibility(s);
+  int wall = -1;
+  for (size_t o = 0; o < s.objects.size(); ++o)
+    if (s.materials.at(s.objects[o].material).relief) wall = static_cast<int>(o);
+  const auto& wall_mat = s.objects[static_cast<size_t>(wall)].material;
+  const auto& mat = s.materials.at(wall_mat);
+  const int map = b.add(relief::make_maps(s, wall_mat));  // as render_cmodel
+  std::vector<std::pair<int, int>> log2s;  // colour texture level 0 per object
+  for (const auto& ob : s.objects) {
+    const auto tx = scene::build_texture(s, s.materials.at(ob.material).texture);
+    log2s.emplace_back(std::countr_zero(static_cast<unsigned>(tx.levels[0].width)),
+                       std::countr_zero(static_cast<unsigned>(tx.levels[0].height)));
+  }
+  ScenePixels sp;
+  render::CmodelOptions opt = render::texture_path_only();
+  opt.uv_shift = [&](int x, int y, int object, int64_t* u, int64_t* v) {
+    ReliefPixel p;
+    p.u = *u;
+    p.v = *v;
+    std::tie(p.lw, p.lh) = log2s[static_cast<size_t>(object)];
+    p.rel = object == wall;
+    if (p.rel) {
+      const auto c = cov[static_cast<size_t>(y) * static_cast<size_t>(s.camera.width) + static_cast<size_t>(x)];
+      relief::TangentView tv;
+      p.ok = relief::pixel_view(s, c.object, c.triangle, x, y, &tv);
+      const auto q = relief::quantise(tv, mat.relief->scale);
+      p.view = q;
+      p.scale = q.scale;
+      p.adaptive = method == relief::Method::PomAdaptive;
+      p.layers = layers;
+      b.place(&p, map);
+      p.vc = complexity_at(b.maps[static_cast<size_t>(map)], p);
+    }
+    sp.px.push_back(p);
+    sp.maps.push_back(map);
+  };
+  render::render_cmodel(s, scene::Filter::Nearest, opt);
+  return sp;
+}
+
+TEST(ReliefStageCosim, DefaultSceneEveryPixelWithStalls) {
+  for (auto method : {relief::Method::PomFixed, relief::Method::PomAdaptive})
+    for (int layers : {8, 32}) {
+      Bank b;
+      const auto sp = scene_pixels(b, method, layers);
+      size_t shifted = 0, wall = 0, moved = 0;
+      for (size_t i = 0; i < sp.px.size(); ++i) {
+        const auto e = expect(b, sp.maps[i], sp.px[i]);
+        wall += sp.px[i].rel;
+        shifted += e.shift;
+        moved += e.u != sp.px[i].u || e.v != sp.px[i].v;
+      }
+      const auto c = check(b, sp.maps, sp.px, 0.3, 11);
+      std::printf("scene %s %d layers: %zu pixels, %zu wall, %zu shifted, %zu moved, %llu cycles (30%% stalls)\n",
+                  method == relief::Method::PomFixed ? "pom_fixed" : "pom_adaptive", layers, sp.px.size(), wall,
+                  shifted, moved, static_cast<unsigned long long>(c.run.cycles));
+      EXPECT_GT(moved, 5000u);
+      EXPECT_EQ(c.mismatches, 0u) << c.first;
+    }
+}
+
+// (b) Seeded random pixels and extremes.
+TEST(ReliefStageCosim, RandomAndExtremesWithStalls) {
+  std::mt19937_64 rng(2026);
+  Bank b;
+  const int flat0 = b.add(img::Gray8(4, 4, 255));  // height 255: depth 0 everywhere
+  const int flat255 = b.add(img::Gray8(8, 2, 0));  // height 0: depth 255 everywhere
+  const int br64 = b.add(tex::bricks(64).height);
+  const int br256 = b.add(tex::bricks(256).height);
+  const int noise1 = b.add(noise(32, 16, rng));
+  const int noise2 = b.add(noise(1, 64, rng));
+  const int all[] = {flat0, flat255, br64, br256, noise1, noise2};
+  std::uniform_int_distribution<int> pick(0, 5), lw(0, 10), pct(0, 99), layers(1, 63);
+  std::uniform_real_distribution<double> uni(-1, 1);
+  std::vector<ReliefPixel> px;
+  std::vector<int> maps;
+  const int64_t ext[] = {std::numeric_limits<int32_t>::min(), std::numeric_limits<int32_t>::max(), 0, -1, 1,
+                         255, 256, -256, 65535, -65536};
+  auto code = [&]() -> int64_t {
+    const int k = pct(rng);
+    if (k < 10) return ext[static_cast<size_t>(pct(rng)) % std::size(ext)];
+    if (k < 40) return static_cast<int32_t>(rng());                     // any, negative and large
+    return static_cast<int64_t>(uni(rng) * 4096 * 256);                 // within +-16 repeats of 256
+  };
+  for (int i = 0; i < 4000; ++i) {
+    ReliefPixel p;
+    const int m = all[pick(rng)];
+    p.u = code();
+    p.v = code();
+    p.lw = pct(rng) < 4 ? 15 : lw(rng);  // 15: the widest the 4-bit port takes
+    p.lh = pct(rng) < 20 ? p.lw : lw(rng);
+    p.rel = pct(rng) < 75;
+    p.guard = pct(rng) < 8;
+    p.ok = pct(rng) < 90;
+    p.adaptive = pct(rng) < 50;
+    const int lk = pct(rng);
+    p.layers = lk < 10 ? 1 : lk < 20 ? 63 : layers(rng);
+    const int sk = pct(rng);
+    p.scale = sk < 5 ? 0 : sk < 10 ? 65535 : static_cast<uint32_t>(pct(rng) * 655);
+    // view: a unit vector; grazing (|vz| tiny), behind (vz < 0), straight on, or any
+    double x = uni(rng), y = uni(rng), z = uni(rng);
+    const int vk = pct(rng);
+    if (vk < 15) z = uni(rng) * 0.02;  // grazing, either side
+    else if (vk < 25) z = -std::fabs(z);
+    else if (vk < 30) x = y = 0, z = 1;
+    else z = std::fabs(z);
+    relief::TangentView tv;
+    const double l = std::sqrt(x * x + y * y + z * z);
+    if (l > 1e-9) tv = {x / l, y / l, z / l};
+    p.view = relief::quantise(tv, 0);
+    b.place(&p, m);
+    p.vc = complexity_at(b.maps[static_cast<size_t>(m)], p);
+    px.push_back(p);
+    maps.push_back(m);
+  }
+  size_t shifted = 0, moved = 0;
+  for (size_t i = 0; i < px.size(); ++i) {
+    const auto e = expect(b, maps[i], px[i]);
+    shifted += e.shift;
+    moved += e.u != px[i].u || e.v != px[i].v;
+  }
+  const auto c = check(b, maps, px, 0.3, 5);
+  std::printf("random: %zu pixels, %zu shifted, %zu moved, %llu cycles (30%% stalls, 30%% view bubbles)\n",
+              px.size(), shifted, moved, static_cast<unsigned long long>(c.run.cycles));
+  EXPECT_GT(moved, px.size() / 4);
+  EXPECT_EQ(c.mismatches, 0u) << c.first;
+}
+
+// Stream cycles without stalls = relief::stage_cycles, on the scene stream and a mixed stream.
+TEST(ReliefStageCosim, StreamCyclesMatchTheEstimator) {
+  for (auto method : {relief::Method::PomFixed, relief::Method::PomAdaptive}) {
+    Bank b;
+    const auto sp = scene_pixels(b, method, method == relief::Method::PomFixed ? 8 : 32);
+    std::vector<relief::StagePixel> sched;
+    uint64_t shifted = 0, steps = 0;
+    for (size_t i = 0; i < sp.px.size(); ++i) {
+      const auto e = expect(b, sp.maps[i], sp.px[i]);
+      sched.push_back({e.shift, e.steps});
+      shifted += e.shift;
+      steps += e.steps;
+    }
+    const auto c = check(b, sp.maps, sp.px, 0, 1);
+    EXPECT_EQ(c.mismatches, 0u) << c.first;
+    const uint64_t predicted = relief::stage_cycles(sched);
+    std::printf("scene stream %s: %zu pixels (%llu shifted, %.3f steps each), cycles measured %llu, "
+                "predicted %llu, sum(k + 1) over shifted %llu\n",
+                method == relief::Method::PomFixed ? "pom_fixed 8" : "pom_adaptive 32", sp.px.size(),
+                static_cast<unsigned long long>(shifted), double(steps) / double(shifted),
+                static_cast<unsigned long long>(c.run.cycles), static_cast<unsigned long long>(predicted),
+                static_cast<unsigned long long>(steps + shifted));
+    EXPECT_EQ(c.run.cycles, predicted);
+  }
+}
+
+// Non-relief pixels stream at 1 pixel / clock; a relief pixel between them delays only the ones
+// behind it (order), and the estimator follows both.
+TEST(ReliefStageCosim, NonReliefPixelsAtOnePerClock) {
+  Bank b;
+  const int m = b.add(tex::bricks(64).height);
+  std::vector<ReliefPixel> px(500);
+  std::vector<int> maps(px.size(), m);
+  for (size_t i = 0; i < px.size(); ++i) {
+    px[i].u = static_cast<int64_t>(i) * 77;
+    px[i].lw = px[i].lh = 8;
+    b.place(&px[i], m);
+  }
+  auto cycles = [&](const std::vector<ReliefPixel>& p) {
+    const auto c = check(b, maps, p, 0, 3);
+    EXPECT_EQ(c.mismatches, 0u) << c.first;
+    std::vector<relief::StagePixel> sched;
+    for (size_t i = 0; i < p.size(); ++i) {
+      const auto e = expect(b, maps[i], p[i]);
+      sched.push_back({e.shift, e.steps});
+    }
+    EXPECT_EQ(c.run.cycles, relief::stage_cycles(sched));
+    return c.run.cycles;
+  };
+  EXPECT_EQ(cycles(px), px.size() + 1);  // first output one cycle after its input
+  px[100].rel = true;
+  px[100].layers = 63;
+  px[100].scale = 65535;
+  px[100].view = relief::quantise({0.7, 0.1, 0.7}, 0);
+  px[100].u = 3 << 8;  // mortar column: the march runs
+  const auto e = expect(b, m, px[100]);
+  ASSERT_GT(e.steps, 0u);
+  EXPECT_GT(cycles(px), px.size() + 1);
+  // One shifted pixel alone: accepted in cycle 0, out in cycle stage_cycles - 1.
+  std::vector<ReliefPixel> one = {px[100]};
+  std::printf("one shifted pixel, %u march steps: output in cycle %llu (plain pixel: cycle 1)\n", e.steps,
+              static_cast<unsigned long long>(cycles(one) - 1));
+}
+}  // namespace

@@ -1,0 +1,86 @@
+// RTL binding of the relief stage (rtl/pom/tu_relief_stage_sim.sv).
+#include "relief_stage_rtl.hpp"
+
+#include <random>
+
+#include "Vtu_relief_stage_sim.h"
+#include "harness.hpp"
+#include "texel_ram.hpp"
+
+namespace tu::cosim {
+
+namespace {
+enum Col { kU, kV, kLw, kLh, kRel, kGuard, kAdaptive, kLayers, kScale, kHbase, kHlw, kHlh, kSide,
+           kOk, kVx, kVy, kVz, kVc, kCols };
+constexpr uint32_t kSideMask = (1u << 20) - 1;  // tu_relief_stage_sim's SideW
+
+int64_t sext32(uint64_t x) { return static_cast<int32_t>(static_cast<uint32_t>(x)); }
+}  // namespace
+
+ReliefRun run_relief_stage(const std::vector<ReliefPixel>& px, const std::vector<uint32_t>& ram,
+                           double stall_prob, double view_bubble_prob, uint64_t seed) {
+  std::vector<Row> rows;
+  for (size_t i = 0; i < px.size(); ++i) {
+    const auto& p = px[i];
+    Row r(kCols);
+    r[kU] = static_cast<uint32_t>(p.u);
+    r[kV] = static_cast<uint32_t>(p.v);
+    r[kLw] = static_cast<uint64_t>(p.lw);
+    r[kLh] = static_cast<uint64_t>(p.lh);
+    r[kRel] = p.rel;
+    r[kGuard] = p.guard;
+    r[kAdaptive] = p.adaptive;
+    r[kLayers] = static_cast<uint64_t>(p.layers);
+    r[kScale] = p.scale;
+    r[kHbase] = p.hbase;
+    r[kHlw] = static_cast<uint64_t>(p.hlw);
+    r[kHlh] = static_cast<uint64_t>(p.hlh);
+    r[kSide] = i & kSideMask;
+    r[kOk] = p.ok;
+    r[kVx] = static_cast<uint16_t>(p.view.vx);
+    r[kVy] = static_cast<uint16_t>(p.view.vy);
+    r[kVz] = static_cast<uint16_t>(p.view.vz);
+    r[kVc] = p.vc;
+    rows.push_back(std::move(r));
+  }
+  std::mt19937_64 rng(seed ^ 0x5eedf00dull);
+  std::bernoulli_distribution bubble(view_bubble_prob);
+  auto drive = [&](Vtu_relief_stage_sim& d, const Row& r) {
+    d.u_i = static_cast<uint32_t>(r[kU]);
+    d.v_i = static_cast<uint32_t>(r[kV]);
+    d.lw_i = static_cast<uint8_t>(r[kLw]);
+    d.lh_i = static_cast<uint8_t>(r[kLh]);
+    d.rel_i = static_cast<uint8_t>(r[kRel]);
+    d.guard_i = static_cast<uint8_t>(r[kGuard]);
+    d.adaptive_i = static_cast<uint8_t>(r[kAdaptive]);
+    d.layers_i = static_cast<uint8_t>(r[kLayers]);
+    d.scale_i = static_cast<uint16_t>(r[kScale]);
+    d.hbase_i = static_cast<uint32_t>(r[kHbase]);
+    d.hlw_i = static_cast<uint8_t>(r[kHlw]);
+    d.hlh_i = static_cast<uint8_t>(r[kHlh]);
+    d.side_i = static_cast<uint32_t>(r[kSide]);
+    d.view_ok_i = static_cast<uint8_t>(r[kOk]);
+    d.vx_i = static_cast<uint16_t>(r[kVx]);
+    d.vy_i = static_cast<uint16_t>(r[kVy]);
+    d.vz_i = static_cast<uint16_t>(r[kVz]);
+    d.vc_i = static_cast<uint8_t>(r[kVc]);
+    d.view_bubble_i = view_bubble_prob > 0 && bubble(rng);
+  };
+  auto sample = [](Vtu_relief_stage_sim& d) { return Row{d.u_o, d.v_o, d.n_o, d.side_o}; };
+  auto init = [&](Vtu_relief_stage_sim& d, const std::function<void()>& tick) { load_words(d, tick, 0, ram); };
+  Harness<Vtu_relief_stage_sim> h(drive, sample, init);
+  RunOptions o;
+  o.stall_prob = stall_prob;
+  o.seed = seed;
+  const auto rr = h.run(rows, o);
+  ReliefRun res;
+  res.cycles = rr.sim_cycles;
+  res.accepted = rr.accepted;
+  res.extra_outputs = rr.extra_outputs;
+  res.hung = rr.hung;
+  for (const Row& q : rr.outputs)
+    res.out.push_back({sext32(q[0]), sext32(q[1]), static_cast<uint32_t>(q[2]), static_cast<uint32_t>(q[3])});
+  return res;
+}
+
+}  // namespace tu::cosim
