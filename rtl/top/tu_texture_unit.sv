@@ -17,6 +17,8 @@ module tu_texture_unit #(
   // filt_i picks the engine; with one, every pixel goes to it (filt_i is ignored).
   parameter int unsigned HasEwa      = {31'b0, tu_unit_cfg_pkg::HasEwa},
   parameter int unsigned HasBilinear = {31'b0, tu_unit_cfg_pkg::HasBilinear},
+  // 1: relief stage (tu_relief_stage: POM, fixed or adaptive layers) between B1 and the filter
+  parameter int unsigned HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
   parameter int unsigned FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -53,6 +55,26 @@ module tu_texture_unit #(
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   input  logic                                  filt_i,  // material filter: 1 EWA, 0 bilinear
+  // material relief (POM): on, adaptive layers, layers (1..63), height scale S, depth map
+  input  logic                                  rel_i,
+  input  logic                                  radapt_i,
+  input  logic [tu_formats_pkg::PomNW-1:0]      rlayers_i,
+  input  logic [tu_formats_pkg::PomSW-1:0]      rscale_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0]   hbase_i,
+  input  logic [3:0]                            hlw_i,
+  input  logic [3:0]                            hlh_i,
+  // per-pixel tangent-space view, one word per pixel of a relief span, in pixel order
+  input  logic                                  view_valid_i,
+  output logic                                  view_ready_o,
+  input  logic                                  view_ok_i,
+  input  logic [tu_formats_pkg::PomVzW-1:0]     vx_i,
+  input  logic [tu_formats_pkg::PomVzW-1:0]     vy_i,
+  input  logic [tu_formats_pkg::PomVzW-1:0]     vz_i,
+  input  logic [tu_formats_pkg::PomCW-1:0]      vc_i,
+  // depth-map port (1-cycle read latency; depth = 255 - height in the low 8 bits)
+  output logic                                  d_req_o,
+  output logic [tu_formats_pkg::TexAddrW-1:0]   d_addr_o,
+  input  logic [7:0]                            d_data_i,
   // texel port (1-cycle read latency)
   output logic                                  tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   tex_addr_o,
@@ -68,7 +90,8 @@ module tu_texture_unit #(
   output logic [tu_formats_pkg::EwaCountW-1:0] inside_o,
   output logic [4:0]                            flags_o,   // filter flags (tu_ewa, ewa::fx::Flag)
   output logic [4:0]                            eflags_o,  // B2 flags
-  output logic [1:0]                            pflags_o   // B1: {span set-up overflow, guard}
+  output logic [1:0]                            pflags_o,  // B1: {span set-up overflow, guard}
+  output logic [tu_formats_pkg::PomNW-1:0]      rn_o       // relief layers used (0: not shifted)
 );
   localparam int unsigned PW = tu_formats_pkg::PerspPW;
   localparam int unsigned QW = tu_formats_pkg::PerspQW;
@@ -81,8 +104,11 @@ module tu_texture_unit #(
   // per-triangle B2 fields
   localparam int unsigned TriW  = tu_formats_pkg::EllDetW + tu_formats_pkg::EllDetExpW +
                                   tu_formats_pkg::EllAnisoW + tu_formats_pkg::EllMaxLodW;
-  localparam int unsigned SpanW = 2 * PW + QW + 3 * XW + TriW + MatW;
-  localparam int unsigned PixW  = 2 * XW + 1 + MatW;   // x, y, ovf, material
+  // material relief fields, used up by the relief stage
+  localparam int unsigned RelW  = 2 + tu_formats_pkg::PomNW + tu_formats_pkg::PomSW + AW + 8;
+  localparam int unsigned SpanW = 2 * PW + QW + 3 * XW + TriW + MatW + RelW;
+  localparam int unsigned PixW  = 2 * XW + 1 + MatW + RelW;   // x, y, ovf, material, relief
+  localparam int unsigned FPixW = 2 * XW + 1 + MatW;          // after the relief stage
 
   // ---------------- span set-up: fork to B1 set-up and numerator set-up, join ----------------
   logic ps_in_ready, ns_in_ready, ps_valid, ns_valid, sj_valid, sj_ready;
@@ -92,7 +118,8 @@ module tu_texture_unit #(
   logic [NW-1:0] ns_nux, ns_nvx, ns_nuy, ns_nvy, ns_m, ns_nn;
   logic [SpanW-1:0] span_side, ns_side;
   assign span_side = {a_i, d_i, g_i, x0_i, x1_i, y_i, dm_i, dexp_i, laniso_i, maxlod_i,
-                      tbase_i, tlw_i, tlh_i, tclamp_i, wsrc_i, cap_i, filt_i};
+                      tbase_i, tlw_i, tlh_i, tclamp_i, wsrc_i, cap_i, filt_i,
+                      rel_i, radapt_i, rlayers_i, rscale_i, hbase_i, hlw_i, hlh_i};
   assign in_ready_o = ps_in_ready && ns_in_ready;
 
   tu_persp_setup u_psetup (
@@ -115,7 +142,7 @@ module tu_texture_unit #(
   logic [QW-1:0] s_g;
   logic [XW-1:0] s_x0, s_x1, s_y;
   logic [TriW-1:0] s_tri;
-  logic [MatW-1:0] s_mat;
+  logic [MatW+RelW-1:0] s_mat;
   assign {s_a, s_d, s_g, s_x0, s_x1, s_y, s_tri, s_mat} = ns_side;
 
   // ---------------- span -> pixels ----------------
@@ -183,14 +210,59 @@ module tu_texture_unit #(
     .out_data_o(sb_pix)
   );
 
+  // ---------------- relief stage ----------------
+  // B1's (u, v) shifted by the material's POM relief; everything else rides along in order.
+  localparam int unsigned RSideW = FPixW + 1 + 3 * tu_formats_pkg::EllCoefW +
+                                   2 * tu_formats_pkg::EllLogW + tu_formats_pkg::EllLodW + 5;
+  logic [FPixW-1:0] pj_fpix;
+  logic [RelW-1:0]  pj_rel;
+  assign {pj_fpix, pj_rel} = sb_pix;
+  logic                                pj_r, pj_radapt;
+  logic [tu_formats_pkg::PomNW-1:0]    pj_rlayers;
+  logic [tu_formats_pkg::PomSW-1:0]    pj_rscale;
+  logic [AW-1:0]                       pj_hbase;
+  logic [3:0]                          pj_hlw, pj_hlh, pj_lw, pj_lh;
+  assign {pj_r, pj_radapt, pj_rlayers, pj_rscale, pj_hbase, pj_hlw, pj_hlh} = pj_rel;
+  // the colour texture's log2 size inside the material fields (base, lw, lh, clamp, wsrc, cap, filt)
+  assign {pj_lw, pj_lh} = pj_fpix[tu_formats_pkg::EwaCountW + 4 +: 8];
+  logic [RSideW-1:0] rs_in, rs_out;
+  assign rs_in = {pj_fpix, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_flags};
+  logic          rs_valid, rs_ready;
+  logic [UW-1:0] rs_u, rs_v;
+  logic [tu_formats_pkg::PomNW-1:0] rs_n;
+  if (HasRelief != 0) begin : g_relief
+    tu_relief_stage #(.SideW(RSideW)) u_relief (
+      .clk_i, .rst_ni, .in_valid_i(pj_valid), .in_ready_o(pj_ready),
+      .u_i(b1_u), .v_i(b1_v), .lw_i(pj_lw), .lh_i(pj_lh), .rel_i(pj_r), .guard_i(b1_flag),
+      .adaptive_i(pj_radapt), .layers_i(pj_rlayers), .scale_i(pj_rscale),
+      .hbase_i(pj_hbase), .hlw_i(pj_hlw), .hlh_i(pj_hlh), .side_i(rs_in),
+      .view_valid_i, .view_ready_o, .view_ok_i, .vx_i, .vy_i, .vz_i, .vc_i,
+      .d_req_o, .d_addr_o, .d_data_i,
+      .out_valid_o(rs_valid), .out_ready_i(rs_ready), .u_o(rs_u), .v_o(rs_v), .n_o(rs_n),
+      .side_o(rs_out)
+    );
+  end else begin : g_no_relief
+    assign rs_valid     = pj_valid;
+    assign pj_ready     = rs_ready;
+    assign rs_u         = b1_u;
+    assign rs_v         = b1_v;
+    assign rs_n         = '0;
+    assign rs_out       = rs_in;
+    assign view_ready_o = 1'b0;
+    assign d_req_o      = 1'b0;
+    assign d_addr_o     = '0;
+    logic unused_relief;
+    assign unused_relief = ^{pj_r, pj_radapt, pj_rlayers, pj_rscale, pj_hbase, pj_hlw, pj_hlh, pj_lw, pj_lh,
+                             view_valid_i, view_ok_i, vx_i, vy_i, vz_i, vc_i, d_data_i};
+  end
+
   // ---------------- FIFO in front of the filter ----------------
-  localparam int unsigned FW = PixW + 2 * UW + 1 + 3 * tu_formats_pkg::EllCoefW +
-                               2 * tu_formats_pkg::EllLogW + tu_formats_pkg::EllLodW + 5;
+  localparam int unsigned FW = RSideW + 2 * UW + tu_formats_pkg::PomNW;
   logic          fq_valid, fq_ready;
   logic [FW-1:0] fq_data;
   tu_fifo #(.Width(FW), .Depth(FifoDepth)) u_fifo (
-    .clk_i, .rst_ni, .in_valid_i(pj_valid), .in_ready_o(pj_ready),
-    .in_data_i({sb_pix, b1_u, b1_v, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_flags}),
+    .clk_i, .rst_ni, .in_valid_i(rs_valid), .in_ready_o(rs_ready),
+    .in_data_i({rs_out, rs_u, rs_v, rs_n}),
     .out_valid_o(fq_valid), .out_ready_i(fq_ready), .out_data_o(fq_data)
   );
   logic [XW-1:0] f_x, f_y;
@@ -201,12 +273,13 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::EwaCountW-1:0] f_cap;
   logic          f_filt;
   logic [UW-1:0] f_u, f_v;
+  logic [tu_formats_pkg::PomNW-1:0] f_rn;
   logic [tu_formats_pkg::EllCoefW-1:0] f_ae, f_ce, f_be;
   logic [tu_formats_pkg::EllLogW-1:0]  f_lmaj, f_lmin;
   logic [tu_formats_pkg::EllLodW-1:0]  f_lod;
   logic [4:0]                          f_eflags;
-  assign {f_x, f_y, f_ovf, f_base, f_lw, f_lh, f_clamp, f_wsrc, f_cap, f_filt, f_u, f_v, f_guard,
-          f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_eflags} = fq_data;
+  assign {f_x, f_y, f_ovf, f_base, f_lw, f_lh, f_clamp, f_wsrc, f_cap, f_filt, f_guard,
+          f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_eflags, f_u, f_v, f_rn} = fq_data;
 
   // ---------------- filter ----------------
   // Per-pixel fields the filter does not carry ride in a FIFO popped with its output (it holds
@@ -215,7 +288,7 @@ module tu_texture_unit #(
   // has output all its pixels (cur_q: the engine of the pixels in flight, inflight_q: how many),
   // so outputs stay in order and only one engine drives the texel port. Engine switches happen
   // at material changes only (ewa::stream_cycles counts the drain).
-  localparam int unsigned OsW = 2 * XW + 2 + 5;
+  localparam int unsigned OsW = 2 * XW + 2 + 5 + tu_formats_pkg::PomNW;
   localparam bit Both = (HasEwa != 0) && (HasBilinear != 0);
   logic          os_in_ready, os_valid, flt_valid, eng_ready, sel_ewa, can_go, fire_flt, fire_out;
   logic          cur_q;
@@ -232,7 +305,7 @@ module tu_texture_unit #(
   assign fire_flt = fq_valid && fq_ready;
   tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
     .clk_i, .rst_ni, .in_valid_i(fq_valid && can_go && eng_ready), .in_ready_o(os_in_ready),
-    .in_data_i({f_x, f_y, f_ovf, f_guard, f_eflags}), .out_valid_o(os_valid),
+    .in_data_i({f_x, f_y, f_ovf, f_guard, f_eflags, f_rn}), .out_valid_o(os_valid),
     .out_ready_i(out_ready_i && flt_valid), .out_data_o(os_data)
   );
   // The engine of the oldest pixel in flight: cur_q with both, the only one otherwise.
@@ -241,7 +314,7 @@ module tu_texture_unit #(
   assign flt_valid   = out_ewa ? ewa_valid : bil_valid;
   assign out_valid_o = flt_valid && os_valid;
   assign fire_out    = out_valid_o && out_ready_i;
-  assign {x_o, y_o, pflags_o, eflags_o} = os_data;
+  assign {x_o, y_o, pflags_o, eflags_o, rn_o} = os_data;
   assign rgba_o      = out_ewa ? ewa_rgba : bil_rgba;
   // Only the engine with pixels in flight reads texels (cur_q is set when it accepts its first).
   assign tex_req_o   = out_ewa ? ewa_req : bil_req;

@@ -1,13 +1,17 @@
-// Simulation top of the texture unit: tu_texture_unit with the texel RAM model attached; the
-// testbench loads every texture of the scene through the RAM's write port before the spans.
+// Simulation top of the texture unit: tu_texture_unit with the texel RAM, the depth-map RAM and
+// the per-pixel view stream models attached; the testbench loads every texture, every relief
+// depth map and the view words through the write port (ram_sel_i: 0 texels, 1 depth, 2 views)
+// during reset, before the spans.
 module tu_texture_unit_sim #(
   parameter int unsigned HasEwa      = {31'b0, tu_unit_cfg_pkg::HasEwa},
   parameter int unsigned HasBilinear = {31'b0, tu_unit_cfg_pkg::HasBilinear},
+  parameter int unsigned HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
   parameter int unsigned Words  = 1 << tu_formats_pkg::TexRamLog2Words
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
   input  logic                                  ram_we_i,
+  input  logic [1:0]                            ram_sel_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]   ram_waddr_i,
   input  logic [31:0]                           ram_wdata_i,
   // span input
@@ -42,6 +46,13 @@ module tu_texture_unit_sim #(
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   input  logic                                  filt_i,
+  input  logic                                  rel_i,
+  input  logic                                  radapt_i,
+  input  logic [tu_formats_pkg::PomNW-1:0]      rlayers_i,
+  input  logic [tu_formats_pkg::PomSW-1:0]      rscale_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0]   hbase_i,
+  input  logic [3:0]                            hlw_i,
+  input  logic [3:0]                            hlh_i,
   // pixel output
   output logic                                  out_valid_o,
   input  logic                                  out_ready_i,
@@ -53,23 +64,46 @@ module tu_texture_unit_sim #(
   output logic [tu_formats_pkg::EwaCountW-1:0] inside_o,
   output logic [4:0]                            flags_o,   // filter flags (tu_ewa, ewa::fx::Flag)
   output logic [4:0]                            eflags_o,  // B2 flags
-  output logic [1:0]                            pflags_o   // B1: {span set-up overflow, guard}
+  output logic [1:0]                            pflags_o,  // B1: {span set-up overflow, guard}
+  output logic [tu_formats_pkg::PomNW-1:0]      rn_o       // relief layers used
 );
   logic                                tex_req;
   logic [tu_formats_pkg::TexAddrW-1:0] tex_addr;
   logic [31:0]                         tex_data;
-  tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear)) u_tu (
+  localparam int unsigned VzW = tu_formats_pkg::PomVzW;
+  logic                                view_valid, view_ready, d_req;
+  logic [63:0]                         view;
+  logic [tu_formats_pkg::TexAddrW-1:0] d_addr;
+  logic [31:0]                         d_word;
+  tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear), .HasRelief(HasRelief)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
     .kuy_i, .kvy_i, .m_i, .nn_i, .dm_i, .dexp_i, .laniso_i, .maxlod_i,
-    .tbase_i, .tlw_i, .tlh_i, .tclamp_i, .wsrc_i, .cap_i, .filt_i, .out_valid_o, .out_ready_i,
+    .tbase_i, .tlw_i, .tlh_i, .tclamp_i, .wsrc_i, .cap_i, .filt_i,
+    .rel_i, .radapt_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i,
+    .view_valid_i(view_valid), .view_ready_o(view_ready), .view_ok_i(view[3 * VzW + tu_formats_pkg::PomCW]),
+    .vx_i(view[2 * VzW + tu_formats_pkg::PomCW +: VzW]), .vy_i(view[VzW + tu_formats_pkg::PomCW +: VzW]),
+    .vz_i(view[tu_formats_pkg::PomCW +: VzW]), .vc_i(view[0 +: tu_formats_pkg::PomCW]),
+    .d_req_o(d_req), .d_addr_o(d_addr), .d_data_i(d_word[7:0]),
+    .out_valid_o, .out_ready_i,
     .x_o, .y_o, .rgba_o, .level_o, .visited_o, .inside_o, .flags_o, .eflags_o,
-    .pflags_o,
+    .pflags_o, .rn_o,
     .tex_req_o(tex_req), .tex_addr_o(tex_addr), .tex_data_i(tex_data)
   );
   tu_texel_ram #(.Words(Words)) u_ram (
     .clk_i, .rd_en_i(tex_req), .rd_addr_i(tex_addr), .rd_data_o(tex_data),
-    .wr_en_i(ram_we_i), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
+    .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
   );
+  // view word: {ok, vx, vy, vz, c} from bit 3 VzW + PomCW down
+  tu_texel_ram #(.Words(Words)) u_depth (
+    .clk_i, .rd_en_i(d_req), .rd_addr_i(d_addr), .rd_data_o(d_word),
+    .wr_en_i(ram_we_i && ram_sel_i == 2'd1), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
+  );
+  tu_view_src u_views (
+    .clk_i, .rst_ni, .wr_en_i(ram_we_i && ram_sel_i == 2'd2), .wr_addr_i(ram_waddr_i),
+    .wr_data_i(ram_wdata_i), .out_valid_o(view_valid), .out_ready_i(view_ready), .out_data_o(view)
+  );
+  logic unused;
+  assign unused = ^{d_word[31:8], view[63:3 * VzW + tu_formats_pkg::PomCW + 1]};
 endmodule

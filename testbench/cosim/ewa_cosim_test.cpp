@@ -136,22 +136,60 @@ TEST(TextureUnitRtl, MixedFiltersPerSpan) {
               (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
 }
 
-// The unit `texunit plan` writes for a scene without minification (bilinear only, HasEwa = 0)
-// renders it bit-exactly as the full unit does with the plan's filter on every span.
-TEST(TextureUnitRtl, SpecialisedBilinearUnitRendersAsTheFullUnit) {
+// The default scene with its relief (wall: adaptive POM, 32 layers) through the full unit's
+// relief stage: every pixel == render_cmodel with relief (colour, shifted uv's filter result,
+// layers used), 30% stalls; the wall's pixels are really shifted (layers > 0).
+TEST(TextureUnitRtl, ReliefSceneEqualsCModelWithStalls) {
   const auto s = small_scene();
+  cosim::RtlRenderOptions o;
+  o.relief = true;
+  o.stall_prob = 0.3;
+  const auto r = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r.ok()) << r.first_mismatch;
+  size_t shifted = 0;
+  for (const auto& p : r.frame.pixels) shifted += p.relief_n > 0;
+  EXPECT_GT(shifted, 300u);
+  // Relief changes the picture: the same unit without it differs on the wall.
+  o.relief = false;
+  const auto flat = cosim::render_rtl(s, o);
+  size_t differ = 0;
+  for (size_t i = 0; i < r.frame.pixels.size(); ++i) differ += !(r.frame.pixels[i].color == flat.frame.pixels[i].color);
+  EXPECT_GT(differ, 100u);
+  std::printf("relief: %zu px, %zu shifted, %zu differ from the flat render, %llu cycles (30%% stalls)\n",
+              r.frame.pixels.size(), shifted, differ, (unsigned long long)r.cycles);
+  // Iterative parallax is not in the RTL unit: a message naming the material's field.
+  auto it = s;
+  it.materials.at("wall").relief->method = scene::ReliefMethod::Iterative;
+  o.relief = true;
+  try {
+    cosim::render_rtl(it, o);
+    ADD_FAILURE() << "iterative relief accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("/materials/wall/relief/method"), std::string::npos) << e.what();
+  }
+}
+
+// docs/scenes/ui_quad.json (no relief, no minification): `texunit plan` writes a bilinear-only
+// unit without relief hardware (HasEwa = 0, HasRelief = 0; TexunitCli.plan_ui_quad, and the Yosys
+// cells drop: TexunitCli.plan_area_ui_quad). That unit renders the scene bit-exactly as the full
+// unit (EWA, bilinear and relief stage in) does with the plan's filter on every span.
+TEST(TextureUnitRtl, SpecialisedUnitRendersSceneWithoutReliefAsTheFullUnit) {
+  const auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/ui_quad.json");
   cosim::RtlRenderOptions full, spec;
   full.filter = spec.filter = scene::Filter::Bilinear;
+  full.relief = true;  // the scene has none: the stage passes every pixel through
   spec.has_ewa = false;
   const auto a = cosim::render_rtl(s, full), b = cosim::render_rtl(s, spec);
   EXPECT_TRUE(a.ok()) << a.first_mismatch;
   EXPECT_TRUE(b.ok()) << b.first_mismatch;
   ASSERT_EQ(a.frame.pixels.size(), b.frame.pixels.size());
+  EXPECT_GT(a.frame.pixels.size(), 5000u);
   size_t differ = 0;
   for (size_t i = 0; i < a.frame.pixels.size(); ++i)
     differ += !(a.frame.pixels[i].color == b.frame.pixels[i].color && a.frame.pixels[i].x == b.frame.pixels[i].x &&
                 a.frame.pixels[i].y == b.frame.pixels[i].y);
   EXPECT_EQ(differ, 0u);
-  EXPECT_EQ(a.cycles, b.cycles);  // same engine, same stream
+  std::printf("ui_quad: %zu px, full unit %llu cycles, specialised %llu cycles\n", a.frame.pixels.size(),
+              (unsigned long long)a.cycles, (unsigned long long)b.cycles);
 }
 }  // namespace

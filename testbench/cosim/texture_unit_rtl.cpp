@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -10,12 +11,14 @@
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "harness.hpp"
+#include "pom/relief.hpp"
 #include "texel_ram.hpp"
 
 namespace tu::cosim {
 
 namespace {
 constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;  // tu_texture_unit_sim Words
+constexpr uint64_t kViewWords = uint64_t(1) << 16;                     // tu_view_src Words
 
 uint64_t lo(i128 v) { return static_cast<uint64_t>(v); }
 uint64_t hi(i128 v) { return static_cast<uint64_t>(v >> 64); }
@@ -24,7 +27,7 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 // Row layout of one span (two words for each 112-bit numerator constant).
 enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kClamp,
-  kWsrc, kCap, kFilt, kRowSize
+  kWsrc, kCap, kFilt, kRel, kRadapt, kRlayers, kRscale, kHbase, kHlw, kHlh, kRowSize
 };
 
 template <class V>
@@ -66,11 +69,18 @@ void drive(V& d, const Row& r) {
   d.wsrc_i = static_cast<uint8_t>(r[kWsrc]);
   d.cap_i = static_cast<uint32_t>(r[kCap]);
   d.filt_i = static_cast<uint8_t>(r[kFilt]);
+  d.rel_i = static_cast<uint8_t>(r[kRel]);
+  d.radapt_i = static_cast<uint8_t>(r[kRadapt]);
+  d.rlayers_i = static_cast<uint8_t>(r[kRlayers]);
+  d.rscale_i = static_cast<uint16_t>(r[kRscale]);
+  d.hbase_i = static_cast<uint32_t>(r[kHbase]);
+  d.hlw_i = static_cast<uint8_t>(r[kHlw]);
+  d.hlh_i = static_cast<uint8_t>(r[kHlh]);
 }
 
 template <class V>
 Row sample(V& d) {
-  return Row{d.x_o, d.y_o, d.rgba_o, d.level_o, d.visited_o, d.inside_o, d.flags_o, d.eflags_o};
+  return Row{d.x_o, d.y_o, d.rgba_o, d.level_o, d.visited_o, d.inside_o, d.flags_o, d.eflags_o, d.rn_o};
 }
 }  // namespace
 
@@ -88,9 +98,15 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: ewa, but the unit is bilinear-only");
     ewa_of[name] = f == scene::Filter::Ewa;
   }
+  if (o.relief && !o.has_ewa)
+    throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
+  for (const auto& [name, m] : s.materials)
+    if (o.relief && m.relief && m.relief->method == scene::ReliefMethod::Iterative)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/relief/method: iterative parallax is not in "
+                                  "the RTL texture unit (its relief stage runs POM); render without relief");
   render::CmodelOptions copt;
   copt.weights = o.weights;
-  copt.relief = false;  // the RTL top has no relief stage: compare the texture path
+  copt.relief = o.relief;
   const render::Frame expect = render::render_cmodel(s, o.filter, copt);
 
   // Textures in the RAM, per-triangle set-up.
@@ -98,17 +114,25 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     tex::Texture tex;
     uint64_t base;
     std::vector<Coefs> coefs;
+    std::optional<relief::Maps> maps;  // with o.relief and a relief material
+    uint64_t hbase = 0;                // its depth map in the depth RAM
   };
   std::vector<Obj> objs;
-  std::vector<uint32_t> ram;
+  std::vector<uint32_t> ram, depth_ram;
   for (size_t oi = 0; oi < s.objects.size(); ++oi) {
     const auto& ob = s.objects[oi];
-    Obj x{scene::build_texture(s, s.materials.at(ob.material).texture), ram.size(), {}};
+    Obj x{scene::build_texture(s, s.materials.at(ob.material).texture), ram.size(), {}, std::nullopt, 0};
+    if (o.relief && s.materials.at(ob.material).relief) {
+      x.maps = relief::make_maps(s, ob.material);
+      x.hbase = depth_ram.size();
+      for (uint8_t d : x.maps->depth.px) depth_ram.push_back(d);
+    }
     const auto words = texture_words(x.tex);
     ram.insert(ram.end(), words.begin(), words.end());
-    if (ram.size() > kRamWords)
-      throw std::runtime_error(s.source + ": textures need " + std::to_string(ram.size()) +
-                               " texel words, the RTL RAM model holds " + std::to_string(kRamWords));
+    if (ram.size() > kRamWords || depth_ram.size() > kRamWords)
+      throw std::runtime_error(s.source + ": textures need " + std::to_string(ram.size()) + " texel words and " +
+                               std::to_string(depth_ram.size()) + " depth words, the RTL RAM models hold " +
+                               std::to_string(kRamWords) + " each");
     const auto tris = scene::in_texels(ob, x.tex.levels[0].width, x.tex.levels[0].height);
     for (size_t t = 0; t < tris.size(); ++t)
       x.coefs.push_back(persp::Unit::quantise(persp::coefficients(s.camera, tris[t]),
@@ -120,6 +144,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   const auto cov = render::visibility(s);
   std::vector<Row> spans;
   std::vector<ewa::PixelCost> costs;
+  std::vector<uint64_t> views;  // the view stream model's words
+  auto lw_of = [](const Obj& ob) { return log2_size(ob.tex.levels[0].width); };
+  auto lh_of = [](const Obj& ob) { return log2_size(ob.tex.levels[0].height); };
   size_t pix = 0;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w;) {
@@ -164,6 +191,31 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       r[kCap] = ewa::kDefaultMaxTexels;
       const bool span_ewa = ewa_of.at(s.objects[static_cast<size_t>(c.object)].material);
       r[kFilt] = span_ewa;
+      if (ob.maps) {
+        const auto& rel = *m.relief;
+        const pom::View q = relief::quantise({}, rel.scale);
+        r[kRel] = 1;
+        r[kRadapt] = rel.method == scene::ReliefMethod::PomAdaptive;
+        r[kRlayers] = static_cast<uint64_t>(std::clamp(rel.layers, 1, 63));
+        r[kRscale] = q.scale;
+        r[kHbase] = ob.hbase;
+        r[kHlw] = static_cast<uint64_t>(log2_size(ob.maps->depth.width));
+        r[kHlh] = static_cast<uint64_t>(log2_size(ob.maps->depth.height));
+        // One view word per pixel: {ok, vx, vy, vz, complexity at the unshifted uv}.
+        for (int px = x; px <= x1; ++px) {
+          relief::TangentView tv;
+          const bool ok = relief::pixel_view(s, c.object, c.triangle, px, y, &tv);
+          const pom::View v = relief::quantise(ok ? tv : relief::TangentView{}, rel.scale);
+          const persp::Pixel p = persp::Unit::pixel(persp::Unit::direct(k, px, y));
+          const int du = fmt::kPomUvF - fmt::kTexUvF;
+          const uint64_t cplx = pom::tex_nearest(ob.maps->complexity, relief::shift_code(p.u, du - lw_of(ob)),
+                                                 relief::shift_code(p.v, du - lh_of(ob)));
+          views.push_back(uint64_t(ok) << (3 * fmt::kPomVzW + fmt::kPomCW) |
+                          code(v.vx, fmt::kPomVzW) << (2 * fmt::kPomVzW + fmt::kPomCW) |
+                          code(v.vy, fmt::kPomVzW) << (fmt::kPomVzW + fmt::kPomCW) |
+                          code(v.vz, fmt::kPomVzW) << fmt::kPomCW | cplx);
+        }
+      }
       spans.push_back(r);
       for (int px = x; px <= x1; ++px, ++pix) {
         if (!span_ewa || pix >= expect.pixels.size()) {
@@ -193,7 +245,20 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   for (const Row& r : spans) fanout.push_back(r[kX1] - r[kX0] + 1);
   const auto t0 = std::chrono::steady_clock::now();
   RunResult rr;
-  auto init = [&](auto& d, const std::function<void()>& tick) { load_words(d, tick, 0, ram); };
+  std::vector<uint32_t> view_words;
+  for (uint64_t v : views) view_words.push_back(static_cast<uint32_t>(v)), view_words.push_back(static_cast<uint32_t>(v >> 32));
+  if (view_words.size() / 2 > kViewWords)
+    throw std::runtime_error(s.source + ": " + std::to_string(views.size()) + " relief pixels, the view stream model holds " +
+                             std::to_string(kViewWords));
+  auto init = [&](auto& d, const std::function<void()>& tick) {
+    d.ram_sel_i = 0;
+    load_words(d, tick, 0, ram);
+    d.ram_sel_i = 1;
+    load_words(d, tick, 0, depth_ram);
+    d.ram_sel_i = 2;
+    load_words(d, tick, 0, view_words);
+    d.ram_sel_i = 0;
+  };
   if (o.has_ewa) {
     Harness<Vtu_texture_unit_sim> hs(drive<Vtu_texture_unit_sim>, sample<Vtu_texture_unit_sim>,
                                      [&](Vtu_texture_unit_sim& d, const std::function<void()>& t) { init(d, t); });
@@ -209,8 +274,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   out.cycles = rr.sim_cycles;
   out.hung = rr.hung;
   out.extra_outputs = rr.extra_outputs;
-  const auto front = static_cast<uint64_t>(ewa::texture_unit_front_latency());
-  out.predicted_cycles = ewa::stream_cycles(costs, front);
+  const auto front = static_cast<uint64_t>(ewa::texture_unit_front_latency(o.has_ewa));  // full unit: relief stage in
+  // With relief pixels the stage's march times interleave with the filter's: not predicted here
+  // (the stage alone: relief::stage_cycles; the filter alone: ewa::stream_cycles).
+  out.predicted_cycles = views.empty() ? ewa::stream_cycles(costs, front) : 0;
   out.frame.image = expect.image;
   for (size_t i = 0; i < rr.outputs.size(); ++i) {
     const Row& q = rr.outputs[i];
@@ -223,6 +290,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     rec.texels_inside = static_cast<int>(q[5]);
     rec.ewa_flags = static_cast<uint32_t>(q[6]);
     rec.b2_flags = static_cast<uint32_t>(q[7]);
+    rec.relief_n = static_cast<int>(q[8]);
     if (i < expect.pixels.size()) {
       const auto& e = expect.pixels[i];
       rec.object = e.object, rec.u = e.u, rec.v = e.v;
@@ -230,6 +298,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       // of those are its own bookkeeping, not compared).
       const bool ewa_px = ewa_of.at(s.objects[static_cast<size_t>(e.object)].material);
       const bool same = rec.x == e.x && rec.y == e.y && rec.color == e.color && rec.b2_flags == e.b2_flags &&
+                        rec.relief_n == e.relief_n &&
                         (ewa_px ? rec.lod == e.lod && rec.texels == e.texels &&
                                       rec.texels_inside == e.texels_inside && rec.ewa_flags == e.ewa_flags
                                 : rec.lod == 0 && rec.texels == 4 && rec.texels_inside == 0 && rec.ewa_flags == 0);

@@ -9,7 +9,10 @@
 //     EWA with each material's (or the given) weight source and the 1024-texel cap;
 //   * units: the full unit (HasEwa = HasBilinear = 1) or the bilinear-only unit (HasEwa = 0, what
 //     `texunit plan` writes for a scene without minification), checked against render_cmodel.
-// Not on this path: the relief uv shift (render_cmodel's hook) -- scenes are rendered without it.
+//   * relief (option): each material's POM relief through the unit's relief stage, the depth maps
+//     in the depth RAM model and one view word per pixel of a relief span (relief::pixel_view,
+//     quantised; the complexity texel for adaptive layers) in the view stream model; without the
+//     option (or on a unit without relief) the texture path alone is compared.
 #pragma once
 
 #include <cstdint>
@@ -24,6 +27,7 @@ namespace tu::cosim {
 struct RtlRenderOptions {
   bool has_ewa = true;                         // false: the bilinear-only unit (every filter must be bilinear)
   std::optional<scene::Filter> filter;         // overrides every material's filter (ewa or bilinear)
+  bool relief = false;                         // apply each material's relief (POM methods; full unit)
   std::optional<scene::WeightSource> weights;  // overrides every material's EWA weight source
   double stall_prob = 0;                       // random input bubbles / output stalls
   uint64_t seed = 1;
@@ -33,7 +37,7 @@ struct RtlRender {
   render::Frame frame;               // RTL pixels
   uint64_t spans = 0;
   uint64_t cycles = 0;               // measured: first span offered to the last pixel out
-  uint64_t predicted_cycles = 0;     // ewa::stream_cycles (no stalls)
+  uint64_t predicted_cycles = 0;     // ewa::stream_cycles (no stalls); 0: not predicted (relief pixels)
   uint64_t mismatches = 0;           // pixels differing from render_cmodel (any field)
   std::string first_mismatch;
   bool hung = false;

@@ -181,7 +181,8 @@ TEST(Sysmodel, DefaultSceneStreamCoversEveryPixelOnce) {
     walked += p.texels;
     costs.push_back({static_cast<int>(p.levels), p.texels, p.no_weight, p.guard});
   }
-  const auto r = simulate(texture_unit(), wl);
+  const UnitConfig cfg;  // the full unit (relief stage in)
+  const auto r = simulate(texture_unit(cfg), wl);
   // The filter walks one texel per clock with one pixel in flight: it bounds the run from below.
   EXPECT_GE(r.total_cycles, walked);
   // The EWA engine's own stream recurrence (ewa::stream_cycles: pixels always waiting, the first
@@ -189,7 +190,7 @@ TEST(Sysmodel, DefaultSceneStreamCoversEveryPixelOnce) {
   // (5 pixels per 8 clocks at worst) always keeps the FIFO ahead of a >= 12-clock walk, so the
   // whole-unit model must land on it exactly.
   EXPECT_EQ(r.total_cycles + 1,
-            tu::ewa::stream_cycles(costs, static_cast<uint64_t>(tu::ewa::texture_unit_front_latency())));
+            tu::ewa::stream_cycles(costs, static_cast<uint64_t>(tu::ewa::texture_unit_front_latency(cfg.relief_stage))));
   std::printf("default scene: %zu spans, %zu pixels, %llu texels, %llu cycles, %.3f s\n",
               wl.spans.size(), wl.pixels.size(), (unsigned long long)walked,
               (unsigned long long)r.total_cycles, r.sim_seconds);

@@ -80,6 +80,14 @@ Pipeline texture_unit(const UnitConfig& c) {
   s.lat0 = std::max(fmt::kPerspLatency, ell.latency), s.ii0 = std::max(1, ell.ii);
   s.capacity = std::min(fmt::kPerspLatency, ell.latency), s.fifo_depth = 1;
   p.stages.push_back(s);
+  if (c.relief_stage) {
+    // tu_relief_stage: a pixel without a shift enters its sideband FIFO and leaves it the next
+    // clock, one per clock (relief::stage_cycles).
+    s = {};
+    s.name = "relief";
+    s.lat0 = 1, s.ii0 = 1, s.capacity = c.relief_fifo, s.fifo_depth = 1;
+    p.stages.push_back(s);
+  }
   // tu_fifo in front of the filter: registered storage, a pushed pixel is visible the next cycle.
   // tu_ewa: a set-up FSM (one pixel; its level loop repeats per texel-cap raise) hands a record
   // to the walker (one texel per clock, drain, normalise) over a direct link and accepts again

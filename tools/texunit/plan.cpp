@@ -16,7 +16,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ewa/ewa_cycles.hpp"
 #include "texunit/render.hpp"
+#include "texunit/texture_unit_model.hpp"
 #include "texunit/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -244,6 +246,15 @@ int run(const Options& opt) {
       if (r->variant == variant) return r;
     throw std::runtime_error(opt.report + ": no row " + block + "/" + variant + " with an RTL");
   };
+  // A block measured per operating point (relief: per view angle and layer count): the preferred
+  // variant if measured, else the block's first row with an RTL (its cells are the same).
+  auto pick = [&](const std::string& block, const std::string& prefer) -> const TRow* {
+    const auto v = rows_of(block);
+    if (v.empty()) throw std::runtime_error(opt.report + ": no row of " + block + " with an RTL");
+    for (const TRow* r : v)
+      if (r->variant == prefer) return r;
+    return v.front();
+  };
 
   // 1. Footprints and relief per material, from the float reference (level-0 bilinear render: the
   //    footprint is recorded for every pixel whatever the filter).
@@ -311,8 +322,13 @@ int run(const Options& opt) {
   std::vector<const TRow*> weight_cands = rows_of("gauss_weight");
   for (const TRow* r : rows_of("weight_table")) weight_cands.push_back(r);
   std::vector<const TRow*> relief_rows;
-  if (pom) relief_rows = {one("pom_layers", "pom_layers"), one("pom_march", "pom_march")};
-  if (iterative) relief_rows.push_back(one("iter_parallax", "iter_parallax"));
+  // POM: the layer counter and the per-pixel unit (set-up, march, refinement) of the texture
+  // unit's relief stage, at 45 degrees with adaptive layers.
+  const TRow* pom_layers = pick("pom_layers", "adaptive_4_32");
+  const TRow* pom_unit = pick("pom_unit", "45deg_adaptive");
+  const TRow* ipx = pick("iter_parallax", "60deg_norm");
+  if (pom) relief_rows = {pom_layers, pom_unit};
+  if (iterative) relief_rows.push_back(ipx);
 
   Unit spec;
   spec.area_only = {setup};
@@ -351,7 +367,7 @@ int run(const Options& opt) {
   Unit full;
   full.area_only = {setup};
   full.stages.push_back({{persp}});
-  full.stages.push_back({{one("pom_layers", "pom_layers"), one("pom_march", "pom_march")}, {one("iter_parallax", "iter_parallax")}});
+  full.stages.push_back({{pom_layers, pom_unit}, {ipx}});
   full.stages.push_back({{one("ellipse", "analytic")}});
   const auto clips = rows_of("clip_volume");
   const TRow* full_clip = clip ? clip : *std::min_element(clips.begin(), clips.end(), [](auto* a, auto* b) { return a->cost() < b->cost(); });
@@ -375,6 +391,39 @@ int run(const Options& opt) {
   // The full unit: everything in, relief up to the scene format's 256 layers.
   const Config everything{true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes};
 
+  // 5. Scene cycles of the RTL texture unit (texture path), from the exact cycle model
+  //    ewa::stream_cycles on the bit-accurate C-model render's per-pixel work (equal to Verilator:
+  //    TextureUnitRtl.CyclesMatchPrediction / MixedFiltersPerSpan). The full unit filters each
+  //    material as authored (nearest / trilinear materials: EWA, the full unit's best); the
+  //    specialised unit with the plan's filter on every span.
+  auto scene_cycles = [&](std::function<bool(const scene::Material&)> bilinear, bool relief_stage,
+                          std::optional<scene::WeightSource> weights) -> std::optional<uint64_t> {
+    scene::Scene t = scene::without_relief(s);
+    for (auto& [name, m] : t.materials) m.filter = bilinear(m) ? scene::Filter::Bilinear : scene::Filter::Ewa;
+    render::CmodelOptions o = render::texture_path_only();
+    o.weights = weights;
+    const render::Frame fr = render::render_cmodel(t, std::nullopt, o);
+    const auto wl = sysmodel::scene_workload(t, fr);
+    std::vector<ewa::PixelCost> costs;
+    for (size_t i = 0; i < wl.pixels.size(); ++i) {
+      const auto& w = wl.pixels[i];
+      ewa::PixelCost c{static_cast<int>(w.levels), w.texels, w.no_weight, w.guard};
+      c.bilinear = t.materials.at(t.objects[static_cast<size_t>(fr.pixels[i].object)].material).filter ==
+                   scene::Filter::Bilinear;
+      costs.push_back(c);
+    }
+    return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage)));
+  };
+  const std::optional<uint64_t> full_cycles =
+      scene_cycles([](const scene::Material& m) { return m.filter == scene::Filter::Bilinear; }, true, std::nullopt);
+  std::optional<uint64_t> spec_cycles;  // trilinear: no RTL engine to model
+  if (filter != "trilinear")
+    spec_cycles = scene_cycles([&](const scene::Material&) { return filter == "bilinear"; }, relief,
+                               weights ? engine_source(*weights) : std::nullopt);
+  auto cycles_json = [](const std::optional<uint64_t>& c) {
+    return c ? json(*c) : json("not modelled: no trilinear engine in the RTL unit");
+  };
+
   const size_t px = bil.pixels.size();
   json out = {{"scene", s.source},
               {"report_table", opt.report},
@@ -394,6 +443,8 @@ int run(const Options& opt) {
               {"clip_volume", clip ? json(clip->name()) : json(nullptr)},
               {"specialised", unit_json(spec, px)},
               {"full", unit_json(full, px)},
+              {"scene_cycles", {{"specialised", cycles_json(spec_cycles)}, {"full", cycles_json(full_cycles)},
+                                {"model", "ewa::stream_cycles on the C-model render (texture path): equal to the RTL"}}},
               {"area_note", "cells are the sum of the blocks' Yosys cells (each block synthesised alone)"}};
   // Everything is decided before anything is written.
   for (const auto& [path, cfg, what] : {std::tuple{opt.out_sv, planned, "specialised"}, {opt.out_full_sv, everything, "full"}}) {
@@ -421,6 +472,12 @@ int run(const Options& opt) {
                 u->texels_per_pixel, u->frame_cycles(px), u->cells_measured() ? fmt("%.0f", u->cells()).c_str() : "not measured");
   std::printf("cells: sum of the blocks' Yosys cells (each block synthesised alone; texel fetch not included)\n"
               "frame cycles: pixels x max(II, texels per pixel) + latency (one texel per cycle)\n");
+  auto per_px = [&](const std::optional<uint64_t>& c) {
+    return c ? fmt("%.0f", double(*c)) + " (" + fmt("%.2f", double(*c) / double(std::max<size_t>(1, px))) + " / pixel)"
+             : std::string("not modelled (no trilinear engine in the RTL unit)");
+  };
+  std::printf("scene cycles of the RTL unit (texture path, exact cycle model = Verilator): specialised %s, "
+              "full unit (each material's own filter) %s\n", per_px(spec_cycles).c_str(), per_px(full_cycles).c_str());
   return 0;
 }
 

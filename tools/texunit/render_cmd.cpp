@@ -26,6 +26,9 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
                  "--engine rtl: the full unit (EWA and bilinear engines, each material's filter per span) "
                  "or the bilinear-only unit (HasEwa = 0)")
       ->check(CLI::IsMember({"full", "bilinear"}));
+  r->add_flag("--no-relief", a.no_relief,
+              "cmodel / rtl engines: leave every material's relief out (the texture path alone); the "
+              "bilinear-only RTL unit has no relief stage and always renders without it");
   r->add_option("--weights", a.weights, "override every material's EWA weight source")
       ->check(CLI::IsMember({"formula", "table1d", "table2d"}));
   r->add_option("--filter", a.filter, "override every material's filter")
@@ -48,6 +51,7 @@ int run_render(const RenderArgs& a) {
   render::CmodelOptions opt;
   opt.progress = true;
   opt.weights = w;
+  opt.relief = !a.no_relief;
   render::Frame frame;
   bool ok = true;
   if (a.engine == "rtl") {
@@ -57,18 +61,23 @@ int run_render(const RenderArgs& a) {
     ro.has_ewa = a.rtl_unit == "full";
     ro.filter = f;
     ro.weights = w;
+    ro.relief = ro.has_ewa && !a.no_relief;
     const auto r = cosim::render_rtl(s, ro);
     frame = r.frame;
     ok = r.ok();
-    std::printf("rtl %s unit: %zu pixels in %llu spans, %llu mismatches against the C model%s%s\n",
-                a.rtl_unit.c_str(), r.frame.pixels.size(), (unsigned long long)r.spans,
+    std::printf("rtl %s unit%s: %zu pixels in %llu spans, %llu mismatches against the C model%s%s\n",
+                a.rtl_unit.c_str(), ro.relief ? " with relief" : " (texture path, no relief)", r.frame.pixels.size(), (unsigned long long)r.spans,
                 (unsigned long long)r.mismatches, r.first_mismatch.empty() ? "" : "; first: ",
                 r.first_mismatch.c_str());
     const double n = static_cast<double>(std::max<size_t>(1, r.frame.pixels.size()));
-    std::printf("cycles measured %llu (%.2f/pixel), predicted %llu (%.2f/pixel, %+.2f %%)",
-                (unsigned long long)r.cycles, double(r.cycles) / n, (unsigned long long)r.predicted_cycles,
-                double(r.predicted_cycles) / n,
-                100.0 * (double(r.predicted_cycles) / double(std::max<uint64_t>(1, r.cycles)) - 1));
+    if (r.predicted_cycles)
+      std::printf("cycles measured %llu (%.2f/pixel), predicted %llu (%.2f/pixel, %+.2f %%)",
+                  (unsigned long long)r.cycles, double(r.cycles) / n, (unsigned long long)r.predicted_cycles,
+                  double(r.predicted_cycles) / n,
+                  100.0 * (double(r.predicted_cycles) / double(std::max<uint64_t>(1, r.cycles)) - 1));
+    else
+      std::printf("cycles measured %llu (%.2f/pixel), not predicted (relief pixels in the stream)",
+                  (unsigned long long)r.cycles, double(r.cycles) / n);
     std::printf("; simulated %.0f RTL pixels/s (%.2f s)\n", n / r.sim_wall_s, r.sim_wall_s);
   } else {
     frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt) : render::render_ref(s, f);
@@ -94,7 +103,10 @@ namespace {
 void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir);
 void demo_render_relief(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir);
 // The demo's RTL rows: the texture-unit top == the C-model engine on every pixel.
-bool demo_render_rtl(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir);
+// `relief`, `relief_ref`: the scene with its relief and the float EWA + 256-layer relief frame
+// (the relief row); `s`, `ewa_ref`: the texture path.
+bool demo_render_rtl(const scene::Scene& relief, const render::Frame& relief_ref, const scene::Scene& s,
+                     const render::Frame& ewa_ref, const std::string& out_dir);
 }  // namespace
 
 bool demo_render(const std::string& out_dir) {
@@ -130,14 +142,13 @@ bool demo_render(const std::string& out_dir) {
                 texels / static_cast<double>(std::max<size_t>(1, frames[i].pixels.size())),
                 seconds[i], png.c_str());
   }
-  // The filters are measured on the texture path (relief off on both sides: the RTL top has no
-  // relief stage yet); the relief method is measured on its own row against the float reference's
-  // 256-layer march.
+  // The filters are measured on the texture path (relief off on both sides); the relief method is
+  // measured on its own rows (C model and RTL) against the float reference's 256-layer march.
   const scene::Scene flat = scene::without_relief(s);
   const auto ewa_flat = render::render_ref(flat, scene::Filter::Ewa);
   demo_render_cmodel(flat, ewa_flat, out_dir);
   demo_render_relief(s, ewa, out_dir);
-  return demo_render_rtl(flat, ewa_flat, out_dir);
+  return demo_render_rtl(s, ewa, flat, ewa_flat, out_dir);
 }
 
 namespace {
@@ -192,12 +203,14 @@ void demo_render_relief(const scene::Scene& s, const render::Frame& ewa_ref, con
               png.c_str());
 }
 
-bool demo_render_rtl(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir) {
+bool demo_render_rtl(const scene::Scene& relief, const render::Frame& relief_ref, const scene::Scene& s,
+                     const render::Frame& ewa_ref, const std::string& out_dir) {
   struct Row {
     const char* name;
     bool has_ewa;  // false: the bilinear-only unit
     std::optional<scene::Filter> filter;
-    scene::WeightSource weights;
+    std::optional<scene::WeightSource> weights;
+    bool relief = false;  // each material's relief through the unit's relief stage
   };
   // The full unit with every span on EWA, with ground on bilinear (per-material filters: the
   // engines take turns), and the bilinear-only unit.
@@ -205,11 +218,12 @@ bool demo_render_rtl(const scene::Scene& s, const render::Frame& ewa_ref, const 
                       {"ewa_table1d", true, scene::Filter::Ewa, scene::WeightSource::Table1d},
                       {"ewa_table2d", true, scene::Filter::Ewa, scene::WeightSource::Table2d},
                       {"mixed", true, std::nullopt, scene::WeightSource::Formula},
-                      {"bilinear", false, scene::Filter::Bilinear, scene::WeightSource::Formula}};
+                      {"bilinear", false, scene::Filter::Bilinear, scene::WeightSource::Formula},
+                      {"ewa+relief", true, scene::Filter::Ewa, std::nullopt, true}};
   scene::Scene mixed = s;
   mixed.materials.at("ground").filter = scene::Filter::Bilinear;
   std::printf("\ndefault scene through the Verilated texture unit (rtl/top/tu_texture_unit.sv: spans ->"
-              " B1 -> B2 -> filter), every pixel compared with the C-model engine, no stalls:\n");
+              " B1 -> B2 -> relief -> filter), every pixel compared with the C-model engine, no stalls:\n");
   std::printf("%-12s %8s %10s %11s %13s %13s %9s %12s  %s\n", "filter", "pixels", "mismatch",
               "PSNR vs EWA", "cycles/pixel", "predicted", "error", "RTL pixel/s", "image");
   bool ok = true;
@@ -218,17 +232,21 @@ bool demo_render_rtl(const scene::Scene& s, const render::Frame& ewa_ref, const 
     o.has_ewa = r.has_ewa;
     o.filter = r.filter;
     o.weights = r.weights;
-    const auto res = cosim::render_rtl(r.filter ? s : mixed, o);
+    o.relief = r.relief;
+    const auto res = cosim::render_rtl(r.relief ? relief : r.filter ? s : mixed, o);
     ok = ok && res.ok();
     const auto png = (std::filesystem::path(out_dir) / (std::string("rtl_") + r.name + ".png")).string();
     img::write_png_rgba(png, res.frame.image);
     const double n = static_cast<double>(std::max<size_t>(1, res.frame.pixels.size()));
-    char pred[32], err[32];
-    std::snprintf(pred, sizeof pred, "%.3f", double(res.predicted_cycles) / n);
-    std::snprintf(err, sizeof err, "%+.3f %%",
-                  100.0 * (double(res.predicted_cycles) / double(std::max<uint64_t>(1, res.cycles)) - 1));
+    char pred[32] = "-", err[32] = "-";  // relief streams: not predicted
+    if (res.predicted_cycles) {
+      std::snprintf(pred, sizeof pred, "%.3f", double(res.predicted_cycles) / n);
+      std::snprintf(err, sizeof err, "%+.3f %%",
+                    100.0 * (double(res.predicted_cycles) / double(std::max<uint64_t>(1, res.cycles)) - 1));
+    }
+    // PSNR against the float EWA of the same path (the relief row: with the 256-layer march).
     std::printf("%-12s %8zu %10llu %8.2f dB %13.3f %13s %9s %12.0f  %s\n", r.name, res.frame.pixels.size(),
-                (unsigned long long)res.mismatches, tex::psnr(res.frame.image, ewa_ref.image),
+                (unsigned long long)res.mismatches, tex::psnr(res.frame.image, (r.relief ? relief_ref : ewa_ref).image),
                 double(res.cycles) / n, pred, err, n / res.sim_wall_s, png.c_str());
     if (!res.ok()) std::printf("  first mismatch: %s\n", res.first_mismatch.c_str());
   }

@@ -7,6 +7,7 @@ namespace tu::cli {
 
 struct RenderArgs {
   std::string scene, out_dir, dump, engine = "ref", filter, weights, rtl_unit = "full";
+  bool no_relief = false;
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);

@@ -52,8 +52,10 @@ uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival 
 // four texel reads, last data, output), pixels back to back.
 uint64_t bilinear_stream_cycles(uint64_t pixels, uint64_t first_arrival = 0);
 
-// Front-end latency of tu_texture_unit: span accepted at cycle 0 -> first pixel at the EWA
-// engine's input: span set-up (2) + expander register (1) + B1 (PerspLatency) + FIFO (1).
-int texture_unit_front_latency();
+// Front-end latency of tu_texture_unit: span accepted at cycle 0 -> first pixel at the filter
+// engine's input: span set-up (2) + expander register (1) + B1 (PerspLatency) + FIFO (1), + 1 with
+// the relief stage (HasRelief: a pixel without a shift passes tu_relief_stage's sideband FIFO in
+// one clock, relief::stage_cycles).
+int texture_unit_front_latency(bool relief_stage);
 
 }  // namespace tu::ewa

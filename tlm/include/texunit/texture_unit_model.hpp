@@ -20,10 +20,13 @@ Workload scene_workload(const scene::Scene& s, const render::Frame& frame);
 struct UnitConfig {
   int span_fifo = 2;   // spans waiting for the per-scanline set-up
   int pixel_fifo = 4;  // B2 -> filter FIFO (tu_fifo FifoDepth): decouples the fixed pipes from the walk
+  bool relief_stage = true;  // HasRelief (the full unit): tu_relief_stage between B1/B2 and the FIFO
+  int relief_fifo = 32;      // its sideband FIFO (tu_relief_stage FifoDepth)
   ewa::EngineParams ewa;  // tu_ewa structure parameters (CORDIC unroll, square-root step)
 };
 
-// span set-up -> expander -> B1 || B2 -> FIFO -> EWA set-up -> EWA walker (tu_texture_unit).
+// span set-up -> expander -> B1 || B2 -> [relief stage] -> FIFO -> EWA set-up -> EWA walker
+// (tu_texture_unit; relief pixels are not modelled: the texture path, as the RTL render engine).
 // Latencies and IIs come from formats.hpp and the blocks' scheduler graphs.
 Pipeline texture_unit(const UnitConfig& c = {});
 

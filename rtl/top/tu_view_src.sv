@@ -1,0 +1,36 @@
+// Per-pixel view stream model for simulation: the shader's tangent-space view of every pixel of
+// a relief span, in pixel order (the texture unit's view port). The testbench writes the words
+// during reset through a 32-bit port (word i: low half at address 2i, high half at 2i + 1); the
+// model then offers them in order on a valid/ready port. Not synthesised for area.
+module tu_view_src #(
+  parameter int unsigned AddrW = tu_formats_pkg::TexAddrW,
+  parameter int unsigned Words = 1 << 16
+) (
+  input  logic             clk_i,
+  input  logic             rst_ni,
+  input  logic             wr_en_i,
+  input  logic [AddrW-1:0] wr_addr_i,
+  input  logic [31:0]      wr_data_i,
+  output logic             out_valid_o,
+  input  logic             out_ready_i,
+  output logic [63:0]      out_data_o
+);
+  localparam int unsigned IdxW = $clog2(Words);
+  logic [63:0]   mem_q [Words];
+  logic [IdxW:0] count_q = '0;  // words written (loaded during reset, so not reset itself)
+  logic [IdxW:0] rd_q;
+  logic [AddrW-1:0] widx;
+  assign widx = wr_addr_i >> 1;
+  always_ff @(posedge clk_i) begin
+    if (wr_en_i && widx < AddrW'(Words)) begin
+      mem_q[IdxW'(widx)][32 * wr_addr_i[0] +: 32] <= wr_data_i;
+      if ((IdxW + 1)'(widx) >= count_q) count_q <= (IdxW + 1)'(widx) + 1'b1;
+    end
+  end
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) rd_q <= '0;
+    else if (out_valid_o && out_ready_i) rd_q <= rd_q + 1'b1;
+  end
+  assign out_valid_o = rd_q < count_q;
+  assign out_data_o  = mem_q[IdxW'(rd_q)];
+endmodule
