@@ -187,20 +187,15 @@ struct Unit {
              });
            });
   }
-  // One texel per cycle through the filter, and no more than one pixel per II.
-  double frame_cycles(size_t pixels) const {
-    return static_cast<double>(pixels) * std::max(ii(), texels_per_pixel) + static_cast<double>(latency());
-  }
 };
 
-json unit_json(const Unit& u, size_t pixels) {
+json unit_json(const Unit& u) {
   json b = json::array();
   for (const TRow* r : u.all()) b.push_back(r->name());
   return {{"blocks", b},
           {"pixel_latency_cycles", u.latency()},
           {"ii_cycles", u.ii()},
           {"texels_per_pixel", u.texels_per_pixel},
-          {"frame_cycles", u.frame_cycles(pixels)},
           {"cells_sum_of_blocks", u.cells_measured() ? json(u.cells()) : json("not measured: yosys not installed")}};
 }
 
@@ -441,8 +436,8 @@ int run(const Options& opt) {
               {"weights_db_source", weights && render_db.count(weights) ? "C-model EWA render vs float EWA (texture path)"
                                                                         : "20 log10(1/rms) of the weights"},
               {"clip_volume", clip ? json(clip->name()) : json(nullptr)},
-              {"specialised", unit_json(spec, px)},
-              {"full", unit_json(full, px)},
+              {"specialised", unit_json(spec)},
+              {"full", unit_json(full)},
               {"scene_cycles", {{"specialised", cycles_json(spec_cycles)}, {"full", cycles_json(full_cycles)},
                                 {"model", "ewa::stream_cycles on the C-model render (texture path): equal to the RTL"}}},
               {"area_note", "cells are the sum of the blocks' Yosys cells (each block synthesised alone)"}};
@@ -466,18 +461,19 @@ int run(const Options& opt) {
                            weights->name().c_str(), weight_render_db(*weights),
                            render_db.count(weights) ? "C-model EWA render vs float EWA, texture path" : "20 log10(1/rms)",
                            clip->name().c_str(), weight_db(*clip));
-  std::printf("\n%-12s %10s %6s %13s %14s %12s\n", "unit", "latency", "II", "texels/pixel", "frame cycles", "cells (sum)");
-  for (const auto& [name, u] : {std::pair<const char*, const Unit*>{"specialised", &spec}, {"full", &full}})
-    std::printf("%-12s %10lld %6.2f %13.2f %14.0f %12s\n", name, static_cast<long long>(u->latency()), u->ii(),
-                u->texels_per_pixel, u->frame_cycles(px), u->cells_measured() ? fmt("%.0f", u->cells()).c_str() : "not measured");
-  std::printf("cells: sum of the blocks' Yosys cells (each block synthesised alone; texel fetch not included)\n"
-              "frame cycles: pixels x max(II, texels per pixel) + latency (one texel per cycle)\n");
-  auto per_px = [&](const std::optional<uint64_t>& c) {
-    return c ? fmt("%.0f", double(*c)) + " (" + fmt("%.2f", double(*c) / double(std::max<size_t>(1, px))) + " / pixel)"
-             : std::string("not modelled (no trilinear engine in the RTL unit)");
+  auto cyc = [&](const std::optional<uint64_t>& c) {
+    return c ? fmt("%.0f", double(*c)) + " (" + fmt("%.2f", double(*c) / double(std::max<size_t>(1, px))) + "/px)"
+             : std::string("not modelled");
   };
-  std::printf("scene cycles of the RTL unit (texture path, exact cycle model = Verilator): specialised %s, "
-              "full unit (each material's own filter) %s\n", per_px(spec_cycles).c_str(), per_px(full_cycles).c_str());
+  std::printf("\n%-12s %10s %6s %13s %22s %12s\n", "unit", "latency", "II", "texels/pixel", "scene cycles", "cells (sum)");
+  for (const auto& [name, u, c] : {std::tuple<const char*, const Unit*, const std::optional<uint64_t>*>{"specialised", &spec, &spec_cycles},
+                                   {"full", &full, &full_cycles}})
+    std::printf("%-12s %10lld %6.2f %13.2f %22s %12s\n", name, static_cast<long long>(u->latency()), u->ii(),
+                u->texels_per_pixel, cyc(*c).c_str(), u->cells_measured() ? fmt("%.0f", u->cells()).c_str() : "not measured");
+  std::printf("scene cycles: the RTL texture unit on the scene's texture path, exact cycle model (ewa::stream_cycles\n"
+              "  on the C-model render's per-pixel work; = Verilator); the full unit filters each material as\n"
+              "  authored, the specialised one with the plan's filter (trilinear: not modelled, no RTL engine)\n"
+              "cells: sum of the blocks' Yosys cells (each block synthesised alone; texel fetch not included)\n");
   return 0;
 }
 
