@@ -39,6 +39,7 @@ void shift_relief_fx(const scene::Scene& s, const Cover& c, const relief::Maps& 
   *u = r.u;
   *v = r.v;
   rec->relief_n = static_cast<int>(r.n);
+  rec->relief_steps = static_cast<int>(r.steps);
 }
 }  // namespace
 

@@ -40,4 +40,37 @@ TEST(SysmodelRtl, SceneCyclesWithinFivePercentAndTenTimesFaster) {
   EXPECT_GE(rtl.sim_wall_s / best, 10.0);
 }
 
+// With relief: the wall's pixels are shifted by the relief stage (the C model's march steps drive
+// the model's relief stage). The default relief (adaptive, 32 layers) hides under the EWA walk; a
+// heavy one (fixed 63 layers, scale 0.2, the wall's anisotropy clamped to 1 so its walks are short)
+// makes the stage matter. Both within 1% of the RTL.
+TEST(SysmodelRtl, ReliefSceneCyclesWithinOnePercent) {
+  auto s = scene::default_scene();
+  s.camera.width = 128;
+  s.camera.height = 96;
+  auto heavy = s;
+  auto& rel = *heavy.materials.at("wall").relief;
+  rel.method = scene::ReliefMethod::PomFixed, rel.layers = 63, rel.scale = 0.2;
+  heavy.materials.at("wall").max_aniso = 1;
+  for (const auto* sc : {&s, &heavy}) {
+    cosim::RtlRenderOptions o;
+    o.filter = scene::Filter::Ewa;
+    o.relief = true;
+    const auto rtl = cosim::render_rtl(*sc, o);
+    ASSERT_TRUE(rtl.ok()) << rtl.first_mismatch;
+    render::CmodelOptions c = render::texture_path_only();
+    c.relief = true;
+    const auto wl = sysmodel::scene_workload(*sc, render::render_cmodel(*sc, scene::Filter::Ewa, c));
+    uint64_t shifted = 0, steps = 0;
+    for (const auto& p : wl.pixels) shifted += p.relief, steps += p.steps;
+    EXPECT_GT(shifted, 1000u);
+    const auto r = sysmodel::simulate(sysmodel::texture_unit(), wl);
+    const double ratio = static_cast<double>(r.total_cycles + 1) / static_cast<double>(rtl.cycles);
+    std::printf("relief %s: %llu shifted px, %llu march steps: RTL %llu cycles, model %llu: ratio %.5f\n",
+                sc == &s ? "default" : "heavy", (unsigned long long)shifted, (unsigned long long)steps,
+                (unsigned long long)rtl.cycles, (unsigned long long)(r.total_cycles + 1), ratio);
+    EXPECT_LT(std::abs(ratio - 1), 0.01);
+  }
+}
+
 }  // namespace

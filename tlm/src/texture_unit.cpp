@@ -45,6 +45,9 @@ Workload scene_workload(const scene::Scene& s, const render::Frame& frame) {
       p.guard = rec.levels == 0;
       p.levels = static_cast<uint32_t>(std::max(rec.levels, 1));
       p.no_weight = (rec.ewa_flags & ewa::fx::kNoWeight) != 0;
+      // Relief renders: a pixel the relief stage shifts (it used n >= 1 layers) and its march.
+      p.relief = rec.relief_n > 0;
+      p.steps = static_cast<uint32_t>(rec.relief_steps);
       wl.pixels.push_back(p);
     }
   }
@@ -82,10 +85,17 @@ Pipeline texture_unit(const UnitConfig& c) {
   p.stages.push_back(s);
   if (c.relief_stage) {
     // tu_relief_stage: a pixel without a shift enters its sideband FIFO and leaves it the next
-    // clock, one per clock (relief::stage_cycles).
+    // clock, one per clock; a shifted one (k march steps) leaves after the layer counter, the
+    // set-up, the march (k + 1 compares, output register) and the refinement, k + 19 clocks, in
+    // order (head-of-line join), and the march engine takes the next one after k + 1 clocks.
+    // Approximate (relief::stage_cycles is the exact model of the stage alone): the set-up of the
+    // next shifted pixel overlaps the march here only through the in-flight capacity.
     s = {};
     s.name = "relief";
-    s.lat0 = 1, s.ii0 = 1, s.capacity = c.relief_fifo, s.fifo_depth = 1;
+    s.relief_only = true, s.bypass_latency = 1, s.work = Work::Steps;
+    s.lat0 = fmt::kPomLayersLatency + fmt::kPomSetupLatency + 2 + fmt::kPomRefineLatency, s.lat_per_work = 1;
+    s.ii0 = 1, s.ii_per_work = 1;
+    s.capacity = c.relief_fifo, s.fifo_depth = 1;
     p.stages.push_back(s);
   }
   // tu_fifo in front of the filter: registered storage, a pushed pixel is visible the next cycle.

@@ -39,6 +39,9 @@ CLI::App* add_sysmodel(CLI::App& app, SysmodelArgs& a) {
   c->add_option("--engine-compare", a.compare,
                  "also render the scene through the RTL (Verilator) in this process: both cycle totals, ratios")
       ->check(CLI::IsMember({"rtl"}));
+  c->add_flag("--relief", a.relief,
+              "apply each material's relief: shifted pixels' march steps (C model) drive the relief stage "
+              "(default: the texture path, relief pixels pass the stage like any other)");
   c->add_flag("--json", a.json, "print one JSON object");
   return c;
 }
@@ -47,7 +50,9 @@ int run_sysmodel(const SysmodelArgs& a) {
   const scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
   const auto t0 = std::chrono::steady_clock::now();
   // Per-pixel work (texels walked, levels tried) from the bit-accurate C-model render.
-  const render::Frame frame = render::render_cmodel(s, tu::scene::Filter::Ewa, tu::render::texture_path_only());
+  render::CmodelOptions copt = render::texture_path_only();
+  copt.relief = a.relief;  // relief pixels' march steps drive the relief stage
+  const render::Frame frame = render::render_cmodel(s, tu::scene::Filter::Ewa, copt);
   const sysmodel::Workload wl = sysmodel::scene_workload(s, frame);
   const double work_s = seconds_since(t0);
   sysmodel::UnitConfig cfg;
@@ -71,7 +76,10 @@ int run_sysmodel(const SysmodelArgs& a) {
                                   std::to_string(rtl_ewa.cord_unroll) + ", SqrtStep " +
                                   std::to_string(rtl_ewa.sqrt_step) + "; drop the what-if options");
     const auto t1 = std::chrono::steady_clock::now();
-    rtl = cosim::render_rtl(s);
+    cosim::RtlRenderOptions ro;
+    ro.filter = scene::Filter::Ewa;
+    ro.relief = a.relief;
+    rtl = cosim::render_rtl(s, ro);
     rtl_s = seconds_since(t1);
   }
   const uint64_t model_cycles = r.total_cycles + 1;

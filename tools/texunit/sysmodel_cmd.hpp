@@ -8,6 +8,7 @@ namespace tu::cli {
 struct SysmodelArgs {
   std::string scene, compare;
   bool json = false;
+  bool relief = false;
   int fifo_depth = 4;
   int cord_unroll = 2, sqrt_step = 4;  // tu_ewa CordUnroll, SqrtStep (what-if: the RTL uses 2, 4)
 };

@@ -28,6 +28,7 @@ struct PixelRecord {
   double footprint_lod = 0;  // log2 of the clamped minor axis, in [0, coarsest level] (`texunit plan`)
   img::Rgba8 color;
   int relief_n = 0;     // relief materials: layers N of the material's method (0: no relief)
+  int relief_steps = 0; // relief materials: march steps (POM) or iterations (iterative)
 };
 
 struct Frame {
