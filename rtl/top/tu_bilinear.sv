@@ -1,9 +1,10 @@
-// Bilinear filter at level 0 through the texel port (the HasEwa = 0 path of tu_texture_unit;
-// a B1-guard pixel: the texture's mean, texel (0, 0) of the 1x1 top level, as render_cmodel),
-// exactly tex::bilinear(t, 0, u, v): position u - 1/2, x0 = floor, weight fx = its TexUvF-bit
-// fraction (TexWeightF = TexUvF), per channel round_half_up(((c00 (1-fx) + c10 fx)(1-fy) +
-// (c01 (1-fx) + c11 fx) fy)). Four reads, one per clock (1-cycle read latency): 6 cycles from
-// acceptance to out_valid, then held until taken.
+// Bilinear filter at level L through the texel port (the bilinear engine of tu_texture_unit, L = 0;
+// tu_trilinear runs it at two levels; a B1-guard pixel: the texture's mean, texel (0, 0) of the
+// 1x1 top level, as render_cmodel), exactly tex::bilinear(t, L, u, v): level-L position
+// u / 2^L - 1/2 = u - 2^(TexUvF + L - 1) with TexUvF + L fraction bits, x0 = floor, weight fx = the
+// top TexWeightF (= TexUvF) bits of its fraction (truncated), per channel
+// round_half_up(((c00 (1-fx) + c10 fx)(1-fy) + (c01 (1-fx) + c11 fx) fy)). Four reads, one per
+// clock (1-cycle read latency): 6 cycles from acceptance to out_valid, then held until taken.
 module tu_bilinear (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -12,6 +13,7 @@ module tu_bilinear (
   input  logic [tu_formats_pkg::PerspUvW-1:0] u_i,
   input  logic [tu_formats_pkg::PerspUvW-1:0] v_i,
   input  logic                                guard_i,  // B1 guard: texel (0, 0) of the 1x1 top level
+  input  logic [3:0]                          level_i,  // L (TexUvF + L < 32: the shifts stay in range)
   input  logic [tu_formats_pkg::TexAddrW-1:0] base_i,
   input  logic [3:0]                          lw_i,
   input  logic [3:0]                          lh_i,
@@ -35,8 +37,10 @@ module tu_bilinear (
   logic                                clamp_q;
   logic [31:0]                         c_q [3];
   logic signed [UW-1:0]                su, sv;
-  assign su = $signed(u_i) - $signed(UW'(One / 2));
-  assign sv = $signed(v_i) - $signed(UW'(One / 2));
+  logic [4:0]                          sh;  // TexUvF + L: fraction bits of the level-L position
+  assign sh = 5'(F) + {1'b0, level_i};
+  assign su = $signed(u_i) - $signed(UW'(One / 2) << level_i);
+  assign sv = $signed(v_i) - $signed(UW'(One / 2) << level_i);
   assign in_ready_o  = st_q == 3'd0;
   assign out_valid_o = st_q == 3'd6;
   assign tex_req_o   = st_q >= 3'd1 && st_q <= 3'd4;
@@ -81,12 +85,12 @@ module tu_bilinear (
         x0_q <= '0;
         y0_q <= '0;
       end else begin
-        x0_q <= su >>> F;
-        y0_q <= sv >>> F;
+        x0_q <= su >>> sh;
+        y0_q <= sv >>> sh;
       end
-      fx_q    <= guard_i ? '0 : (F+1)'(su[F-1:0]);
-      fy_q    <= guard_i ? '0 : (F+1)'(sv[F-1:0]);
-      lev_q   <= guard_i ? (lw_i > lh_i ? lw_i : lh_i) : 4'd0;
+      fx_q    <= guard_i ? '0 : {1'b0, su[{1'b0, level_i} +: F]};
+      fy_q    <= guard_i ? '0 : {1'b0, sv[{1'b0, level_i} +: F]};
+      lev_q   <= guard_i ? (lw_i > lh_i ? lw_i : lh_i) : level_i;
       base_q  <= base_i;
       lw_q    <= lw_i;
       lh_q    <= lh_i;

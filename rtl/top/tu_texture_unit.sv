@@ -13,10 +13,12 @@
 module tu_texture_unit #(
   // Defaults from the unit configuration (rtl/0_pkg/tu_unit_cfg_pkg.sv: the full unit as committed;
   // `texunit plan SCENE --out rtl/0_pkg/tu_unit_cfg_pkg.sv` specialises it to a scene).
-  // 1: EWA engine (tu_ewa). 1: bilinear engine at level 0 (tu_bilinear). With both, each span's
-  // filt_i picks the engine; with one, every pixel goes to it (filt_i is ignored).
-  parameter int unsigned HasEwa      = {31'b0, tu_unit_cfg_pkg::HasEwa},
-  parameter int unsigned HasBilinear = {31'b0, tu_unit_cfg_pkg::HasBilinear},
+  // Filter engines: EWA (tu_ewa), bilinear at level 0 (tu_bilinear), trilinear (tu_trilinear).
+  // Each span's filt_i picks one; a span asking for an engine the unit leaves out goes to the
+  // first present of EWA, trilinear, bilinear.
+  parameter int unsigned HasEwa       = {31'b0, tu_unit_cfg_pkg::HasEwa},
+  parameter int unsigned HasBilinear  = {31'b0, tu_unit_cfg_pkg::HasBilinear},
+  parameter int unsigned HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
   // 1: relief stage (tu_relief_stage: POM, fixed or adaptive layers) between B1 and the filter
   parameter int unsigned HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
   parameter int unsigned FifoDepth = 4   // pixels buffered between B2 and the filter
@@ -54,7 +56,7 @@ module tu_texture_unit #(
   input  logic                                  tclamp_i,
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
-  input  logic                                  filt_i,  // material filter: 1 EWA, 0 bilinear
+  input  logic [1:0]                            filt_i,  // material filter: 0 bilinear, 1 EWA, 2 trilinear
   // material relief (POM): on, adaptive layers, layers (1..63), height scale S, depth map
   input  logic                                  rel_i,
   input  logic                                  radapt_i,
@@ -100,7 +102,7 @@ module tu_texture_unit #(
   localparam int unsigned AW = tu_formats_pkg::TexAddrW;
   localparam int unsigned NW = tu_formats_pkg::EllNxW;
   // material fields carried per pixel
-  localparam int unsigned MatW  = AW + 4 + 4 + 1 + 2 + tu_formats_pkg::EwaCountW + 1;
+  localparam int unsigned MatW  = AW + 4 + 4 + 1 + 2 + tu_formats_pkg::EwaCountW + 2;
   // per-triangle B2 fields
   localparam int unsigned TriW  = tu_formats_pkg::EllDetW + tu_formats_pkg::EllDetExpW +
                                   tu_formats_pkg::EllAnisoW + tu_formats_pkg::EllMaxLodW;
@@ -224,7 +226,7 @@ module tu_texture_unit #(
   logic [3:0]                          pj_hlw, pj_hlh, pj_lw, pj_lh;
   assign {pj_r, pj_radapt, pj_rlayers, pj_rscale, pj_hbase, pj_hlw, pj_hlh} = pj_rel;
   // the colour texture's log2 size inside the material fields (base, lw, lh, clamp, wsrc, cap, filt)
-  assign {pj_lw, pj_lh} = pj_fpix[tu_formats_pkg::EwaCountW + 4 +: 8];
+  assign {pj_lw, pj_lh} = pj_fpix[tu_formats_pkg::EwaCountW + 5 +: 8];
   logic [RSideW-1:0] rs_in, rs_out;
   assign rs_in = {pj_fpix, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_flags};
   logic          rs_valid, rs_ready;
@@ -271,7 +273,7 @@ module tu_texture_unit #(
   logic [3:0]    f_lw, f_lh;
   logic [1:0]    f_wsrc;
   logic [tu_formats_pkg::EwaCountW-1:0] f_cap;
-  logic          f_filt;
+  logic [1:0]    f_filt;
   logic [UW-1:0] f_u, f_v;
   logic [tu_formats_pkg::PomNW-1:0] f_rn;
   logic [tu_formats_pkg::EllCoefW-1:0] f_ae, f_ce, f_be;
@@ -284,63 +286,70 @@ module tu_texture_unit #(
   // ---------------- filter ----------------
   // Per-pixel fields the filter does not carry ride in a FIFO popped with its output (it holds
   // the pixels in flight in the engines).
-  // With both engines, they take turns: a pixel for the other engine waits until the current one
-  // has output all its pixels (cur_q: the engine of the pixels in flight, inflight_q: how many),
-  // so outputs stay in order and only one engine drives the texel port. Engine switches happen
-  // at material changes only (ewa::stream_cycles counts the drain).
+  // The engines take turns: a pixel for another engine waits until the current one has output
+  // all its pixels (cur_q: the engine of the pixels in flight, inflight_q: how many), so outputs
+  // stay in order and only one engine drives the texel port. Switches happen at material changes
+  // only (ewa::stream_cycles counts the drain).
   localparam int unsigned OsW = 2 * XW + 2 + 5 + tu_formats_pkg::PomNW;
-  localparam bit Both = (HasEwa != 0) && (HasBilinear != 0);
-  logic          os_in_ready, os_valid, flt_valid, eng_ready, sel_ewa, can_go, fire_flt, fire_out;
-  logic          cur_q;
+  localparam logic [1:0] EngBil = 2'd0, EngEwa = 2'd1, EngTri = 2'd2;
+  localparam logic [1:0] EngFirst = (HasEwa != 0) ? EngEwa : (HasTriFilter != 0) ? EngTri : EngBil;
+  logic          os_in_ready, os_valid, flt_valid, eng_ready, can_go, fire_flt, fire_out;
+  logic [1:0]    sel, cur_q;
   logic [1:0]    inflight_q;  // <= 2: the sideband FIFO's depth bounds the pixels in flight
   logic [OsW-1:0] os_data;
-  logic          ewa_in_ready, ewa_valid, bil_in_ready, bil_valid;
-  logic          ewa_req, bil_req;
-  logic [AW-1:0] ewa_addr, bil_addr;
-  logic [31:0]   ewa_rgba, bil_rgba;
-  assign sel_ewa  = (HasEwa != 0) && ((HasBilinear == 0) || f_filt);
-  assign can_go   = !Both || inflight_q == '0 || cur_q == sel_ewa;
-  assign eng_ready = sel_ewa ? ewa_in_ready : bil_in_ready;
-  assign fq_ready = can_go && eng_ready && os_in_ready;
-  assign fire_flt = fq_valid && fq_ready;
+  logic          ewa_in_ready, ewa_valid, bil_in_ready, bil_valid, tri_in_ready, tri_valid;
+  logic          ewa_req, bil_req, tri_req;
+  logic [AW-1:0] ewa_addr, bil_addr, tri_addr;
+  logic [31:0]   ewa_rgba, bil_rgba, tri_rgba;
+  always_comb begin
+    unique case (f_filt)
+      EngEwa:  sel = (HasEwa != 0) ? EngEwa : EngFirst;
+      EngTri:  sel = (HasTriFilter != 0) ? EngTri : EngFirst;
+      default: sel = (HasBilinear != 0) ? EngBil : EngFirst;
+    endcase
+  end
+  assign can_go    = inflight_q == '0 || cur_q == sel;
+  assign eng_ready = sel == EngEwa ? ewa_in_ready : sel == EngTri ? tri_in_ready : bil_in_ready;
+  assign fq_ready  = can_go && eng_ready && os_in_ready;
+  assign fire_flt  = fq_valid && fq_ready;
   tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
     .clk_i, .rst_ni, .in_valid_i(fq_valid && can_go && eng_ready), .in_ready_o(os_in_ready),
     .in_data_i({f_x, f_y, f_ovf, f_guard, f_eflags, f_rn}), .out_valid_o(os_valid),
     .out_ready_i(out_ready_i && flt_valid), .out_data_o(os_data)
   );
-  // The engine of the oldest pixel in flight: cur_q with both, the only one otherwise.
-  logic out_ewa;
-  assign out_ewa     = Both ? cur_q : (HasEwa != 0);
-  assign flt_valid   = out_ewa ? ewa_valid : bil_valid;
+  // cur_q is the engine of the oldest pixel in flight (set when it accepted its first).
+  logic eng_in_valid;
+  assign eng_in_valid = fq_valid && can_go && os_in_ready;
+  assign flt_valid   = cur_q == EngEwa ? ewa_valid : cur_q == EngTri ? tri_valid : bil_valid;
   assign out_valid_o = flt_valid && os_valid;
   assign fire_out    = out_valid_o && out_ready_i;
   assign {x_o, y_o, pflags_o, eflags_o, rn_o} = os_data;
-  assign rgba_o      = out_ewa ? ewa_rgba : bil_rgba;
-  // Only the engine with pixels in flight reads texels (cur_q is set when it accepts its first).
-  assign tex_req_o   = out_ewa ? ewa_req : bil_req;
-  assign tex_addr_o  = out_ewa ? ewa_addr : bil_addr;
+  assign rgba_o      = cur_q == EngEwa ? ewa_rgba : cur_q == EngTri ? tri_rgba : bil_rgba;
+  // Only the engine with pixels in flight reads texels.
+  assign tex_req_o   = cur_q == EngEwa ? ewa_req : cur_q == EngTri ? tri_req : bil_req;
+  assign tex_addr_o  = cur_q == EngEwa ? ewa_addr : cur_q == EngTri ? tri_addr : bil_addr;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      cur_q      <= 1'b0;
+      cur_q      <= EngFirst;
       inflight_q <= '0;
     end else begin
-      if (fire_flt) cur_q <= sel_ewa;
+      if (fire_flt) cur_q <= sel;
       inflight_q <= inflight_q + {1'b0, fire_flt} - {1'b0, fire_out};
     end
   end
 
-  logic [3:0]                           ewa_level;
+  logic [3:0]                           ewa_level, tri_level;
   logic [tu_formats_pkg::EwaCountW-1:0] ewa_visited, ewa_inside;
   logic [4:0]                           ewa_flags;
   if (HasEwa != 0) begin : g_ewa
     tu_ewa u_ewa (
-      .clk_i, .rst_ni, .in_valid_i(fq_valid && can_go && os_in_ready && sel_ewa), .in_ready_o(ewa_in_ready),
+      .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngEwa), .in_ready_o(ewa_in_ready),
       .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
       .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh),
       .clamp_i(f_clamp), .wsrc_i(f_wsrc), .cap_i(f_cap),
       .tex_req_o(ewa_req), .tex_addr_o(ewa_addr), .tex_data_i,
-      .out_valid_o(ewa_valid), .out_ready_i(out_ready_i && os_valid && out_ewa),
+      .out_valid_o(ewa_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngEwa),
       .rgba_o(ewa_rgba), .level_o(ewa_level), .visited_o(ewa_visited), .inside_o(ewa_inside),
       .flags_o(ewa_flags)
     );
@@ -355,14 +364,14 @@ module tu_texture_unit #(
     assign ewa_inside   = '0;
     assign ewa_flags    = '0;
     logic unused_ewa;
-    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_wsrc, f_cap};
+    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_wsrc, f_cap};
   end
   if (HasBilinear != 0) begin : g_bilinear
     tu_bilinear u_bil (
-      .clk_i, .rst_ni, .in_valid_i(fq_valid && can_go && os_in_ready && !sel_ewa), .in_ready_o(bil_in_ready),
-      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh), .clamp_i(f_clamp),
-      .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i,
-      .out_valid_o(bil_valid), .out_ready_i(out_ready_i && os_valid && !out_ewa), .rgba_o(bil_rgba)
+      .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngBil), .in_ready_o(bil_in_ready),
+      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .level_i(4'd0), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh),
+      .clamp_i(f_clamp), .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i,
+      .out_valid_o(bil_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngBil), .rgba_o(bil_rgba)
     );
   end else begin : g_no_bilinear
     assign bil_in_ready = 1'b0;
@@ -371,11 +380,29 @@ module tu_texture_unit #(
     assign bil_addr     = '0;
     assign bil_rgba     = '0;
   end
-  // Bilinear pixels: level 0, four texels, no EWA flags (the C model's records).
-  assign level_o   = out_ewa ? ewa_level : '0;
-  assign visited_o = out_ewa ? ewa_visited : tu_formats_pkg::EwaCountW'(4);
-  assign inside_o  = out_ewa ? ewa_inside : '0;
-  assign flags_o   = out_ewa ? ewa_flags : '0;
+  if (HasTriFilter != 0) begin : g_trilinear
+    tu_trilinear u_tri (
+      .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngTri), .in_ready_o(tri_in_ready),
+      .u_i(f_u), .v_i(f_v), .lod_i(f_lod), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh),
+      .clamp_i(f_clamp), .tex_req_o(tri_req), .tex_addr_o(tri_addr), .tex_data_i,
+      .out_valid_o(tri_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngTri), .rgba_o(tri_rgba),
+      .level_o(tri_level)
+    );
+  end else begin : g_no_trilinear
+    assign tri_in_ready = 1'b0;
+    assign tri_valid    = 1'b0;
+    assign tri_req      = 1'b0;
+    assign tri_addr     = '0;
+    assign tri_rgba     = '0;
+    assign tri_level    = '0;
+    logic unused_tri;
+    assign unused_tri = ^f_lod;  // the LOD feeds tu_ewa and tu_trilinear only
+  end
+  // Bilinear pixels: level 0, four texels; trilinear: floor(lod), eight; no EWA flags.
+  assign level_o   = cur_q == EngEwa ? ewa_level : cur_q == EngTri ? tri_level : '0;
+  assign visited_o = cur_q == EngEwa ? ewa_visited : tu_formats_pkg::EwaCountW'(cur_q == EngTri ? 8 : 4);
+  assign inside_o  = cur_q == EngEwa ? ewa_inside : '0;
+  assign flags_o   = cur_q == EngEwa ? ewa_flags : '0;
 
   logic unused;
   assign unused = ^{b2_eexp, b2_fm, b2_fexp, ex_pix[PixW-1 -: XW]};  // x slot: filled per pixel

@@ -136,6 +136,30 @@ TEST(TextureUnitRtl, MixedFiltersPerSpan) {
               (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
 }
 
+// The trilinear engine (tu_trilinear: tu_bilinear at floor(lod) and the next level, blended by
+// the lod's fraction) == tex::trilinear on every pixel, every span; then ground trilinear and wall
+// EWA (the engines take turns); cycles = ewa::stream_cycles stall-free.
+TEST(TextureUnitRtl, TrilinearEqualsCModel) {
+  auto s = small_scene();
+  cosim::RtlRenderOptions o;
+  o.filter = scene::Filter::Trilinear;
+  o.stall_prob = 0.3;
+  const auto r = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r.ok()) << r.first_mismatch;
+  o.stall_prob = 0;
+  const auto q = cosim::render_rtl(s, o);
+  EXPECT_TRUE(q.ok()) << q.first_mismatch;
+  EXPECT_EQ(q.cycles, q.predicted_cycles);
+  s.materials.at("ground").filter = scene::Filter::Trilinear;
+  o.filter.reset();
+  const auto m = cosim::render_rtl(s, o);
+  EXPECT_TRUE(m.ok()) << m.first_mismatch;
+  EXPECT_EQ(m.cycles, m.predicted_cycles);
+  std::printf("trilinear: %zu px, %llu cycles = predicted %llu; ground trilinear + wall EWA: %llu = %llu\n",
+              q.frame.pixels.size(), (unsigned long long)q.cycles, (unsigned long long)q.predicted_cycles,
+              (unsigned long long)m.cycles, (unsigned long long)m.predicted_cycles);
+}
+
 // The default scene with its relief (wall: adaptive POM, 32 layers) through the full unit's
 // relief stage: every pixel == render_cmodel with relief (colour, shifted uv's filter result,
 // layers used), 30% stalls; the wall's pixels are really shifted (layers > 0).

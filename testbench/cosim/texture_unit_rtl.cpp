@@ -87,16 +87,19 @@ Row sample(V& d) {
 RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   using Coefs = persp::Unit::Coefs;
   const int w = s.camera.width, h = s.camera.height;
-  // Each material's filter on this unit.
-  std::map<std::string, bool> ewa_of;
+  // Each material's filter engine on this unit.
+  std::map<std::string, ewa::Engine> engine_of;
   for (const auto& [name, m] : s.materials) {
     const scene::Filter f = o.filter.value_or(m.filter);
-    if (f != scene::Filter::Ewa && f != scene::Filter::Bilinear)
+    if (f == scene::Filter::Nearest)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: the RTL texture unit filters with " +
-                                  "ewa or bilinear, not " + std::string(scene::to_string(f)));
-    if (f == scene::Filter::Ewa && !o.has_ewa)
-      throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: ewa, but the unit is bilinear-only");
-    ewa_of[name] = f == scene::Filter::Ewa;
+                                  "ewa, trilinear or bilinear, not nearest");
+    if (f != scene::Filter::Bilinear && !o.has_ewa)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: " + std::string(scene::to_string(f)) +
+                                  ", but the unit is bilinear-only");
+    engine_of[name] = f == scene::Filter::Ewa         ? ewa::Engine::Ewa
+                      : f == scene::Filter::Trilinear ? ewa::Engine::Trilinear
+                                                      : ewa::Engine::Bilinear;
   }
   if (o.relief && !o.has_ewa)
     throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
@@ -189,8 +192,8 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       r[kClamp] = ob.tex.wrap == tex::Wrap::Clamp;
       r[kWsrc] = static_cast<uint64_t>(o.weights.value_or(m.weights));
       r[kCap] = ewa::kDefaultMaxTexels;
-      const bool span_ewa = ewa_of.at(s.objects[static_cast<size_t>(c.object)].material);
-      r[kFilt] = span_ewa;
+      const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(c.object)].material);
+      r[kFilt] = static_cast<uint64_t>(eng);
       if (ob.maps) {
         const auto& rel = *m.relief;
         const pom::View q = relief::quantise({}, rel.scale);
@@ -218,19 +221,19 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       }
       spans.push_back(r);
       for (int px = x; px <= x1; ++px, ++pix) {
-        if (!span_ewa || pix >= expect.pixels.size()) {
-          ewa::PixelCost pc;
-          pc.bilinear = true;
-          costs.push_back(pc);
-          continue;
-        }
-        const auto& rec = expect.pixels[pix];
         ewa::fx::In in;
         in.b2 = ellipse::fx::analytic(ellipse::fx::make_in(k, px, y, static_cast<uint32_t>(r[kLaniso]),
                                                            static_cast<uint32_t>(top)));
-        ewa::PixelCost pc = ewa::pixel_cost(in, static_cast<int>(rec.lod), rec.ewa_flags,
-                                            static_cast<uint64_t>(rec.texels), top);
-        pc.guard = persp::Unit::pixel(persp::Unit::direct(k, px, y)).flag;
+        const bool guard = persp::Unit::pixel(persp::Unit::direct(k, px, y)).flag;
+        ewa::PixelCost pc;
+        if (eng == ewa::Engine::Ewa && pix < expect.pixels.size()) {
+          const auto& rec = expect.pixels[pix];
+          pc = ewa::pixel_cost(in, static_cast<int>(rec.lod), rec.ewa_flags, static_cast<uint64_t>(rec.texels), top);
+        }
+        pc.engine = eng;
+        pc.guard = guard;
+        // Trilinear: one bilinear pass for a guard pixel or a lod at the top level.
+        pc.one_level = guard || static_cast<int>(in.b2.lod >> fmt::kTexLodF) >= top;
         costs.push_back(pc);
       }
       x = x1 + 1;
@@ -294,14 +297,17 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (i < expect.pixels.size()) {
       const auto& e = expect.pixels[i];
       rec.object = e.object, rec.u = e.u, rec.v = e.v;
-      // Bilinear pixels: the unit reports level 0, four texels, no EWA flags (the C model's records
-      // of those are its own bookkeeping, not compared).
-      const bool ewa_px = ewa_of.at(s.objects[static_cast<size_t>(e.object)].material);
+      // Bilinear / trilinear pixels: the unit reports four / eight texels and no EWA flags (the C
+      // model's level and texel records of those are its own bookkeeping: compared is the engine
+      // that filtered, and the colour).
+      const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(e.object)].material);
       const bool same = rec.x == e.x && rec.y == e.y && rec.color == e.color && rec.b2_flags == e.b2_flags &&
                         rec.relief_n == e.relief_n &&
-                        (ewa_px ? rec.lod == e.lod && rec.texels == e.texels &&
-                                      rec.texels_inside == e.texels_inside && rec.ewa_flags == e.ewa_flags
-                                : rec.lod == 0 && rec.texels == 4 && rec.texels_inside == 0 && rec.ewa_flags == 0);
+                        (eng == ewa::Engine::Ewa
+                             ? rec.lod == e.lod && rec.texels == e.texels && rec.texels_inside == e.texels_inside &&
+                                   rec.ewa_flags == e.ewa_flags
+                             : rec.texels == (eng == ewa::Engine::Trilinear ? 8 : 4) && rec.texels_inside == 0 &&
+                                   rec.ewa_flags == 0);
       if (!same) {
         if (out.mismatches == 0) {
           char buf[256];

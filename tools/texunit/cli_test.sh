@@ -36,16 +36,17 @@ case $case in
     grep -q "localparam bit HasEwa = 1'b0;" "$tmp/tu_unit_cfg_pkg.sv" || fail "HasEwa"
     grep -q "localparam bit HasRelief = 1'b0;" "$tmp/tu_unit_cfg_pkg.sv" || fail "HasRelief"
     grep -q "localparam bit HasBilinear = 1'b1;" "$tmp/tu_unit_cfg_pkg.sv" || fail "HasBilinear"
+    grep -q "localparam bit HasTriFilter = 1'b0;" "$tmp/tu_unit_cfg_pkg.sv" || fail "HasTriFilter"
     # Exact scene cycles (texture path): bilinear on every span is cheaper than the authored EWA.
     [ "$(val "$tmp/p.json" "0 < d['scene_cycles']['specialised'] < d['scene_cycles']['full']")" = True ] || fail "scene cycles"
     # The package lints (-Wall) as the RTL top would read it.
     cat >"$tmp/tu_cfg_user.sv" <<'SV'
 module tu_cfg_user (
-  output logic [5:0]  has_o,
+  output logic [6:0]  has_o,
   output logic [2:0]  wsrc_o,
   output logic [31:0] sizes_o
 );
-  assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasRelief,
+  assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasTriFilter, tu_unit_cfg_pkg::HasRelief,
                   tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax};
   assign wsrc_o = tu_unit_cfg_pkg::WeightSources;
   assign sizes_o = tu_unit_cfg_pkg::PomMaxLayers + tu_unit_cfg_pkg::WtabLog2N + tu_unit_cfg_pkg::Wtab2dLog2N +

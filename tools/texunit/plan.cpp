@@ -201,7 +201,7 @@ json unit_json(const Unit& u) {
 
 // The RTL configuration: tu_unit_cfg_pkg, read by the RTL top.
 struct Config {
-  bool trilinear, ewa, bilinear, relief, pom, iter_parallax;
+  bool trilinear, ewa, bilinear, tri_filter, relief, pom, iter_parallax;
   int pom_max_layers, weight_sources, wtab_log2n, wtab2d_log2n, persp_lanes;
 };
 std::string package(const Config& c, const std::string& origin) {
@@ -212,6 +212,7 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam bit HasTrilinear = 1'b" << c.trilinear << ";  // footprint / LOD (tu_ellipse)\n"
      << "  localparam bit HasEwa = 1'b" << c.ewa << ";  // EWA texel walk, clip volume and weights\n"
      << "  localparam bit HasBilinear = 1'b" << c.bilinear << ";  // bilinear engine (per-span choice with EWA)\n"
+     << "  localparam bit HasTriFilter = 1'b" << c.tri_filter << ";  // trilinear engine (tu_trilinear)\n"
      << "  localparam bit HasRelief = 1'b" << c.relief << ";\n"
      << "  localparam bit HasPom = 1'b" << c.pom << ";  // tu_pom_layers + tu_pom_march\n"
      << "  localparam bit HasIterParallax = 1'b" << c.iter_parallax << ";\n"
@@ -381,43 +382,50 @@ int run(const Options& opt) {
     return 0;
   };
   const std::string origin = "`texunit plan " + opt.scene + "` from " + opt.report;
-  const Config planned{has_tri, has_ewa, !has_ewa, relief, pom, iterative, max_layers, weight_bit(weights),
+  const Config planned{has_tri, has_ewa, filter == "bilinear", filter == "trilinear", relief, pom, iterative, max_layers, weight_bit(weights),
                        log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1};
   // The full unit: everything in, relief up to the scene format's 256 layers.
-  const Config everything{true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes};
+  const Config everything{true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes};
 
   // 5. Scene cycles of the RTL texture unit (texture path), from the exact cycle model
   //    ewa::stream_cycles on the bit-accurate C-model render's per-pixel work (equal to Verilator:
   //    TextureUnitRtl.CyclesMatchPrediction / MixedFiltersPerSpan). The full unit filters each
-  //    material as authored (nearest / trilinear materials: EWA, the full unit's best); the
-  //    specialised unit with the plan's filter on every span.
-  auto scene_cycles = [&](std::function<bool(const scene::Material&)> bilinear, bool relief_stage,
-                          std::optional<scene::WeightSource> weights) -> std::optional<uint64_t> {
+  //    material as authored (nearest, which the RTL unit does not have: EWA), the specialised
+  //    unit with the plan's filter on every span.
+  auto scene_cycles = [&](std::function<scene::Filter(const scene::Material&)> filter_of, bool relief_stage,
+                          std::optional<scene::WeightSource> weights) -> uint64_t {
     scene::Scene t = scene::without_relief(s);
-    for (auto& [name, m] : t.materials) m.filter = bilinear(m) ? scene::Filter::Bilinear : scene::Filter::Ewa;
+    for (auto& [name, m] : t.materials) m.filter = filter_of(m);
     render::CmodelOptions o = render::texture_path_only();
     o.weights = weights;
     const render::Frame fr = render::render_cmodel(t, std::nullopt, o);
     const auto wl = sysmodel::scene_workload(t, fr);
+    std::vector<int> top_level;  // per object: its texture's top mip level
+    for (const auto& ob : t.objects)
+      top_level.push_back(scene::build_texture(t, t.materials.at(ob.material).texture).num_levels() - 1);
     std::vector<ewa::PixelCost> costs;
     for (size_t i = 0; i < wl.pixels.size(); ++i) {
       const auto& w = wl.pixels[i];
+      const auto& rec = fr.pixels[i];
+      const size_t obj = static_cast<size_t>(rec.object);
+      const scene::Filter f = t.materials.at(t.objects[obj].material).filter;
       ewa::PixelCost c{static_cast<int>(w.levels), w.texels, w.no_weight, w.guard};
-      c.bilinear = t.materials.at(t.objects[static_cast<size_t>(fr.pixels[i].object)].material).filter ==
-                   scene::Filter::Bilinear;
+      c.engine = f == scene::Filter::Ewa ? ewa::Engine::Ewa
+                 : f == scene::Filter::Trilinear ? ewa::Engine::Trilinear : ewa::Engine::Bilinear;
+      if (c.engine == ewa::Engine::Trilinear) {
+        // One bilinear pass at the top level (or for a B1-guard pixel, recorded with 1 texel).
+        c.one_level = rec.texels == 1 || static_cast<int>(std::floor(rec.lod)) >= top_level[obj];
+      }
       costs.push_back(c);
     }
     return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage)));
   };
-  const std::optional<uint64_t> full_cycles =
-      scene_cycles([](const scene::Material& m) { return m.filter == scene::Filter::Bilinear; }, true, std::nullopt);
-  std::optional<uint64_t> spec_cycles;  // trilinear: no RTL engine to model
-  if (filter != "trilinear")
-    spec_cycles = scene_cycles([&](const scene::Material&) { return filter == "bilinear"; }, relief,
-                               weights ? engine_source(*weights) : std::nullopt);
-  auto cycles_json = [](const std::optional<uint64_t>& c) {
-    return c ? json(*c) : json("not modelled: no trilinear engine in the RTL unit");
-  };
+  auto authored = [](const scene::Material& m) { return m.filter == scene::Filter::Nearest ? scene::Filter::Ewa : m.filter; };
+  const scene::Filter planned_filter = filter == "bilinear" ? scene::Filter::Bilinear
+                                       : filter == "trilinear" ? scene::Filter::Trilinear : scene::Filter::Ewa;
+  const uint64_t full_cycles = scene_cycles(authored, true, std::nullopt);
+  const uint64_t spec_cycles = scene_cycles([&](const scene::Material&) { return planned_filter; },
+                                                           relief, weights ? engine_source(*weights) : std::nullopt);
 
   const size_t px = bil.pixels.size();
   json out = {{"scene", s.source},
@@ -438,7 +446,7 @@ int run(const Options& opt) {
               {"clip_volume", clip ? json(clip->name()) : json(nullptr)},
               {"specialised", unit_json(spec)},
               {"full", unit_json(full)},
-              {"scene_cycles", {{"specialised", cycles_json(spec_cycles)}, {"full", cycles_json(full_cycles)},
+              {"scene_cycles", {{"specialised", spec_cycles}, {"full", full_cycles},
                                 {"model", "ewa::stream_cycles on the C-model render (texture path): equal to the RTL"}}},
               {"area_note", "cells are the sum of the blocks' Yosys cells (each block synthesised alone)"}};
   // Everything is decided before anything is written.
@@ -461,18 +469,17 @@ int run(const Options& opt) {
                            weights->name().c_str(), weight_render_db(*weights),
                            render_db.count(weights) ? "C-model EWA render vs float EWA, texture path" : "20 log10(1/rms)",
                            clip->name().c_str(), weight_db(*clip));
-  auto cyc = [&](const std::optional<uint64_t>& c) {
-    return c ? fmt("%.0f", double(*c)) + " (" + fmt("%.2f", double(*c) / double(std::max<size_t>(1, px))) + "/px)"
-             : std::string("not modelled");
+  auto cyc = [&](uint64_t c) {
+    return fmt("%.0f", double(c)) + " (" + fmt("%.2f", double(c) / double(std::max<size_t>(1, px))) + "/px)";
   };
   std::printf("\n%-12s %10s %6s %13s %22s %12s\n", "unit", "latency", "II", "texels/pixel", "scene cycles", "cells (sum)");
-  for (const auto& [name, u, c] : {std::tuple<const char*, const Unit*, const std::optional<uint64_t>*>{"specialised", &spec, &spec_cycles},
+  for (const auto& [name, u, c] : {std::tuple<const char*, const Unit*, const uint64_t*>{"specialised", &spec, &spec_cycles},
                                    {"full", &full, &full_cycles}})
     std::printf("%-12s %10lld %6.2f %13.2f %22s %12s\n", name, static_cast<long long>(u->latency()), u->ii(),
                 u->texels_per_pixel, cyc(*c).c_str(), u->cells_measured() ? fmt("%.0f", u->cells()).c_str() : "not measured");
   std::printf("scene cycles: the RTL texture unit on the scene's texture path, exact cycle model (ewa::stream_cycles\n"
               "  on the C-model render's per-pixel work; = Verilator); the full unit filters each material as\n"
-              "  authored, the specialised one with the plan's filter (trilinear: not modelled, no RTL engine)\n"
+              "  authored (nearest: EWA), the specialised one with the plan's filter on every span\n"
               "cells: sum of the blocks' Yosys cells (each block synthesised alone; texel fetch not included)\n");
   return 0;
 }

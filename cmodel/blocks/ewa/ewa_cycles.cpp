@@ -28,32 +28,42 @@ int walk_cycles(const PixelCost& c) {
 
 uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival,
                        const EngineParams& p) {
-  uint64_t setup_free = first_arrival, walker_free = 0, bil_free = first_arrival, last_out = 0;
-  bool prev_bil = false;
+  uint64_t setup_free = first_arrival, walker_free = 0, last_out = 0;
+  uint64_t bil_free = first_arrival, tri_free = first_arrival;
   for (size_t i = 0; i < px.size(); ++i) {
     const PixelCost& c = px[i];
     // An engine switch waits for the other engine's last output.
-    const uint64_t drained = i > 0 && prev_bil != c.bilinear ? last_out + 1 : 0;
-    if (c.bilinear) {
-      const uint64_t a = std::max(bil_free, drained);
-      last_out = a + 6;
-      bil_free = a + 7;
-    } else {
-      const uint64_t a = std::max(setup_free, drained);                // accept
-      const uint64_t h = std::max(a + static_cast<uint64_t>(setup_cycles(c, p)), walker_free);
-      const uint64_t o = h + static_cast<uint64_t>(walk_cycles(c));    // output valid and taken
-      setup_free = h + 1;
-      walker_free = o + 1;
-      last_out = o;
+    const uint64_t drained = i > 0 && px[i - 1].engine != c.engine ? last_out + 1 : 0;
+    switch (c.engine) {
+      case Engine::Bilinear: {
+        const uint64_t a = std::max(bil_free, drained);
+        last_out = a + 6;
+        bil_free = a + 7;
+        break;
+      }
+      case Engine::Trilinear: {
+        const uint64_t a = std::max(tri_free, drained);
+        last_out = a + (c.one_level ? 8 : 15);
+        tri_free = last_out + 1;
+        break;
+      }
+      case Engine::Ewa: {
+        const uint64_t a = std::max(setup_free, drained);                // accept
+        const uint64_t h = std::max(a + static_cast<uint64_t>(setup_cycles(c, p)), walker_free);
+        const uint64_t o = h + static_cast<uint64_t>(walk_cycles(c));    // output valid and taken
+        setup_free = h + 1;
+        walker_free = o + 1;
+        last_out = o;
+        break;
+      }
     }
-    prev_bil = c.bilinear;
   }
   return px.empty() ? 0 : last_out + 1;
 }
 
 uint64_t bilinear_stream_cycles(uint64_t pixels, uint64_t first_arrival) {
   PixelCost c;
-  c.bilinear = true;
+  c.engine = Engine::Bilinear;
   return stream_cycles(std::vector<PixelCost>(pixels, c), first_arrival);
 }
 

@@ -24,12 +24,16 @@ struct EngineParams {
   int root_w = 16;  // radicand root bits (tu_ewa_setup RootW)
 };
 
+// The texture unit's filter engines (tu_texture_unit filt_i codes).
+enum class Engine { Bilinear = 0, Ewa = 1, Trilinear = 2 };
+
 struct PixelCost {
   int levels = 1;          // levels tried (1 + cap fallbacks)
   uint64_t box = 1;        // texels walked
   bool no_weight = false;  // empty weight sum: nearest-texel path
   bool guard = false;      // B1 guard pixel (render engines): one texel, no set-up or walk
-  bool bilinear = false;   // filtered by the bilinear engine (texture-unit top with both engines)
+  Engine engine = Engine::Ewa;  // the texture-unit engine that filters the pixel
+  bool one_level = false;  // trilinear: one bilinear pass (B1 guard, or the lod at the top level)
 };
 
 // Per-pixel counts of the C model's result.
@@ -42,9 +46,10 @@ int walk_cycles(const PixelCost& c);  // hand-over to output valid
 // Clock cycles from the first input offered (cycle 0, arriving at the engine at `first_arrival`;
 // later pixels are always waiting) to the cycle after the last output: what the co-simulation
 // harness measures as sim_cycles with no stalls.
-// Pixels with `bilinear` go to the bilinear engine (accepted at a, output at a + 6, accepts again
-// at a + 7); the two engines take turns, so the first pixel after a switch is accepted the cycle
-// after the other engine's last output (tu_texture_unit with HasEwa and HasBilinear).
+// Pixels for the bilinear engine: accepted at a, output at a + 6, accepts again at a + 7; for the
+// trilinear engine: output at a + 15 (one pass: a + 8), accepts again the clock after. The engines
+// take turns, so the first pixel after a switch is accepted the cycle after the other engine's
+// last output (tu_texture_unit).
 uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival = 0,
                        const EngineParams& p = {});
 
