@@ -65,6 +65,16 @@ SV
     [ "$(val "$tmp/p.json" "d['filter'], d['relief']")" = "('ewa', True)" ] || fail "$(cat "$tmp/p.json")"
     [ "$(val "$tmp/p.json" "any('iter_parallax' in b for b in d['specialised']['blocks'])")" = True ] || fail "iterative relief"
     ;;
+  plan_hud_floor)
+    # Per-material filters: the floor needs EWA, the head-on HUD quad bilinear; no trilinear or
+    # relief hardware; the plan's per-span filters beat the authored EWA-everywhere in cycles.
+    "$tu" plan docs/scenes/hud_floor.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
+    [ "$(val "$tmp/p.json" "sorted(d['filters'].items())")" = "[('floor', 'ewa'), ('hud', 'bilinear')]" ] || fail "$(cat "$tmp/p.json")"
+    for kv in "HasEwa = 1'b1" "HasBilinear = 1'b1" "HasTriFilter = 1'b0" "HasRelief = 1'b0"; do
+      grep -q "localparam bit $kv;" "$tmp/cfg.sv" || fail "$kv"
+    done
+    [ "$(val "$tmp/p.json" "d['scene_cycles']['specialised'] < d['scene_cycles']['full_as_authored']")" = True ] || fail "cycles"
+    ;;
   plan_too_tight)
     sed 's/"min_psnr_db": 40/"min_psnr_db": 100/' docs/scenes/corridor.json >"$tmp/tight.json"
     set +e

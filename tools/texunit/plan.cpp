@@ -88,10 +88,13 @@ double quantile(std::vector<double> v, double q) {
 }
 
 // PSNR (RGB, 8-bit peak) over the pixels both frames cover: the background would inflate it.
-double psnr_covered(const render::Frame& a, const render::Frame& b) {
+// PSNR over a's covered pixels (those of objects `keep` accepts, all by default).
+double psnr_covered(const render::Frame& a, const render::Frame& b,
+                    const std::function<bool(int object)>& keep = {}) {
   double se = 0;
   size_t n = 0;
   for (const auto& p : a.pixels) {
+    if (keep && !keep(p.object)) continue;
     const auto& c = a.image.at(p.x, p.y);
     const auto& d = b.image.at(p.x, p.y);
     for (int k = 0; k < 3; ++k) {
@@ -282,31 +285,54 @@ int run(const Options& opt) {
     hist_aniso[k] = hist_aniso.value(k, 0) + 1;
   }
 
-  // 2. Filter: the cheapest whose footprint gate passes and whose render meets min_psnr_db
-  //    against the float EWA reference.
+  // 2. Filter per material (each span picks its engine): the cheapest whose footprint gate passes
+  //    on the material's pixels and whose render meets min_psnr_db there against the float EWA
+  //    reference (each material meeting it, the scene does: its MSE is their pixel-weighted mean).
   const render::Frame ewa = render::render_ref(s, scene::Filter::Ewa);
-  std::string filter = "ewa", filter_why;
-  double filter_psnr = INFINITY;
-  const render::Frame* chosen_frame = &ewa;
   std::optional<render::Frame> tri;
-  if (q_lod <= kMinifyLod && q_aniso <= kIsoAniso) {
-    const double p = psnr_covered(bil, ewa);
-    filter_why += "bilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
-    if (p >= s.budget.min_psnr_db) filter = "bilinear", filter_psnr = p, chosen_frame = &bil;
-    else filter_why += "; ";
-  } else {
-    filter_why += "bilinear: footprint gate fails (p99 LOD " + fmt("%.2f", q_lod) + ", p99 anisotropy " + fmt("%.2f", q_aniso) + "); ";
-  }
-  if (filter == "ewa") {
-    if (q_aniso <= kIsoAniso) {
-      tri = render::render_ref(s, scene::Filter::Trilinear);
-      const double p = psnr_covered(*tri, ewa);
-      filter_why += "trilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
-      if (p >= s.budget.min_psnr_db) filter = "trilinear", filter_psnr = p, chosen_frame = &*tri;
+  std::map<std::string, std::string> mat_filter;
+  std::string filter_why;
+  for (const auto& [name, count] : material_pixels) {
+    auto mine = [&](int object) { return s.objects[static_cast<size_t>(object)].material == name; };
+    std::vector<double> ma, ml;
+    for (const auto& p : bil.pixels)
+      if (mine(p.object)) ma.push_back(p.aniso), ml.push_back(p.footprint_lod);
+    const double qa = quantile(ma, kQuantile), ql = quantile(ml, kQuantile);
+    std::string f = "ewa", why = name + ": ";
+    if (ql <= kMinifyLod && qa <= kIsoAniso) {
+      const double p = psnr_covered(bil, ewa, mine);
+      why += "bilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
+      if (p >= s.budget.min_psnr_db) f = "bilinear";
+      else why += "; ";
     } else {
-      filter_why += "trilinear: footprint gate fails (p99 anisotropy " + fmt("%.2f", q_aniso) + ")";
+      why += "bilinear: footprint gate fails (p99 LOD " + fmt("%.2f", ql) + ", p99 anisotropy " + fmt("%.2f", qa) + "); ";
     }
+    if (f == "ewa") {
+      if (qa <= kIsoAniso) {
+        if (!tri) tri = render::render_ref(s, scene::Filter::Trilinear);
+        const double p = psnr_covered(*tri, ewa, mine);
+        why += "trilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
+        if (p >= s.budget.min_psnr_db) f = "trilinear";
+      } else {
+        why += "trilinear: footprint gate fails (p99 anisotropy " + fmt("%.2f", qa) + ")";
+      }
+    }
+    mat_filter[name] = f;
+    filter_why += (filter_why.empty() ? "" : " | ") + why;
   }
+  auto uses = [&](const std::string& f) {
+    return std::any_of(mat_filter.begin(), mat_filter.end(), [&](const auto& kv) { return kv.second == f; });
+  };
+  // The scene's most capable filter names the unit's footprint path and its weights.
+  const std::string filter = uses("ewa") ? "ewa" : uses("trilinear") ? "trilinear" : "bilinear";
+  // The picture of the plan: each pixel from its material's filter; its PSNR against EWA.
+  render::Frame planned_frame = ewa;
+  for (const auto& p : planned_frame.pixels) {
+    const std::string& f = mat_filter.at(s.objects[static_cast<size_t>(p.object)].material);
+    if (f != "ewa") planned_frame.image.at(p.x, p.y) = (f == "bilinear" ? bil : *tri).image.at(p.x, p.y);
+  }
+  const double filter_psnr = psnr_covered(planned_frame, ewa);
+  const render::Frame* chosen_frame = filter == "ewa" ? &ewa : filter == "trilinear" ? &*tri : &bil;
 
   // 3. Blocks and variants from the measured table.
   const std::string psnr_field = s.source + ": /error_budget/min_psnr_db = " + fmt("%g", s.budget.min_psnr_db);
@@ -374,7 +400,7 @@ int run(const Options& opt) {
   full.texels_per_pixel = texels_per_pixel(ewa);
 
   // 4. RTL configuration.
-  const bool has_ewa = filter == "ewa", has_tri = filter != "bilinear";
+  const bool has_ewa = uses("ewa"), has_tri = filter != "bilinear";
   auto weight_bit = [&](const TRow* w) { return !w ? 0 : w->block == "gauss_weight" ? 1 : w->scheme == "weight_table_1d" ? 2 : 4; };
   auto log2n = [&](const std::string& scheme) {
     for (const TRow* r : weight_cands)
@@ -382,7 +408,7 @@ int run(const Options& opt) {
     return 0;
   };
   const std::string origin = "`texunit plan " + opt.scene + "` from " + opt.report;
-  const Config planned{has_tri, has_ewa, filter == "bilinear", filter == "trilinear", relief, pom, iterative, max_layers, weight_bit(weights),
+  const Config planned{has_tri, has_ewa, uses("bilinear"), uses("trilinear"), relief, pom, iterative, max_layers, weight_bit(weights),
                        log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1};
   // The full unit: everything in, relief up to the scene format's 256 layers.
   const Config everything{true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes};
@@ -421,11 +447,15 @@ int run(const Options& opt) {
     return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage)));
   };
   auto authored = [](const scene::Material& m) { return m.filter == scene::Filter::Nearest ? scene::Filter::Ewa : m.filter; };
-  const scene::Filter planned_filter = filter == "bilinear" ? scene::Filter::Bilinear
-                                       : filter == "trilinear" ? scene::Filter::Trilinear : scene::Filter::Ewa;
-  const uint64_t full_cycles = scene_cycles(authored, true, std::nullopt);
-  const uint64_t spec_cycles = scene_cycles([&](const scene::Material&) { return planned_filter; },
-                                                           relief, weights ? engine_source(*weights) : std::nullopt);
+  auto planned_filter = [&](const scene::Material& m) {
+    const auto it = mat_filter.find(m.name);  // a material without pixels: any engine the unit has
+    const std::string& f = it == mat_filter.end() ? filter : it->second;
+    return f == "bilinear" ? scene::Filter::Bilinear : f == "trilinear" ? scene::Filter::Trilinear : scene::Filter::Ewa;
+  };
+  const auto planned_weights = weights ? engine_source(*weights) : std::nullopt;
+  const uint64_t spec_cycles = scene_cycles(planned_filter, relief, planned_weights);
+  const uint64_t full_cycles = scene_cycles(planned_filter, true, planned_weights);  // the same picture
+  const uint64_t authored_cycles = scene_cycles(authored, true, std::nullopt);
 
   const size_t px = bil.pixels.size();
   json out = {{"scene", s.source},
@@ -435,6 +465,7 @@ int run(const Options& opt) {
                              {"anisotropy_histogram", hist_aniso}}},
               {"budget", {{"max_texel_err", s.budget.max_texel_err}, {"min_psnr_db", s.budget.min_psnr_db}}},
               {"filter", filter},
+              {"filters", mat_filter},
               {"filter_psnr_db", std::isinf(filter_psnr) ? json("reference") : json(filter_psnr)},
               {"filter_reasons", filter_why},
               {"relief", relief},
@@ -446,7 +477,7 @@ int run(const Options& opt) {
               {"clip_volume", clip ? json(clip->name()) : json(nullptr)},
               {"specialised", unit_json(spec)},
               {"full", unit_json(full)},
-              {"scene_cycles", {{"specialised", spec_cycles}, {"full", full_cycles},
+              {"scene_cycles", {{"specialised", spec_cycles}, {"full", full_cycles}, {"full_as_authored", authored_cycles},
                                 {"model", "ewa::stream_cycles on the C-model render (texture path): equal to the RTL"}}},
               {"area_note", "cells are the sum of the blocks' Yosys cells (each block synthesised alone)"}};
   // Everything is decided before anything is written.
@@ -462,7 +493,10 @@ int run(const Options& opt) {
   }
   std::printf("scene %s: %zu covered pixels; footprint p99 LOD %.2f, p99 anisotropy %.2f\n", s.source.c_str(), px, q_lod, q_aniso);
   std::printf("budget: max_texel_err %g texel, min_psnr_db %g dB\n", s.budget.max_texel_err, s.budget.min_psnr_db);
-  std::printf("filter: %s (%s)\n", filter.c_str(), filter_why.c_str());
+  std::string per_mat;
+  for (const auto& [name, f] : mat_filter) per_mat += (per_mat.empty() ? "" : ", ") + name + " " + f;
+  std::printf("filters: %s; the plan's picture %s against the float EWA\n  (%s)\n", per_mat.c_str(),
+              std::isinf(filter_psnr) ? "is" : (fmt("%.2f", filter_psnr) + " dB").c_str(), filter_why.c_str());
   std::printf("relief: %s\n", relief ? (pom && iterative ? "pom + iterative" : pom ? "pom" : "iterative") : "none (no relief hardware)");
   std::printf("persp: %s, max %.4g texel\n", persp->name().c_str(), persp->max_abs);
   if (weights) std::printf("weights: %s, %.2f dB (%s); clip volume: %s, %.1f dB (20 log10(1/rms))\n",
@@ -477,9 +511,11 @@ int run(const Options& opt) {
                                    {"full", &full, &full_cycles}})
     std::printf("%-12s %10lld %6.2f %13.2f %22s %12s\n", name, static_cast<long long>(u->latency()), u->ii(),
                 u->texels_per_pixel, cyc(*c).c_str(), u->cells_measured() ? fmt("%.0f", u->cells()).c_str() : "not measured");
+  std::printf("%-12s %10s %6s %13s %22s  (each material's own filter; nearest: EWA)\n", "full, authored", "", "", "",
+              cyc(authored_cycles).c_str());
   std::printf("scene cycles: the RTL texture unit on the scene's texture path, exact cycle model (ewa::stream_cycles\n"
-              "  on the C-model render's per-pixel work; = Verilator); the full unit filters each material as\n"
-              "  authored (nearest: EWA), the specialised one with the plan's filter on every span\n"
+              "  on the C-model render's per-pixel work; = Verilator); specialised and full with the plan's\n"
+              "  filter per material (the same picture, bit for bit)\n"
               "cells: sum of the blocks' Yosys cells (each block synthesised alone; texel fetch not included)\n");
   return 0;
 }
