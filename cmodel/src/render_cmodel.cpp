@@ -43,6 +43,16 @@ void shift_relief_fx(const scene::Scene& s, const Cover& c, const relief::Maps& 
 }
 }  // namespace
 
+ewa::Engine engine_of(scene::Filter f) {
+  switch (f) {
+    case scene::Filter::Nearest: return ewa::Engine::Nearest;
+    case scene::Filter::Bilinear: return ewa::Engine::Bilinear;
+    case scene::Filter::Trilinear: return ewa::Engine::Trilinear;
+    case scene::Filter::Ewa: return ewa::Engine::Ewa;
+  }
+  return ewa::Engine::Ewa;
+}
+
 uint32_t laniso_code(double max_aniso) {
   const double l = std::round(std::ldexp(std::log2(std::max(1.0, max_aniso)), fmt::kEllLogF));
   return static_cast<uint32_t>(std::min(l, std::ldexp(1.0, fmt::kEllAnisoW) - 1));

@@ -5,6 +5,7 @@ package tu_unit_cfg_pkg;
   localparam bit HasEwa = 1'b1;  // EWA texel walk, clip volume and weights
   localparam bit HasBilinear = 1'b1;  // bilinear engine (per-span choice with EWA)
   localparam bit HasTriFilter = 1'b1;  // trilinear engine (tu_trilinear)
+  localparam bit HasNearest = 1'b1;  // nearest engine (tu_nearest)
   localparam bit HasRelief = 1'b1;
   localparam bit HasPom = 1'b1;  // tu_pom_layers + tu_pom_march
   localparam bit HasIterParallax = 1'b1;

@@ -13,12 +13,13 @@
 module tu_texture_unit #(
   // Defaults from the unit configuration (rtl/0_pkg/tu_unit_cfg_pkg.sv: the full unit as committed;
   // `texunit plan SCENE --out rtl/0_pkg/tu_unit_cfg_pkg.sv` specialises it to a scene).
-  // Filter engines: EWA (tu_ewa), bilinear at level 0 (tu_bilinear), trilinear (tu_trilinear).
-  // Each span's filt_i picks one; a span asking for an engine the unit leaves out goes to the
-  // first present of EWA, trilinear, bilinear.
+  // Filter engines: EWA (tu_ewa), bilinear at level 0 (tu_bilinear), trilinear (tu_trilinear),
+  // nearest at level 0 (tu_nearest). Each span's filt_i picks one; a span asking for an engine the
+  // unit leaves out goes to the first present of EWA, trilinear, bilinear, nearest.
   parameter int unsigned HasEwa       = {31'b0, tu_unit_cfg_pkg::HasEwa},
   parameter int unsigned HasBilinear  = {31'b0, tu_unit_cfg_pkg::HasBilinear},
   parameter int unsigned HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
+  parameter int unsigned HasNearest   = {31'b0, tu_unit_cfg_pkg::HasNearest},
   // 1: relief stage (tu_relief_stage: POM, fixed or adaptive layers) between B1 and the filter
   parameter int unsigned HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
   parameter int unsigned FifoDepth = 4   // pixels buffered between B2 and the filter
@@ -56,7 +57,7 @@ module tu_texture_unit #(
   input  logic                                  tclamp_i,
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
-  input  logic [1:0]                            filt_i,  // material filter: 0 bilinear, 1 EWA, 2 trilinear
+  input  logic [1:0]                            filt_i,  // material filter: 0 bilinear, 1 EWA, 2 trilinear, 3 nearest
   // material relief (POM): on, adaptive layers, layers (1..63), height scale S, depth map
   input  logic                                  rel_i,
   input  logic                                  radapt_i,
@@ -291,25 +292,42 @@ module tu_texture_unit #(
   // stay in order and only one engine drives the texel port. Switches happen at material changes
   // only (ewa::stream_cycles counts the drain).
   localparam int unsigned OsW = 2 * XW + 2 + 5 + tu_formats_pkg::PomNW;
-  localparam logic [1:0] EngBil = 2'd0, EngEwa = 2'd1, EngTri = 2'd2;
-  localparam logic [1:0] EngFirst = (HasEwa != 0) ? EngEwa : (HasTriFilter != 0) ? EngTri : EngBil;
+  localparam logic [1:0] EngBil = 2'd0, EngEwa = 2'd1, EngTri = 2'd2, EngNst = 2'd3;
+  localparam logic [1:0] EngFirst = (HasEwa != 0) ? EngEwa : (HasTriFilter != 0) ? EngTri :
+                                    (HasBilinear != 0) ? EngBil : EngNst;
   logic          os_in_ready, os_valid, flt_valid, eng_ready, can_go, fire_flt, fire_out;
   logic [1:0]    sel, cur_q;
   logic [1:0]    inflight_q;  // <= 2: the sideband FIFO's depth bounds the pixels in flight
   logic [OsW-1:0] os_data;
   logic          ewa_in_ready, ewa_valid, bil_in_ready, bil_valid, tri_in_ready, tri_valid;
-  logic          ewa_req, bil_req, tri_req;
-  logic [AW-1:0] ewa_addr, bil_addr, tri_addr;
-  logic [31:0]   ewa_rgba, bil_rgba, tri_rgba;
+  logic          nst_in_ready, nst_valid;
+  logic          ewa_req, bil_req, tri_req, nst_req;
+  logic [AW-1:0] ewa_addr, bil_addr, tri_addr, nst_addr;
+  logic [31:0]   ewa_rgba, bil_rgba, tri_rgba, nst_rgba;
   always_comb begin
     unique case (f_filt)
       EngEwa:  sel = (HasEwa != 0) ? EngEwa : EngFirst;
       EngTri:  sel = (HasTriFilter != 0) ? EngTri : EngFirst;
+      EngNst:  sel = (HasNearest != 0) ? EngNst : EngFirst;
       default: sel = (HasBilinear != 0) ? EngBil : EngFirst;
     endcase
   end
   assign can_go    = inflight_q == '0 || cur_q == sel;
-  assign eng_ready = sel == EngEwa ? ewa_in_ready : sel == EngTri ? tri_in_ready : bil_in_ready;
+  logic [3:0]    in_ready_of, valid_of, req_of;  // indexed by engine
+  logic [AW-1:0] cur_addr;
+  logic [31:0]   cur_rgba;
+  assign in_ready_of = {nst_in_ready, tri_in_ready, ewa_in_ready, bil_in_ready};
+  assign valid_of    = {nst_valid, tri_valid, ewa_valid, bil_valid};
+  assign req_of      = {nst_req, tri_req, ewa_req, bil_req};
+  always_comb begin  // (a case, not an array pattern: Yosys 0.23 parses the top for area)
+    unique case (cur_q)
+      EngEwa:  begin cur_addr = ewa_addr; cur_rgba = ewa_rgba; end
+      EngTri:  begin cur_addr = tri_addr; cur_rgba = tri_rgba; end
+      EngNst:  begin cur_addr = nst_addr; cur_rgba = nst_rgba; end
+      default: begin cur_addr = bil_addr; cur_rgba = bil_rgba; end
+    endcase
+  end
+  assign eng_ready = in_ready_of[sel];
   assign fq_ready  = can_go && eng_ready && os_in_ready;
   assign fire_flt  = fq_valid && fq_ready;
   tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
@@ -320,14 +338,14 @@ module tu_texture_unit #(
   // cur_q is the engine of the oldest pixel in flight (set when it accepted its first).
   logic eng_in_valid;
   assign eng_in_valid = fq_valid && can_go && os_in_ready;
-  assign flt_valid   = cur_q == EngEwa ? ewa_valid : cur_q == EngTri ? tri_valid : bil_valid;
+  assign flt_valid   = valid_of[cur_q];
   assign out_valid_o = flt_valid && os_valid;
   assign fire_out    = out_valid_o && out_ready_i;
   assign {x_o, y_o, pflags_o, eflags_o, rn_o} = os_data;
-  assign rgba_o      = cur_q == EngEwa ? ewa_rgba : cur_q == EngTri ? tri_rgba : bil_rgba;
+  assign rgba_o      = cur_rgba;
   // Only the engine with pixels in flight reads texels.
-  assign tex_req_o   = cur_q == EngEwa ? ewa_req : cur_q == EngTri ? tri_req : bil_req;
-  assign tex_addr_o  = cur_q == EngEwa ? ewa_addr : cur_q == EngTri ? tri_addr : bil_addr;
+  assign tex_req_o   = req_of[cur_q];
+  assign tex_addr_o  = cur_addr;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -398,9 +416,25 @@ module tu_texture_unit #(
     logic unused_tri;
     assign unused_tri = ^f_lod;  // the LOD feeds tu_ewa and tu_trilinear only
   end
-  // Bilinear pixels: level 0, four texels; trilinear: floor(lod), eight; no EWA flags.
+  if (HasNearest != 0) begin : g_nearest
+    tu_nearest u_nst (
+      .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngNst), .in_ready_o(nst_in_ready),
+      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh), .clamp_i(f_clamp),
+      .tex_req_o(nst_req), .tex_addr_o(nst_addr), .tex_data_i,
+      .out_valid_o(nst_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngNst), .rgba_o(nst_rgba)
+    );
+  end else begin : g_no_nearest
+    assign nst_in_ready = 1'b0;
+    assign nst_valid    = 1'b0;
+    assign nst_req      = 1'b0;
+    assign nst_addr     = '0;
+    assign nst_rgba     = '0;
+  end
+  // Bilinear pixels: level 0, four texels; trilinear: floor(lod), eight; nearest: level 0, one;
+  // no EWA flags.
   assign level_o   = cur_q == EngEwa ? ewa_level : cur_q == EngTri ? tri_level : '0;
-  assign visited_o = cur_q == EngEwa ? ewa_visited : tu_formats_pkg::EwaCountW'(cur_q == EngTri ? 8 : 4);
+  assign visited_o = cur_q == EngEwa ? ewa_visited
+                                     : tu_formats_pkg::EwaCountW'(cur_q == EngTri ? 8 : cur_q == EngNst ? 1 : 4);
   assign inside_o  = cur_q == EngEwa ? ewa_inside : '0;
   assign flags_o   = cur_q == EngEwa ? ewa_flags : '0;
 

@@ -6,6 +6,7 @@ module tu_texture_unit_sim #(
   parameter int unsigned HasEwa      = {31'b0, tu_unit_cfg_pkg::HasEwa},
   parameter int unsigned HasBilinear = {31'b0, tu_unit_cfg_pkg::HasBilinear},
   parameter int unsigned HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
+  parameter int unsigned HasNearest = {31'b0, tu_unit_cfg_pkg::HasNearest},
   parameter int unsigned HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
   parameter int unsigned Words  = 1 << tu_formats_pkg::TexRamLog2Words
 ) (
@@ -76,7 +77,8 @@ module tu_texture_unit_sim #(
   logic [63:0]                         view;
   logic [tu_formats_pkg::TexAddrW-1:0] d_addr;
   logic [31:0]                         d_word;
-  tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear), .HasTriFilter(HasTriFilter), .HasRelief(HasRelief)) u_tu (
+  tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear), .HasTriFilter(HasTriFilter), .HasNearest(HasNearest),
+                    .HasRelief(HasRelief)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,

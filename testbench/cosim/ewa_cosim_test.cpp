@@ -160,6 +160,26 @@ TEST(TextureUnitRtl, TrilinearEqualsCModel) {
               (unsigned long long)m.cycles, (unsigned long long)m.predicted_cycles);
 }
 
+// The nearest engine (tu_nearest) == tex::nearest, with stalls; ground nearest + wall trilinear
+// (two cheap engines taking turns): cycles = ewa::stream_cycles stall-free.
+TEST(TextureUnitRtl, NearestEqualsCModel) {
+  auto s = small_scene();
+  cosim::RtlRenderOptions o;
+  o.filter = scene::Filter::Nearest;
+  o.stall_prob = 0.3;
+  const auto r = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r.ok()) << r.first_mismatch;
+  s.materials.at("ground").filter = scene::Filter::Nearest;
+  s.materials.at("wall").filter = scene::Filter::Trilinear;
+  o.filter.reset();
+  o.stall_prob = 0;
+  const auto m = cosim::render_rtl(s, o);
+  EXPECT_TRUE(m.ok()) << m.first_mismatch;
+  EXPECT_EQ(m.cycles, m.predicted_cycles);
+  std::printf("nearest: %zu px; ground nearest + wall trilinear: %llu cycles = predicted %llu\n",
+              r.frame.pixels.size(), (unsigned long long)m.cycles, (unsigned long long)m.predicted_cycles);
+}
+
 // The default scene with its relief (wall: adaptive POM, 32 layers) through the full unit's
 // relief stage: every pixel == render_cmodel with relief (colour, shifted uv's filter result,
 // layers used), 30% stalls; the wall's pixels are really shifted (layers > 0).

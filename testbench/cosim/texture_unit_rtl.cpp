@@ -91,15 +91,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   std::map<std::string, ewa::Engine> engine_of;
   for (const auto& [name, m] : s.materials) {
     const scene::Filter f = o.filter.value_or(m.filter);
-    if (f == scene::Filter::Nearest)
-      throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: the RTL texture unit filters with " +
-                                  "ewa, trilinear or bilinear, not nearest");
     if (f != scene::Filter::Bilinear && !o.has_ewa)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: " + std::string(scene::to_string(f)) +
                                   ", but the unit is bilinear-only");
-    engine_of[name] = f == scene::Filter::Ewa         ? ewa::Engine::Ewa
-                      : f == scene::Filter::Trilinear ? ewa::Engine::Trilinear
-                                                      : ewa::Engine::Bilinear;
+    engine_of[name] = render::engine_of(f);
   }
   if (o.relief && !o.has_ewa)
     throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
@@ -297,7 +292,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (i < expect.pixels.size()) {
       const auto& e = expect.pixels[i];
       rec.object = e.object, rec.u = e.u, rec.v = e.v;
-      // Bilinear / trilinear pixels: the unit reports four / eight texels and no EWA flags (the C
+      // Bilinear / trilinear / nearest pixels: the unit reports 4 / 8 / 1 texels, no EWA flags (the C
       // model's level and texel records of those are its own bookkeeping: compared is the engine
       // that filtered, and the colour).
       const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(e.object)].material);
@@ -306,7 +301,8 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
                         (eng == ewa::Engine::Ewa
                              ? rec.lod == e.lod && rec.texels == e.texels && rec.texels_inside == e.texels_inside &&
                                    rec.ewa_flags == e.ewa_flags
-                             : rec.texels == (eng == ewa::Engine::Trilinear ? 8 : 4) && rec.texels_inside == 0 &&
+                             : rec.texels == (eng == ewa::Engine::Trilinear ? 8 : eng == ewa::Engine::Nearest ? 1 : 4) &&
+                                   rec.texels_inside == 0 &&
                                    rec.ewa_flags == 0);
       if (!same) {
         if (out.mismatches == 0) {

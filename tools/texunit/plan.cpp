@@ -204,7 +204,7 @@ json unit_json(const Unit& u) {
 
 // The RTL configuration: tu_unit_cfg_pkg, read by the RTL top.
 struct Config {
-  bool trilinear, ewa, bilinear, tri_filter, relief, pom, iter_parallax;
+  bool trilinear, ewa, bilinear, tri_filter, nearest, relief, pom, iter_parallax;
   int pom_max_layers, weight_sources, wtab_log2n, wtab2d_log2n, persp_lanes;
 };
 std::string package(const Config& c, const std::string& origin) {
@@ -216,6 +216,7 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam bit HasEwa = 1'b" << c.ewa << ";  // EWA texel walk, clip volume and weights\n"
      << "  localparam bit HasBilinear = 1'b" << c.bilinear << ";  // bilinear engine (per-span choice with EWA)\n"
      << "  localparam bit HasTriFilter = 1'b" << c.tri_filter << ";  // trilinear engine (tu_trilinear)\n"
+     << "  localparam bit HasNearest = 1'b" << c.nearest << ";  // nearest engine (tu_nearest)\n"
      << "  localparam bit HasRelief = 1'b" << c.relief << ";\n"
      << "  localparam bit HasPom = 1'b" << c.pom << ";  // tu_pom_layers + tu_pom_march\n"
      << "  localparam bit HasIterParallax = 1'b" << c.iter_parallax << ";\n"
@@ -408,16 +409,15 @@ int run(const Options& opt) {
     return 0;
   };
   const std::string origin = "`texunit plan " + opt.scene + "` from " + opt.report;
-  const Config planned{has_tri, has_ewa, uses("bilinear"), uses("trilinear"), relief, pom, iterative, max_layers, weight_bit(weights),
+  const Config planned{has_tri, has_ewa, uses("bilinear"), uses("trilinear"), false, relief, pom, iterative, max_layers, weight_bit(weights),
                        log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1};
   // The full unit: everything in, relief up to the scene format's 256 layers.
-  const Config everything{true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes};
+  const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes};
 
   // 5. Scene cycles of the RTL texture unit (texture path), from the exact cycle model
   //    ewa::stream_cycles on the bit-accurate C-model render's per-pixel work (equal to Verilator:
-  //    TextureUnitRtl.CyclesMatchPrediction / MixedFiltersPerSpan). The full unit filters each
-  //    material as authored (nearest, which the RTL unit does not have: EWA), the specialised
-  //    unit with the plan's filter on every span.
+  //    TextureUnitRtl.CyclesMatchPrediction / MixedFiltersPerSpan): the specialised and the full
+  //    unit with the plan's filter per material, and the full unit as authored.
   auto scene_cycles = [&](std::function<scene::Filter(const scene::Material&)> filter_of, bool relief_stage,
                           std::optional<scene::WeightSource> weights) -> uint64_t {
     scene::Scene t = scene::without_relief(s);
@@ -436,8 +436,7 @@ int run(const Options& opt) {
       const size_t obj = static_cast<size_t>(rec.object);
       const scene::Filter f = t.materials.at(t.objects[obj].material).filter;
       ewa::PixelCost c{static_cast<int>(w.levels), w.texels, w.no_weight, w.guard};
-      c.engine = f == scene::Filter::Ewa ? ewa::Engine::Ewa
-                 : f == scene::Filter::Trilinear ? ewa::Engine::Trilinear : ewa::Engine::Bilinear;
+      c.engine = render::engine_of(f);
       if (c.engine == ewa::Engine::Trilinear) {
         // One bilinear pass at the top level (or for a B1-guard pixel, recorded with 1 texel).
         c.one_level = rec.texels == 1 || static_cast<int>(std::floor(rec.lod)) >= top_level[obj];
@@ -446,7 +445,7 @@ int run(const Options& opt) {
     }
     return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage)));
   };
-  auto authored = [](const scene::Material& m) { return m.filter == scene::Filter::Nearest ? scene::Filter::Ewa : m.filter; };
+  auto authored = [](const scene::Material& m) { return m.filter; };
   auto planned_filter = [&](const scene::Material& m) {
     const auto it = mat_filter.find(m.name);  // a material without pixels: any engine the unit has
     const std::string& f = it == mat_filter.end() ? filter : it->second;
@@ -511,7 +510,7 @@ int run(const Options& opt) {
                                    {"full", &full, &full_cycles}})
     std::printf("%-12s %10lld %6.2f %13.2f %22s %12s\n", name, static_cast<long long>(u->latency()), u->ii(),
                 u->texels_per_pixel, cyc(*c).c_str(), u->cells_measured() ? fmt("%.0f", u->cells()).c_str() : "not measured");
-  std::printf("%-12s %10s %6s %13s %22s  (each material's own filter; nearest: EWA)\n", "full, authored", "", "", "",
+  std::printf("%-12s %10s %6s %13s %22s  (each material's own filter)\n", "full, authored", "", "", "",
               cyc(authored_cycles).c_str());
   std::printf("scene cycles: the RTL texture unit on the scene's texture path, exact cycle model (ewa::stream_cycles\n"
               "  on the C-model render's per-pixel work; = Verilator); specialised and full with the plan's\n"

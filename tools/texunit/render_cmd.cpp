@@ -20,10 +20,10 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
   r->add_option("--dump", a.dump, "CSV: one row per covered pixel (x,y,u,v,lod,texels,r,g,b,a)");
   r->add_option("--engine", a.engine,
                  "rendering engine: float reference, bit-accurate C model, or the Verilated "
-                 "texture-unit RTL (ewa, trilinear or bilinear; compared with the C model pixel by pixel)")
+                 "texture-unit RTL (compared with the C model pixel by pixel)")
       ->check(CLI::IsMember({"ref", "cmodel", "rtl"}));
   r->add_option("--rtl-unit", a.rtl_unit,
-                 "--engine rtl: the full unit (EWA, trilinear and bilinear engines, each material's filter per span) "
+                 "--engine rtl: the full unit (EWA, trilinear, bilinear and nearest engines, each material's filter per span) "
                  "or the bilinear-only unit (HasEwa = 0)")
       ->check(CLI::IsMember({"full", "bilinear"}));
   r->add_flag("--no-relief", a.no_relief,
@@ -55,8 +55,6 @@ int run_render(const RenderArgs& a) {
   render::Frame frame;
   bool ok = true;
   if (a.engine == "rtl") {
-    if (f && *f == scene::Filter::Nearest)
-      throw std::invalid_argument("--engine rtl: the RTL texture unit filters with ewa, trilinear or bilinear, not nearest");
     cosim::RtlRenderOptions ro;
     ro.has_ewa = a.rtl_unit == "full";
     ro.filter = f;
@@ -218,6 +216,7 @@ bool demo_render_rtl(const scene::Scene& relief, const render::Frame& relief_ref
                       {"ewa_table1d", true, scene::Filter::Ewa, scene::WeightSource::Table1d},
                       {"ewa_table2d", true, scene::Filter::Ewa, scene::WeightSource::Table2d},
                       {"trilinear", true, scene::Filter::Trilinear, std::nullopt},
+                      {"nearest", true, scene::Filter::Nearest, std::nullopt},
                       {"mixed", true, std::nullopt, scene::WeightSource::Formula},
                       {"bilinear", false, scene::Filter::Bilinear, scene::WeightSource::Formula},
                       {"ewa+relief", true, scene::Filter::Ewa, std::nullopt, true}};

@@ -29,7 +29,7 @@ int walk_cycles(const PixelCost& c) {
 uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival,
                        const EngineParams& p) {
   uint64_t setup_free = first_arrival, walker_free = 0, last_out = 0;
-  uint64_t bil_free = first_arrival, tri_free = first_arrival;
+  uint64_t bil_free = first_arrival, tri_free = first_arrival, nst_free = first_arrival;
   for (size_t i = 0; i < px.size(); ++i) {
     const PixelCost& c = px[i];
     // An engine switch waits for the other engine's last output.
@@ -39,6 +39,12 @@ uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival,
         const uint64_t a = std::max(bil_free, drained);
         last_out = a + 6;
         bil_free = a + 7;
+        break;
+      }
+      case Engine::Nearest: {
+        const uint64_t a = std::max(nst_free, drained);
+        last_out = a + 3;
+        nst_free = a + 4;
         break;
       }
       case Engine::Trilinear: {

@@ -25,7 +25,7 @@ struct EngineParams {
 };
 
 // The texture unit's filter engines (tu_texture_unit filt_i codes).
-enum class Engine { Bilinear = 0, Ewa = 1, Trilinear = 2 };
+enum class Engine { Bilinear = 0, Ewa = 1, Trilinear = 2, Nearest = 3 };
 
 struct PixelCost {
   int levels = 1;          // levels tried (1 + cap fallbacks)
@@ -47,7 +47,8 @@ int walk_cycles(const PixelCost& c);  // hand-over to output valid
 // later pixels are always waiting) to the cycle after the last output: what the co-simulation
 // harness measures as sim_cycles with no stalls.
 // Pixels for the bilinear engine: accepted at a, output at a + 6, accepts again at a + 7; for the
-// trilinear engine: output at a + 15 (one pass: a + 8), accepts again the clock after. The engines
+// trilinear engine: output at a + 15 (one pass: a + 8), accepts again the clock after; for the
+// nearest engine: output at a + 3, accepts again at a + 4. The engines
 // take turns, so the first pixel after a switch is accepted the cycle after the other engine's
 // last output (tu_texture_unit).
 uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival = 0,

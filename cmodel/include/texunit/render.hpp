@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ewa/ewa_cycles.hpp"
 #include "texunit/image.hpp"
 #include "texunit/scene.hpp"
 
@@ -69,6 +70,9 @@ inline CmodelOptions texture_path_only() {
 // log2(max anisotropy) as B2's laniso input (u(EllAnisoW).EllLogF, rounded, saturated); the RTL
 // render engine sets the same.
 uint32_t laniso_code(double max_aniso);
+
+// The RTL texture unit's engine for a material's filter (its filt_i code).
+ewa::Engine engine_of(scene::Filter f);
 Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter = {},
                     const CmodelOptions& opt = {});
 

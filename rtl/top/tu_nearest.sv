@@ -1,0 +1,62 @@
+// Nearest-texel filter at level 0 (the nearest engine of tu_texture_unit), exactly
+// tex::nearest(t, 0, u, v): texel (floor(u), floor(v)) of level 0, wrapped like the texture; a
+// B1-guard pixel: texel (0, 0) of the 1x1 top level (the texture's mean, as render_cmodel).
+// One read (1-cycle latency): accepted at t, output valid at t + 3, accepts again the clock after
+// its output is taken (ewa::stream_cycles).
+module tu_nearest (
+  input  logic                                clk_i,
+  input  logic                                rst_ni,
+  input  logic                                in_valid_i,
+  output logic                                in_ready_o,
+  input  logic [tu_formats_pkg::PerspUvW-1:0] u_i,
+  input  logic [tu_formats_pkg::PerspUvW-1:0] v_i,
+  input  logic                                guard_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0] base_i,
+  input  logic [3:0]                          lw_i,
+  input  logic [3:0]                          lh_i,
+  input  logic                                clamp_i,
+  output logic                                tex_req_o,
+  output logic [tu_formats_pkg::TexAddrW-1:0] tex_addr_o,
+  input  logic [31:0]                         tex_data_i,
+  output logic                                out_valid_o,
+  input  logic                                out_ready_i,
+  output logic [31:0]                         rgba_o
+);
+  localparam int unsigned UW = tu_formats_pkg::PerspUvW;
+  localparam int unsigned F  = tu_formats_pkg::TexUvF;
+  logic [1:0]                          st_q;  // 0 idle, 1 read, 2 data, 3 output
+  logic signed [UW-1:0]                x_q, y_q;
+  logic [tu_formats_pkg::TexAddrW-1:0] base_q;
+  logic [3:0]                          lw_q, lh_q, lev_q;
+  logic                                clamp_q;
+  assign in_ready_o  = st_q == 2'd0;
+  assign out_valid_o = st_q == 2'd3;
+  assign tex_req_o   = st_q == 2'd1;
+  tu_texel_addr #(.CoordW(UW)) u_addr (
+    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .clamp_i(clamp_q), .level_i(lev_q),
+    .x_i(x_q), .y_i(y_q), .addr_o(tex_addr_o)
+  );
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) st_q <= 2'd0;
+    else if (st_q == 2'd0) st_q <= in_valid_i ? 2'd1 : 2'd0;
+    else if (st_q == 2'd3) st_q <= out_ready_i ? 2'd0 : 2'd3;
+    else st_q <= st_q + 2'd1;
+  end
+  always_ff @(posedge clk_i) begin
+    if (in_valid_i && in_ready_o) begin
+      if (guard_i) begin  // (if/else: an unsigned '0 in a ?: would make >>> logical)
+        x_q <= '0;
+        y_q <= '0;
+      end else begin
+        x_q <= $signed(u_i) >>> F;
+        y_q <= $signed(v_i) >>> F;
+      end
+      lev_q   <= guard_i ? (lw_i > lh_i ? lw_i : lh_i) : 4'd0;
+      base_q  <= base_i;
+      lw_q    <= lw_i;
+      lh_q    <= lh_i;
+      clamp_q <= clamp_i;
+    end
+    if (st_q == 2'd2) rgba_o <= tex_data_i;
+  end
+endmodule
