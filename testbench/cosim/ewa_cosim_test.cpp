@@ -136,13 +136,13 @@ TEST(TextureUnitRtl, MixedFiltersPerSpan) {
               (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
 }
 
-// The trilinear engine (tu_trilinear: tu_bilinear at floor(lod) and the next level, blended by
-// the lod's fraction) == tex::trilinear on every pixel, every span; then ground trilinear and wall
-// EWA (the engines take turns); cycles = ewa::stream_cycles stall-free.
-TEST(TextureUnitRtl, TrilinearEqualsCModel) {
+// One engine on every span (30% stalls, then stall-free: cycles = ewa::stream_cycles), then the
+// ground and the wall on two engines taking turns (stall-free, cycles = ewa::stream_cycles); every
+// pixel == the C model.
+void check_engine(scene::Filter every, scene::Filter ground, scene::Filter wall) {
   auto s = small_scene();
   cosim::RtlRenderOptions o;
-  o.filter = scene::Filter::Trilinear;
+  o.filter = every;
   o.stall_prob = 0.3;
   const auto r = cosim::render_rtl(s, o);
   EXPECT_TRUE(r.ok()) << r.first_mismatch;
@@ -150,34 +150,27 @@ TEST(TextureUnitRtl, TrilinearEqualsCModel) {
   const auto q = cosim::render_rtl(s, o);
   EXPECT_TRUE(q.ok()) << q.first_mismatch;
   EXPECT_EQ(q.cycles, q.predicted_cycles);
-  s.materials.at("ground").filter = scene::Filter::Trilinear;
+  s.materials.at("ground").filter = ground;
+  s.materials.at("wall").filter = wall;
   o.filter.reset();
   const auto m = cosim::render_rtl(s, o);
   EXPECT_TRUE(m.ok()) << m.first_mismatch;
   EXPECT_EQ(m.cycles, m.predicted_cycles);
-  std::printf("trilinear: %zu px, %llu cycles = predicted %llu; ground trilinear + wall EWA: %llu = %llu\n",
+  std::printf("%s: %zu px, %llu cycles = predicted %llu; ground %s + wall %s: %llu = %llu\n", scene::to_string(every),
               q.frame.pixels.size(), (unsigned long long)q.cycles, (unsigned long long)q.predicted_cycles,
-              (unsigned long long)m.cycles, (unsigned long long)m.predicted_cycles);
+              scene::to_string(ground), scene::to_string(wall), (unsigned long long)m.cycles,
+              (unsigned long long)m.predicted_cycles);
 }
 
-// The nearest engine (tu_nearest) == tex::nearest, with stalls; ground nearest + wall trilinear
-// (two cheap engines taking turns): cycles = ewa::stream_cycles stall-free.
+// tu_trilinear (tu_bilinear at floor(lod) and the next level, blended by the lod's fraction) ==
+// tex::trilinear; with EWA taking turns.
+TEST(TextureUnitRtl, TrilinearEqualsCModel) {
+  check_engine(scene::Filter::Trilinear, scene::Filter::Trilinear, scene::Filter::Ewa);
+}
+
+// tu_nearest == tex::nearest; with trilinear taking turns (two short engines).
 TEST(TextureUnitRtl, NearestEqualsCModel) {
-  auto s = small_scene();
-  cosim::RtlRenderOptions o;
-  o.filter = scene::Filter::Nearest;
-  o.stall_prob = 0.3;
-  const auto r = cosim::render_rtl(s, o);
-  EXPECT_TRUE(r.ok()) << r.first_mismatch;
-  s.materials.at("ground").filter = scene::Filter::Nearest;
-  s.materials.at("wall").filter = scene::Filter::Trilinear;
-  o.filter.reset();
-  o.stall_prob = 0;
-  const auto m = cosim::render_rtl(s, o);
-  EXPECT_TRUE(m.ok()) << m.first_mismatch;
-  EXPECT_EQ(m.cycles, m.predicted_cycles);
-  std::printf("nearest: %zu px; ground nearest + wall trilinear: %llu cycles = predicted %llu\n",
-              r.frame.pixels.size(), (unsigned long long)m.cycles, (unsigned long long)m.predicted_cycles);
+  check_engine(scene::Filter::Nearest, scene::Filter::Nearest, scene::Filter::Trilinear);
 }
 
 // The default scene with its relief (wall: adaptive POM, 32 layers) through the full unit's
