@@ -103,7 +103,7 @@ module tu_texture_unit_sim #(
     .clk_i, .rd_en_i(d_req), .rd_addr_i(d_addr), .rd_data_o(d_word),
     .wr_en_i(ram_we_i && ram_sel_i == 2'd1), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
   );
-  tu_view_src u_views (
+  tu_view_src #(.Words(Words)) u_views (
     .clk_i, .rst_ni, .wr_en_i(ram_we_i && ram_sel_i == 2'd2), .wr_addr_i(ram_waddr_i),
     .wr_data_i(ram_wdata_i), .out_valid_o(view_valid), .out_ready_i(view_ready), .out_data_o(view)
   );

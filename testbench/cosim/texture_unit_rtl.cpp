@@ -18,7 +18,7 @@ namespace tu::cosim {
 
 namespace {
 constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;  // tu_texture_unit_sim Words
-constexpr uint64_t kViewWords = uint64_t(1) << 16;                     // tu_view_src Words
+constexpr uint64_t kViewWords = kRamWords;                              // tu_view_src Words
 
 uint64_t lo(i128 v) { return static_cast<uint64_t>(v); }
 uint64_t hi(i128 v) { return static_cast<uint64_t>(v >> 64); }
@@ -228,7 +228,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         pc.engine = eng;
         pc.guard = guard;
         // Trilinear: one bilinear pass for a guard pixel or a lod at the top level.
-        pc.one_level = guard || static_cast<int>(in.b2.lod >> fmt::kTexLodF) >= top;
+        pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(in.b2.lod >> fmt::kTexLodF), top);
         costs.push_back(pc);
       }
       x = x1 + 1;

@@ -179,7 +179,7 @@ TEST(Sysmodel, DefaultSceneStreamCoversEveryPixelOnce) {
   std::vector<tu::ewa::PixelCost> costs;
   for (const auto& p : wl.pixels) {
     walked += p.texels;
-    costs.push_back({static_cast<int>(p.levels), p.texels, p.no_weight, p.guard});
+    costs.push_back(cost_of(p));
   }
   const UnitConfig cfg;  // the full unit (relief stage in)
   const auto r = simulate(texture_unit(cfg), wl);

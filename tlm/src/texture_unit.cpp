@@ -11,11 +11,9 @@
 
 namespace tu::sysmodel {
 
-namespace {
 ewa::PixelCost cost_of(const PixelWork& w) {
   return {static_cast<int>(w.levels), w.texels, w.no_weight, w.guard};
 }
-}  // namespace
 
 Workload scene_workload(const scene::Scene& s, const render::Frame& frame) {
   const auto cov = render::visibility(s);
@@ -92,7 +90,7 @@ Pipeline texture_unit(const UnitConfig& c) {
     // next shifted pixel overlaps the march here only through the in-flight capacity.
     s = {};
     s.name = "relief";
-    s.relief_only = true, s.bypass_latency = 1, s.work = Work::Steps;
+    s.relief_only = true, s.bypass_latency = ewa::kReliefStagePassLatency, s.work = Work::Steps;
     s.lat0 = fmt::kPomLayersLatency + fmt::kPomSetupLatency + 2 + fmt::kPomRefineLatency, s.lat_per_work = 1;
     s.ii0 = 1, s.ii_per_work = 1;
     s.capacity = c.relief_fifo, s.fifo_depth = 1;

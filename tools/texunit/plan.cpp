@@ -435,11 +435,11 @@ int run(const Options& opt) {
       const auto& rec = fr.pixels[i];
       const size_t obj = static_cast<size_t>(rec.object);
       const scene::Filter f = t.materials.at(t.objects[obj].material).filter;
-      ewa::PixelCost c{static_cast<int>(w.levels), w.texels, w.no_weight, w.guard};
+      ewa::PixelCost c = sysmodel::cost_of(w);
       c.engine = render::engine_of(f);
       if (c.engine == ewa::Engine::Trilinear) {
-        // One bilinear pass at the top level (or for a B1-guard pixel, recorded with 1 texel).
-        c.one_level = rec.texels == 1 || static_cast<int>(std::floor(rec.lod)) >= top_level[obj];
+        // A B1-guard pixel is recorded with 1 texel (the workload's guard is EWA's: no level tried).
+        c.one_level = ewa::trilinear_one_level(rec.texels == 1, static_cast<int>(std::floor(rec.lod)), top_level[obj]);
       }
       costs.push_back(c);
     }

@@ -73,6 +73,6 @@ uint64_t bilinear_stream_cycles(uint64_t pixels, uint64_t first_arrival) {
   return stream_cycles(std::vector<PixelCost>(pixels, c), first_arrival);
 }
 
-int texture_unit_front_latency(bool relief_stage) { return 2 + 1 + fmt::kPerspLatency + 1 + (relief_stage ? 1 : 0); }
+int texture_unit_front_latency(bool relief_stage) { return 2 + 1 + fmt::kPerspLatency + 1 + (relief_stage ? kReliefStagePassLatency : 0); }
 
 }  // namespace tu::ewa

@@ -58,6 +58,16 @@ uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival 
 // four texel reads, last data, output), pixels back to back.
 uint64_t bilinear_stream_cycles(uint64_t pixels, uint64_t first_arrival = 0);
 
+// tu_relief_stage: a pixel without a shift leaves its sideband FIFO one clock after entering
+// (relief::stage_cycles; the SystemC model's relief stage bypass).
+inline constexpr int kReliefStagePassLatency = 1;
+
+// tu_trilinear runs one bilinear pass (not two) for a B1-guard pixel or when floor(lod) reaches
+// the texture's top level.
+inline bool trilinear_one_level(bool guard, int lod_floor, int top_level) {
+  return guard || lod_floor >= top_level;
+}
+
 // Front-end latency of tu_texture_unit: span accepted at cycle 0 -> first pixel at the filter
 // engine's input: span set-up (2) + expander register (1) + B1 (PerspLatency) + FIFO (1), + 1 with
 // the relief stage (HasRelief: a pixel without a shift passes tu_relief_stage's sideband FIFO in

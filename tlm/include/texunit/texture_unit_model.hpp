@@ -16,6 +16,9 @@ namespace tu::sysmodel {
 // levels tried, empty weight sum, B1 guard; its pixels are the covered pixels, row-major.
 Workload scene_workload(const scene::Scene& s, const render::Frame& frame);
 
+// A pixel's EWA cost for the RTL cycle model (ewa_cycles.hpp) from its workload.
+ewa::PixelCost cost_of(const PixelWork& w);
+
 // Buffer depths of the unit (the RTL's FIFOs).
 struct UnitConfig {
   int span_fifo = 2;   // spans waiting for the per-scanline set-up
