@@ -20,6 +20,27 @@ package tu_formats_pkg;
   localparam int unsigned RecipC0F = 30;
   localparam int unsigned RecipOutW = 25;  // reciprocal mantissa R in (0.5,1]: unsigned, RecipOutF fraction bits
   localparam int unsigned RecipOutF = 24;
+  localparam int unsigned NoiseCoordW = 32;  // input coordinates x, y, z: signed, NoiseTF fraction bits (s32.16)
+  localparam int unsigned NoiseLatW = 8;  // lattice index floor(x) & 255: the period-256 wrap of the permutation
+  localparam int unsigned NoiseTF = 16;  // local coordinate t = frac(x) in [0,1): unsigned, NoiseTF bits (u16.16)
+  localparam int unsigned NoiseFadeIF = 24;  // fade intermediates t^2, t^3 (u24.24) and b = t(6t-15)+10: frac bits
+  localparam int unsigned NoiseFadeBW = 28;  // b = t(6t-15)+10 in (1,10]: unsigned, NoiseFadeIF fraction bits, half up
+  localparam int unsigned NoiseSW = 17;  // fade s = t^3 b in [0,1]: unsigned, NoiseTF fraction bits, half up
+  localparam int unsigned NoiseDW = 17;  // corner offsets t, t-1 in [-1,1): signed, NoiseTF fraction bits
+  localparam int unsigned NoiseValW = 19;  // gradient dots and lerps in [-2,2]: signed, NoiseTF fraction bits
+  localparam int unsigned NoiseOctaves = 4;  // fBm octaves K: noise(2^i x) 2^-i, i < K
+  localparam int unsigned NoiseAccW = 23;  // fBm sum: signed, NoiseTF+K-1 fraction bits, exact
+  localparam int unsigned NoiseNormF = 18;  // normalisation constants 1/(2 B (2 - 2^(1-K))): NoiseNormF fraction bits
+  localparam int unsigned NoiseBound3E4 = 10364;  // bound of |noise3| in 1e-4 (sup 1.0363538, docs/blocks/noise.md)
+  localparam int unsigned NoiseBound2E4 = 10000;  // bound of |noise2| in 1e-4 (per-axis bound, exact sup)
+  localparam int unsigned NoiseNorm3 = 67450;  // 3-D normalisation constant, round half up: unsigned, NoiseNormF fraction bits
+  localparam int unsigned NoiseNorm2 = 69905;  // 2-D normalisation constant, round half up: unsigned, NoiseNormF fraction bits
+  localparam int unsigned NoiseNormW = 18;  // normalisation constant word: unsigned (value < 1)
+  localparam int unsigned NoiseOutW = 17;  // fbm in [0,1]: unsigned, NoiseTF fraction bits, round half up, clamped
+  localparam int unsigned NoiseCoreLatency = 6;  // noise core: 3 hash levels (fade beside), dots + x lerp, y, z lerp
+  localparam int unsigned NoisePipeLatency = 7;  // pipelined scheme (K cores) + sum/normalise, II 1
+  localparam int unsigned NoiseSerialLatency = 10;  // octave-serial scheme (one core)
+  localparam int unsigned NoiseSerialIi = 4;  // octave-serial scheme: one sample per K clocks
   localparam int unsigned ClipInW = 13;  // clip distance d: signed, ClipInF fraction bits; domain [-0.5, 0.5], clamped
   localparam int unsigned ClipInF = 12;
   localparam int unsigned ClipAW = 12;  // a = min(|d|, 0.5): unsigned, ClipInF fraction bits
