@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "reciprocal/reciprocal.hpp"
@@ -68,7 +69,9 @@ void lod_unit(const In& in, const Ell& el, bool f_zero, int64_t lf, int64_t lq, 
   const i128 d = el.a - el.c, b = el.b;
   const int k = std::max(0, msb(s) - (fmt::kEllNrmW - 1));
   const i128 sn = static_cast<i128>(s >> k), dn = d >> k, bn = b >> k;
-  const uint64_t r = isqrt(static_cast<u128>(dn * dn + bn * bn));
+  // |d|, |b| <= s < 2^(NrmW + 1) after the shift: the squares fit int64 (exact as before).
+  const int64_t dn64 = static_cast<int64_t>(dn), bn64 = static_cast<int64_t>(bn);
+  const uint64_t r = isqrt(static_cast<u128>(static_cast<uint64_t>(dn64 * dn64 + bn64 * bn64)));
   const u128 lam = static_cast<u128>(sn) + r;  // 2 lambda_max, scaled by 2^(k - NumF)
   const int64_t ll = log2_fx(lam) + int64_t(k - 2 * kNF - 1) * (1 << kL1);  // log2 lambda_max
   const int64_t lmaj2 = ll - 4 * lq;                                     // 2 log2 major
@@ -249,7 +252,8 @@ namespace {
 // differs makes the larger mantissa's result larger), so it is a staircase of 2^kL1 steps over
 // the mantissas: kStep[k] = the smallest mantissa whose result is >= k. A mantissa's bucket (its
 // top kL1 fraction bits) is at most 1.5 steps wide (d result / d m <= 2^kL1 / (2^(mw-1) ln 2)),
-// so starting from the result at the bucket's first mantissa a step or two finds the answer.
+// so from the result at the bucket's first mantissa two branch-free steps reach the answer (the
+// constructor checks that no bucket holds more than two steps).
 struct Log2Table {
   static constexpr int kMw = fmt::kEllLogMantW;
   static constexpr int kSteps = 1 << kL1;
@@ -271,10 +275,16 @@ struct Log2Table {
     }
     for (int i = 0; i < kSteps; ++i)
       at_bucket[i] = static_cast<uint16_t>(log2_frac_serial(lo + (uint64_t(i) << kBucketShift)));
+    for (int i = 0; i < kSteps; ++i) {
+      const uint64_t last = lo + (uint64_t(i + 1) << kBucketShift) - 1;
+      if (log2_frac_serial(last) > at_bucket[i] + 2u)
+        throw std::logic_error("log2 table: a bucket holds more than two steps");
+    }
   }
   uint32_t frac(uint64_t m) const {
     uint32_t k = at_bucket[(m >> kBucketShift) & (kSteps - 1)];
-    while (m >= step[k + 1]) ++k;
+    k += m >= step[k + 1];  // k + 1 <= kSteps: step[kSteps] is the sentinel 2^mw > m
+    k += m >= step[k + 1];
     return k;
   }
 };
