@@ -19,6 +19,12 @@ using namespace tu;
 using namespace tu::noise;
 
 const double kUlp = std::ldexp(1.0, -fmt::kNoiseTF);
+// The sanitizer build (Debug, ASan + UBSan) checks the same code paths on 1/16 of the points.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kLog2Thin = 4;
+#else
+constexpr int kLog2Thin = 0;
+#endif
 constexpr int64_t kOne = int64_t(1) << fmt::kNoiseTF;
 
 // Literal transcription of Perlin's Java reference (mrl.nyu.edu/~perlin/noise/, 2002): the
@@ -112,7 +118,7 @@ TEST(NoiseRef, AnalyticBoundHoldsAndItsTightness) {
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> u(0, 256);
   double max3 = 0, max2 = 0;
-  for (int i = 0; i < (1 << 20); ++i) {
+  for (int i = 0; i < (1 << (20 - kLog2Thin)); ++i) {
     const double x = u(rng), y = u(rng), z = u(rng);
     const double v3 = std::fabs(noise3_ref(x, y, z)), v2 = std::fabs(noise2_ref(x, y));
     ASSERT_LE(v3, worst_case_ref(3, x - std::floor(x), y - std::floor(y), z - std::floor(z)) + 1e-12);
@@ -124,9 +130,10 @@ TEST(NoiseRef, AnalyticBoundHoldsAndItsTightness) {
   double peak_cells = 0;
   const double t[3] = {0.355256691, 0.481492218, 0.5};
   const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  for (int cx = 0; cx < 64; ++cx)
-    for (int cy = 0; cy < 64; ++cy)
-      for (int cz = 0; cz < 64; ++cz)
+  const int cells = 64 >> (kLog2Thin / 2);
+  for (int cx = 0; cx < cells; ++cx)
+    for (int cy = 0; cy < cells; ++cy)
+      for (int cz = 0; cz < cells; ++cz)
         for (const auto& pm : perm)
           for (int r = 0; r < 8; ++r) {
             double q[3];
@@ -136,8 +143,8 @@ TEST(NoiseRef, AnalyticBoundHoldsAndItsTightness) {
   EXPECT_LE(max3, kBound3);
   EXPECT_LE(peak_cells, kBound3);
   EXPECT_LE(max2, kBound2);
-  std::printf("bound3 %.7f (peak of B), sampled max |noise3| %.6f (2^20 points), %.6f (peak images in 64^3 cells); "
-              "bound2 %.3f, sampled max |noise2| %.6f\n", at_peak, max3, peak_cells, peak2, max2);
+  std::printf("bound3 %.7f (peak of B), sampled max |noise3| %.6f (%d points), %.6f (peak images in %d^3 cells); "
+              "bound2 %.3f, sampled max |noise2| %.6f\n", at_peak, max3, 1 << (20 - kLog2Thin), peak_cells, cells, peak2, max2);
   // fBm normalised by the bound stays in [0,1].
   for (int i = 0; i < 100000; ++i) {
     const double x = u(rng), y = u(rng), z = u(rng);
@@ -204,7 +211,7 @@ TEST(NoiseFx, CoreErrorBoundOnAMillionPoints) {
   for (int dims : {2, 3}) {
     std::mt19937_64 rng(dims);
     double max_err = 0, sum_sq = 0;
-    const int n = 1 << 20;
+    const int n = 1 << (20 - kLog2Thin);
     for (int i = 0; i < n; ++i) {
       const int64_t x = rand_code(rng), y = rand_code(rng), z = rand_code(rng);
       const double e = fx_noise(dims, x, y, z) - ref_noise(dims, x, y, z);
@@ -212,8 +219,8 @@ TEST(NoiseFx, CoreErrorBoundOnAMillionPoints) {
       sum_sq += e * e;
     }
     EXPECT_LE(max_err, core_bound(dims));
-    std::printf("noise%dd core: max %.3f ULP, rms %.3f ULP over 2^20 points (bound %.2f ULP)\n", dims,
-                max_err / kUlp, std::sqrt(sum_sq / n) / kUlp, core_bound(dims) / kUlp);
+    std::printf("noise%dd core: max %.3f ULP, rms %.3f ULP over %d points (bound %.2f ULP)\n", dims,
+                max_err / kUlp, std::sqrt(sum_sq / n) / kUlp, n, core_bound(dims) / kUlp);
   }
 }
 
@@ -238,7 +245,7 @@ TEST(NoiseFx, ContinuousAcrossCellBorders) {
   // at most twice the core bound (no jump at the border).
   std::mt19937_64 rng(21);
   double worst = 0;
-  for (int i = 0; i < 100000; ++i)
+  for (int i = 0; i < (100000 >> kLog2Thin); ++i)
     for (int axis = 0; axis < 3; ++axis) {
       int64_t c[3] = {rand_code(rng), rand_code(rng), rand_code(rng)};
       c[axis] &= ~(kOne - 1);  // on the border
@@ -266,7 +273,7 @@ TEST(NoiseFbm, ErrorBoundAndRange) {
   for (int dims : {2, 3}) {
     std::mt19937_64 rng(100 + dims);
     double max_err = 0, sum_sq = 0;
-    const int n = 1 << 18;  // 1,000,000+ points: the co-simulation runs (docs/blocks/noise.md §4)
+    const int n = 1 << (18 - kLog2Thin);  // 1,000,000 points: the co-simulation runs (noise.md §4)
     for (int i = 0; i < n; ++i) {
       const int64_t x = rand_code(rng), y = rand_code(rng), z = rand_code(rng);
       const uint32_t o = fbm_fx(dims, x, y, z);
@@ -276,8 +283,8 @@ TEST(NoiseFbm, ErrorBoundAndRange) {
       sum_sq += e * e;
     }
     EXPECT_LE(max_err, fbm_bound(dims));
-    std::printf("fbm %dd: max %.3f ULP, rms %.3f ULP over 2^18 points (bound %.2f ULP)\n", dims, max_err / kUlp,
-                std::sqrt(sum_sq / n) / kUlp, fbm_bound(dims) / kUlp);
+    std::printf("fbm %dd: max %.3f ULP, rms %.3f ULP over %d points (bound %.2f ULP)\n", dims, max_err / kUlp,
+                std::sqrt(sum_sq / n) / kUlp, n, fbm_bound(dims) / kUlp);
   }
   EXPECT_EQ(fbm_fx(3, 5 * kOne, -7 * kOne, 300 * kOne), static_cast<uint32_t>(kOne / 2));  // lattice: 1/2
   // The normalisation clamps instead of wrapping far outside the reachable sum.
