@@ -207,12 +207,23 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1ull, 1ull << 26));
   rep->add_option("--yosys-cache", ro.yosys_cache, "JSON cache of Yosys results (keyed by the RTL files' hash)");
   rep->add_flag("--no-yosys", no_yosys, "do not synthesise (cells: not measured)");
+  rep->add_option("--stdcell-cache", ro.stdcell_cache, "standard-cell results (texunit stdcell); read only");
   rep->add_option("--root", ro.root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
 
   std::string rtl_top;
   auto* rtf = app.add_subcommand("rtl-files", "list the RTL files a top needs (package first), for Yosys / Verilator scripts");
   rtf->add_option("TOP", rtl_top, "module name, e.g. tu_persp")->required();
   rtf->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+
+  std::vector<std::string> sc_tops;
+  std::string sc_cache = "docs/report/stdcell_cache.json", sc_netlists = "build/stdcell";
+  bool sc_force = false;
+  auto* stc = app.add_subcommand("stdcell", "OSU 0.18 um area and timing of RTL tops (scripts/stdcell_flow.sh), cached");
+  stc->add_option("TOPS", sc_tops, "RTL tops, e.g. tu_reciprocal")->required();
+  stc->add_option("--cache", sc_cache, "JSON cache keyed by the hash of the RTL files and the flow script");
+  stc->add_option("--netlists", sc_netlists, "directory for the gate-level netlists (TOP.v)");
+  stc->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+  stc->add_flag("--force", sc_force, "re-synthesise even when the cache is current");
 
   tu::plan::Options po;
   auto* pln = app.add_subcommand("plan", "specialise the unit to a scene: blocks, variants, RTL configuration");
@@ -239,6 +250,7 @@ int main(int argc, char** argv) {
       return tu::report::run(ro);
     }
     if (*pln) return tu::plan::run(po);
+    if (*stc) return tu::report::stdcell(sc_tops, root, sc_cache, sc_netlists, sc_force);
     if (*rtf) {
       for (const auto& f : tu::report::rtl_files(root, rtl_top)) std::cout << f << "\n";
       return 0;
