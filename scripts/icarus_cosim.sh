@@ -66,7 +66,7 @@ else
   tu=${TU_TEXUNIT:-build/default/tools/texunit/texunit}
   mapfile -t design < <("$tu" rtl-files "$top" --root .)
 fi
-iverilog -g2012 -Irtl/generated -o "$dir/sim.vvp" -s tu_vec_top testbench/icarus/tu_vec_tb.sv "$dir/tu_vec_dut.sv" \
+iverilog -g2012 -Irtl/common -Irtl/generated -o "$dir/sim.vvp" -s tu_vec_top testbench/icarus/tu_vec_tb.sv "$dir/tu_vec_dut.sv" \
   "${design[@]}" 2>"$dir/err" || { cat "$dir/err" >&2; echo "icarus_cosim.sh: iverilog failed on $top" >&2; exit 2; }
 t0=$(date +%s.%N)
 vvp -n "$dir/sim.vvp" "+vectors=$vec" "+stall=$stall" "+seed=$seed" ${TU_ICARUS_PLUSARGS:-} >"$dir/out" 2>&1 || true
