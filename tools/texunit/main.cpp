@@ -247,6 +247,7 @@ int main(int argc, char** argv) {
       ->check(tu::cli::non_negative_integer() & CLI::Range(1ull, 1ull << 26));
   rep->add_option("--yosys-cache", ro.yosys_cache, "JSON cache of Yosys results (keyed by the RTL files' hash)");
   rep->add_flag("--no-yosys", no_yosys, "do not synthesise (cells: not measured)");
+  rep->add_option("--stdcell-cache", ro.stdcell_cache, "standard-cell results (texunit stdcell); read only");
   rep->add_option("--root", ro.root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
 
   std::string rtl_top;
@@ -256,6 +257,16 @@ int main(int argc, char** argv) {
   rtf->add_option("--list", rtl_list, "instead: every top, every file (packages first), the include dirs or the lint-only files")
       ->check(CLI::IsMember({"tops", "all", "include-dirs", "lint-only"}));
   rtf->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+
+  std::vector<std::string> sc_tops;
+  std::string sc_cache = "docs/report/stdcell_cache.json", sc_netlists = "build/stdcell";
+  bool sc_force = false;
+  auto* stc = app.add_subcommand("stdcell", "OSU 0.18 um area and timing of RTL tops (scripts/stdcell_flow.sh), cached");
+  stc->add_option("TOPS", sc_tops, "RTL tops, e.g. tu_reciprocal")->required();
+  stc->add_option("--cache", sc_cache, "JSON cache keyed by the hash of the RTL files and the flow script");
+  stc->add_option("--netlists", sc_netlists, "directory for the gate-level netlists (TOP.v)");
+  stc->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+  stc->add_flag("--force", sc_force, "re-synthesise even when the cache is current");
 
   tu::plan::Options po;
   auto* pln = app.add_subcommand("plan", "specialise the unit to a scene: blocks, variants, RTL configuration");
@@ -287,6 +298,7 @@ int main(int argc, char** argv) {
       return tu::report::run(ro);
     }
     if (*pln) return tu::plan::run(po);
+    if (*stc) return tu::report::stdcell(sc_tops, root, sc_cache, sc_netlists, sc_force);
     if (*rtf) return cmd_rtl_files(root, rtl_top, rtl_list);
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*rqc) return cmd_relief_quality(rq);
