@@ -16,7 +16,7 @@ cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" --target fuzz_all
 bin=build/fuzz/fuzz
 mkdir -p build/fuzz/logs build/fuzz/artifacts
-targets=$(cd $bin && ls fuzz_scene fuzz_vectors fuzz_block_*)
+targets="fuzz_scene fuzz_vectors $(cd $bin && ls -d fuzz_block_*)"  # parsers first
 run_one() {
   local t=$1 mode=$2 bin=build/fuzz/fuzz
   local corpus=fuzz/corpus/${t#fuzz_block_}
