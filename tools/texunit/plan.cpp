@@ -235,12 +235,12 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam bit HasRelief = 1'b" << c.relief << ";\n"
      << "  localparam bit HasPom = 1'b" << c.pom << ";  // tu_pom_layers + tu_pom_march\n"
      << "  localparam bit HasIterParallax = 1'b" << c.iter_parallax << ";\n"
-     << "  localparam int unsigned PomMaxLayers = " << c.pom_max_layers << ";\n"
+     << "  localparam int PomMaxLayers = " << c.pom_max_layers << ";\n"
      << "  // bit 0: formula (tu_gauss_weight), bit 1: 1-D table, bit 2: 2-D table\n"
      << "  localparam logic [2:0] WeightSources = 3'd" << c.weight_sources << ";\n"
-     << "  localparam int unsigned WtabLog2N = " << c.wtab_log2n << ";\n"
-     << "  localparam int unsigned Wtab2dLog2N = " << c.wtab2d_log2n << ";\n"
-     << "  localparam int unsigned PerspLanes = " << c.persp_lanes << ";\n"
+     << "  localparam int WtabLog2N = " << c.wtab_log2n << ";\n"
+     << "  localparam int Wtab2dLog2N = " << c.wtab2d_log2n << ";\n"
+     << "  localparam int PerspLanes = " << c.persp_lanes << ";\n"
      << "endpackage\n";
   return sv.str();
 }
