@@ -12,7 +12,10 @@ cd "$(dirname "$0")/.."
 mode=${1:-ci}
 case $mode in ci|--long) ;; *) echo "usage: scripts/fuzz.sh [--long]" >&2; exit 2 ;; esac
 t0=$(date +%s)
-cmake --preset fuzz >/dev/null
+# ccache, where installed, makes a rebuild of an unchanged tree cheap (the build is most of the cost).
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake --preset fuzz "${launcher[@]}" >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" --target fuzz_all
 bin=build/fuzz/fuzz
 mkdir -p build/fuzz/logs build/fuzz/artifacts
