@@ -102,6 +102,8 @@ package tu_formats_pkg;
   localparam int unsigned EllLodW = 12;  // lod: unsigned, EllLodF fraction bits, floor, clamped to [0, max_lod]
   localparam int unsigned EllLodF = 8;
   localparam int unsigned EllMaxLodW = 4;  // max_lod (log2 of the texture size): unsigned integer
+  localparam int unsigned EllRhoW = 96;  // GL LOD sums Px' = nUx^2 + nVx^2, Py' = nUy^2 + nVy^2 (by screen axis): exact, unsigned, 2 EllNumF frac
+  localparam int unsigned TexLodBiasW = 14;  // trilinear lod bias: signed, TexLodF fraction bits (|bias| <= 16 levels)
   localparam int unsigned EllLatency = 5;  // analytic ellipse/LOD pipeline latency in cycles, II = 1
   localparam int unsigned EwaCordW = 24;  // CORDIC x, y datapath: signed; d = Ae'-Ce', b = Be' block-normalised to W-3 bits
   localparam int unsigned EwaCordIter = 16;  // CORDIC iterations (vectoring and rotation)

@@ -168,6 +168,32 @@ TEST(TextureUnitRtl, TrilinearEqualsCModel) {
   check_engine(scene::Filter::Trilinear, scene::Filter::Trilinear, scene::Filter::Ewa);
 }
 
+// Trilinear's GL LOD rule with a material's bias and [min lod, max lod] (tu_ellipse tlod) ==
+// tex::trilinear_lod: bias 1.25 / [0.5, 3] on the ground, -0.75 / [0, 12] on the wall.
+TEST(TextureUnitRtl, TrilinearLodBiasAndClampEqualCModel) {
+  auto s = small_scene();
+  s.materials.at("ground").lod_bias = 1.25;
+  s.materials.at("ground").min_lod = 0.5;
+  s.materials.at("ground").max_lod = 3;
+  s.materials.at("wall").lod_bias = -0.75;
+  cosim::RtlRenderOptions o;
+  o.filter = scene::Filter::Trilinear;
+  o.stall_prob = 0.3;
+  const auto r = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r.ok()) << r.first_mismatch;
+  o.stall_prob = 0;
+  const auto q = cosim::render_rtl(s, o);
+  EXPECT_TRUE(q.ok()) << q.first_mismatch;
+  EXPECT_EQ(q.cycles, q.predicted_cycles);
+  // The bias and clamps change the picture.
+  const auto plain = cosim::render_rtl(small_scene(), o);
+  size_t differ = 0;
+  for (size_t i = 0; i < q.frame.pixels.size(); ++i) differ += !(q.frame.pixels[i].color == plain.frame.pixels[i].color);
+  EXPECT_GT(differ, 500u);
+  std::printf("biased trilinear: %zu px, %zu differ from the default rule, %llu cycles = predicted %llu\n",
+              q.frame.pixels.size(), differ, (unsigned long long)q.cycles, (unsigned long long)q.predicted_cycles);
+}
+
 // tu_nearest == tex::nearest; with trilinear taking turns (two short engines).
 TEST(TextureUnitRtl, NearestEqualsCModel) {
   check_engine(scene::Filter::Nearest, scene::Filter::Nearest, scene::Filter::Trilinear);
