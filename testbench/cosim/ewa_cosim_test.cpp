@@ -139,17 +139,24 @@ TEST(TextureUnitRtl, MixedFiltersPerSpan) {
 // One engine on every span (30% stalls, then stall-free: cycles = ewa::stream_cycles), then the
 // ground and the wall on two engines taking turns (stall-free, cycles = ewa::stream_cycles); every
 // pixel == the C model.
-void check_engine(scene::Filter every, scene::Filter ground, scene::Filter wall) {
-  auto s = small_scene();
-  cosim::RtlRenderOptions o;
-  o.filter = every;
+// Renders s with 30 % stalls (every pixel == the C model) and without (also cycles = predicted);
+// returns the stall-free render.
+cosim::RtlRender render_checked(const scene::Scene& s, cosim::RtlRenderOptions o) {
   o.stall_prob = 0.3;
   const auto r = cosim::render_rtl(s, o);
   EXPECT_TRUE(r.ok()) << r.first_mismatch;
   o.stall_prob = 0;
-  const auto q = cosim::render_rtl(s, o);
+  auto q = cosim::render_rtl(s, o);
   EXPECT_TRUE(q.ok()) << q.first_mismatch;
   EXPECT_EQ(q.cycles, q.predicted_cycles);
+  return q;
+}
+
+void check_engine(scene::Filter every, scene::Filter ground, scene::Filter wall) {
+  auto s = small_scene();
+  cosim::RtlRenderOptions o;
+  o.filter = every;
+  const auto q = render_checked(s, o);
   s.materials.at("ground").filter = ground;
   s.materials.at("wall").filter = wall;
   o.filter.reset();
@@ -178,13 +185,7 @@ TEST(TextureUnitRtl, TrilinearLodBiasAndClampEqualCModel) {
   s.materials.at("wall").lod_bias = -0.75;
   cosim::RtlRenderOptions o;
   o.filter = scene::Filter::Trilinear;
-  o.stall_prob = 0.3;
-  const auto r = cosim::render_rtl(s, o);
-  EXPECT_TRUE(r.ok()) << r.first_mismatch;
-  o.stall_prob = 0;
-  const auto q = cosim::render_rtl(s, o);
-  EXPECT_TRUE(q.ok()) << q.first_mismatch;
-  EXPECT_EQ(q.cycles, q.predicted_cycles);
+  const auto q = render_checked(s, o);
   // The bias and clamps change the picture.
   const auto plain = cosim::render_rtl(small_scene(), o);
   size_t differ = 0;
