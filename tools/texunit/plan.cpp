@@ -111,23 +111,9 @@ double quantile(std::vector<double> v, double q) {
   return v[static_cast<size_t>(q * static_cast<double>(v.size() - 1))];
 }
 
-// PSNR (RGB, 8-bit peak) over the pixels both frames cover: the background would inflate it.
-// PSNR over a's covered pixels (those of objects `keep` accepts, all by default).
-double psnr_covered(const render::Frame& a, const render::Frame& b,
-                    const std::function<bool(int object)>& keep = {}) {
-  double se = 0;
-  size_t n = 0;
-  for (const auto& p : a.pixels) {
-    if (keep && !keep(p.object)) continue;
-    const auto& c = a.image.at(p.x, p.y);
-    const auto& d = b.image.at(p.x, p.y);
-    for (int k = 0; k < 3; ++k) {
-      const double e = (k == 0 ? c.r - d.r : k == 1 ? c.g - d.g : c.b - d.b);
-      se += e * e;
-    }
-    n += 3;
-  }
-  return se == 0 ? INFINITY : 10 * std::log10(255.0 * 255.0 * static_cast<double>(n) / se);
+// PSNR over a's covered pixels of the objects `keep` accepts (render::psnr_covered).
+double psnr_objects(const render::Frame& a, const render::Frame& b, const std::function<bool(int object)>& keep) {
+  return render::psnr_covered(a, b, [&](const render::PixelRecord& p) { return keep(p.object); });
 }
 
 double texels_per_pixel(const render::Frame& f) {
@@ -349,7 +335,7 @@ int run(const Options& opt) {
     const double qa = quantile(ma, kQuantile), ql = quantile(ml, kQuantile);
     std::string f = "ewa", why = name + ": ";
     if (ql <= kMinifyLod && qa <= kIsoAniso) {
-      const double p = psnr_covered(bil, ewa, mine);
+      const double p = psnr_objects(bil, ewa, mine);
       why += "bilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
       if (p >= s.budget.min_psnr_db) f = "bilinear";
       else why += "; ";
@@ -359,7 +345,7 @@ int run(const Options& opt) {
     if (f == "ewa") {
       if (qa <= kIsoAniso) {
         if (!tri) tri = render::render_ref(s, scene::Filter::Trilinear);
-        const double p = psnr_covered(*tri, ewa, mine);
+        const double p = psnr_objects(*tri, ewa, mine);
         why += "trilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
         if (p >= s.budget.min_psnr_db) f = "trilinear";
       } else {
@@ -380,7 +366,7 @@ int run(const Options& opt) {
     const std::string& f = mat_filter.at(s.objects[static_cast<size_t>(p.object)].material);
     if (f != "ewa") planned_frame.image.at(p.x, p.y) = (f == "bilinear" ? bil : *tri).image.at(p.x, p.y);
   }
-  const double filter_psnr = psnr_covered(planned_frame, ewa);
+  const double filter_psnr = render::psnr_covered(planned_frame, ewa);
   const render::Frame* chosen_frame = filter == "ewa" ? &ewa : filter == "trilinear" ? &*tri : &bil;
 
   // 3. Blocks and variants from the measured table.
@@ -418,7 +404,7 @@ int run(const Options& opt) {
       if (const auto src = engine_source(*r)) {
         render::CmodelOptions o = render::texture_path_only();
         o.weights = src;
-        render_db[r] = psnr_covered(render::render_cmodel(flat, scene::Filter::Ewa, o), ref_flat);
+        render_db[r] = render::psnr_covered(render::render_cmodel(flat, scene::Filter::Ewa, o), ref_flat);
       }
   }
   auto weight_render_db = [&](const TRow& r) {

@@ -8,6 +8,8 @@ namespace tu::cli {
 struct RenderArgs {
   std::string scene, out_dir, dump, engine = "ref", filter, weights, rtl_unit = "full";
   bool no_relief = false;
+  int ss = 16;                      // --engine truth: samples per pixel side
+  std::string truth_kernel = "box";  // --engine truth: box | gauss
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);
