@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "texture_unit_rtl.hpp"
+#include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
 
@@ -33,6 +34,9 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
       ->check(CLI::IsMember({"formula", "table1d", "table2d"}));
   r->add_option("--filter", a.filter, "override every material's filter")
       ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa"}));
+  r->add_option("--threads", a.threads, "cmodel / rtl engines: threads for the C-model render (default 0: "
+                "every core); the image is the same for any count")
+      ->check(CLI::Range(0, 4096));
   return r;
 }
 
@@ -52,6 +56,7 @@ int run_render(const RenderArgs& a) {
   opt.progress = true;
   opt.weights = w;
   opt.relief = !a.no_relief;
+  opt.threads = a.threads;
   render::Frame frame;
   bool ok = true;
   if (a.engine == "rtl") {
@@ -60,6 +65,7 @@ int run_render(const RenderArgs& a) {
     ro.filter = f;
     ro.weights = w;
     ro.relief = ro.has_ewa && !a.no_relief;
+    ro.threads = a.threads;
     const auto r = cosim::render_rtl(s, ro);
     frame = r.frame;
     ok = r.ok();
@@ -98,16 +104,16 @@ int run_render(const RenderArgs& a) {
 
 namespace {
 // The demo's C-model rows: every filter (EWA with each weight source) against the float EWA frame.
-void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir);
-void demo_render_relief(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir);
+void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir, int threads);
+void demo_render_relief(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir, int threads);
 // The demo's RTL rows: the texture-unit top == the C-model engine on every pixel.
 // `relief`, `relief_ref`: the scene with its relief and the float EWA + 256-layer relief frame
 // (the relief row); `s`, `ewa_ref`: the texture path.
 bool demo_render_rtl(const scene::Scene& relief, const render::Frame& relief_ref, const scene::Scene& s,
-                     const render::Frame& ewa_ref, const std::string& out_dir);
+                     const render::Frame& ewa_ref, const std::string& out_dir, int threads);
 }  // namespace
 
-bool demo_render(const std::string& out_dir) {
+bool demo_render(const std::string& out_dir, int threads) {
   const scene::Scene s = scene::default_scene();
   const scene::Filter filters[] = {scene::Filter::Nearest, scene::Filter::Bilinear,
                                    scene::Filter::Trilinear, scene::Filter::Ewa};
@@ -144,13 +150,13 @@ bool demo_render(const std::string& out_dir) {
   // measured on its own rows (C model and RTL) against the float reference's 256-layer march.
   const scene::Scene flat = scene::without_relief(s);
   const auto ewa_flat = render::render_ref(flat, scene::Filter::Ewa);
-  demo_render_cmodel(flat, ewa_flat, out_dir);
-  demo_render_relief(s, ewa, out_dir);
-  return demo_render_rtl(s, ewa, flat, ewa_flat, out_dir);
+  demo_render_cmodel(flat, ewa_flat, out_dir, threads);
+  demo_render_relief(s, ewa, out_dir, threads);
+  return demo_render_rtl(s, ewa, flat, ewa_flat, out_dir, threads);
 }
 
 namespace {
-void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir) {
+void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir, int threads) {
   struct Row {
     const char* name;
     scene::Filter filter;
@@ -169,6 +175,7 @@ void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, con
   for (const auto& r : rows) {
     render::CmodelOptions opt;
     opt.weights = r.weights;  // each render takes ~0.5 s: no progress bar
+    opt.threads = threads;
     const auto t0 = std::chrono::steady_clock::now();
     const auto fr = render::render_cmodel(s, r.filter, opt);
     const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -187,9 +194,11 @@ void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, con
   }
 }
 
-void demo_render_relief(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir) {
+void demo_render_relief(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir, int threads) {
   const auto t0 = std::chrono::steady_clock::now();
-  const auto fr = render::render_cmodel(s, scene::Filter::Ewa);
+  render::CmodelOptions opt;
+  opt.threads = threads;
+  const auto fr = render::render_cmodel(s, scene::Filter::Ewa, opt);
   const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const auto png = (std::filesystem::path(out_dir) / "cmodel_ewa_relief.png").string();
   img::write_png_rgba(png, fr.image);
@@ -202,7 +211,7 @@ void demo_render_relief(const scene::Scene& s, const render::Frame& ewa_ref, con
 }
 
 bool demo_render_rtl(const scene::Scene& relief, const render::Frame& relief_ref, const scene::Scene& s,
-                     const render::Frame& ewa_ref, const std::string& out_dir) {
+                     const render::Frame& ewa_ref, const std::string& out_dir, int threads) {
   struct Row {
     const char* name;
     bool has_ewa;  // false: the bilinear-only unit
@@ -226,14 +235,23 @@ bool demo_render_rtl(const scene::Scene& relief, const render::Frame& relief_ref
               " B1 -> B2 -> relief -> filter), every pixel compared with the C-model engine, no stalls:\n");
   std::printf("%-12s %8s %10s %11s %13s %13s %9s %12s  %s\n", "filter", "pixels", "mismatch",
               "PSNR vs EWA", "cycles/pixel", "predicted", "error", "RTL pixel/s", "image");
-  bool ok = true;
-  for (const auto& r : rows) {
+  // The rows on every thread (each simulation has its own Verilator context), printed in order.
+  constexpr int kRows = sizeof rows / sizeof rows[0];
+  std::vector<cosim::RtlRender> results(kRows);
+  par::for_each_index(kRows, threads, [&](int i) {
+    const Row& r = rows[i];
     cosim::RtlRenderOptions o;
     o.has_ewa = r.has_ewa;
     o.filter = r.filter;
     o.weights = r.weights;
     o.relief = r.relief;
-    const auto res = cosim::render_rtl(r.relief ? relief : r.filter ? s : mixed, o);
+    o.threads = 1;  // the rows already share the cores
+    results[static_cast<size_t>(i)] = cosim::render_rtl(r.relief ? relief : r.filter ? s : mixed, o);
+  });
+  bool ok = true;
+  for (int i = 0; i < kRows; ++i) {
+    const Row& r = rows[i];
+    const auto& res = results[static_cast<size_t>(i)];
     ok = ok && res.ok();
     const auto png = (std::filesystem::path(out_dir) / (std::string("rtl_") + r.name + ".png")).string();
     img::write_png_rgba(png, res.frame.image);
