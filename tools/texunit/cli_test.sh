@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CLI tests of `texunit report` and `texunit plan` (registered in CMakeLists.txt, one case each).
+# CLI tests of `texunit report`, `texunit plan` and --threads (registered in CMakeLists.txt, one case each).
 # Usage: cli_test.sh TEXUNIT SOURCE_DIR CASE
 set -euo pipefail
 tu=$1; src=$2; case=$3
@@ -105,6 +105,18 @@ SV
     TU_TEXUNIT="$tu" scripts/plan_area.sh --coarse docs/scenes/ui_quad.json >"$tmp/out"
     cat "$tmp/out"
     grep -q "full: .*HasEwa=1" "$tmp/out" && grep -q "specialised: .*HasEwa=0" "$tmp/out" || fail "HasEwa not set"
+    ;;
+  threads_same_output)
+    # --threads 1 and --threads 3 write the same bytes (C-model render with relief, vector file).
+    for t in 1 3; do
+      "$tu" render default --engine cmodel --threads $t --out "$tmp/r$t" --dump "$tmp/r$t.csv" 2>/dev/null
+      "$tu" vectors --block ewa --set random --count 3000 --seed 4 --threads $t --out "$tmp/v$t.vec" 2>/dev/null
+    done
+    cmp "$tmp/r1/cmodel.png" "$tmp/r3/cmodel.png" || fail "render image differs"
+    cmp "$tmp/r1.csv" "$tmp/r3.csv" || fail "render dump differs"
+    cmp "$tmp/v1.vec" "$tmp/v3.vec" || fail "vector file differs"
+    if "$tu" render default --engine cmodel --threads -1 --out "$tmp/bad" 2>"$tmp/err"; then fail "accepted --threads -1"; fi
+    grep -q "threads" "$tmp/err" || fail "message: $(cat "$tmp/err")"
     ;;
   *) fail "unknown case" ;;
 esac
