@@ -19,6 +19,7 @@ struct Row {
   double rtl_sim_items_per_s = -1;  // -1: not measured (rtl_sim_source says why)
   std::string rtl_sim_source = "not measured: no RTL";
   std::string err_unit;             // what max_abs_err is measured in
+  std::string extra_json;           // block-specific keys, `"k": v, ...` (e.g. brdf: mad_vs_blinn)
   std::string json() const;
 };
 
