@@ -1,5 +1,6 @@
 // The C-model render engine: the bit-accurate pipeline B1 -> B2 -> filter per covered pixel.
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
 #include "pom/relief.hpp"
+#include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
 
 namespace tu::render {
@@ -27,11 +29,11 @@ ewa::fx::Weights weights_of(scene::WeightSource w) {
 // Relief (docs/blocks/relief.md §9): B1's u, v codes are shifted by the material's method
 // (relief::shift_texel_uv_fx, the step the RTL tu_relief_stage implements). The tangent-space
 // view is the shader's float input, quantised to the unit's s16.14 (as render_ref).
-void shift_relief_fx(const scene::Scene& s, const Cover& c, const relief::Maps& maps, const tex::Texture& tx,
-                     int x, int y, int64_t* u, int64_t* v, PixelRecord* rec) {
-  const auto& rel = *s.materials.at(s.objects[static_cast<size_t>(c.object)].material).relief;
+void shift_relief_fx(const scene::Scene& s, const persp::RayCaster& rays, const scene::Relief& rel,
+                     const Cover& c, const relief::Maps& maps, const tex::Texture& tx, int x, int y,
+                     int64_t* u, int64_t* v, PixelRecord* rec) {
   relief::TangentView tv;
-  if (!relief::pixel_view(s, c.object, c.triangle, x, y, &tv)) return;  // no shift (as render_ref)
+  if (!relief::pixel_view(rays, s, c.object, c.triangle, x, y, &tv)) return;  // no shift (as render_ref)
   const int lw = std::countr_zero(static_cast<unsigned>(tx.levels[0].width));
   const int lh = std::countr_zero(static_cast<unsigned>(tx.levels[0].height));
   const auto r = relief::shift_texel_uv_fx(maps, *u, *v, lw, lh, relief::quantise(tv, rel.scale),
@@ -53,6 +55,18 @@ ewa::Engine engine_of(scene::Filter f) {
   return ewa::Engine::Ewa;
 }
 
+std::vector<persp::Unit::Coefs> setup_fx(const scene::Scene& s, size_t object, int tex_w, int tex_h) {
+  const auto ref = setup_ref(s, object, tex_w, tex_h);
+  const auto tris = scene::in_texels(s.objects.at(object), tex_w, tex_h);
+  std::vector<persp::Unit::Coefs> k;
+  try {
+    for (size_t t = 0; t < tris.size(); ++t) k.push_back(persp::Unit::quantise(ref[t], tris[t].name));
+  } catch (const persp::SetupError& e) {
+    throw persp::SetupError(scene::object_where(s, object) + ": " + e.what());
+  }
+  return k;
+}
+
 uint32_t laniso_code(double max_aniso) {
   const double l = std::round(std::ldexp(std::log2(std::max(1.0, max_aniso)), fmt::kEllLogF));
   return static_cast<uint32_t>(std::min(l, std::ldexp(1.0, fmt::kEllAnisoW) - 1));
@@ -62,32 +76,30 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
   const int w = s.camera.width, h = s.camera.height;
   Frame f;
   f.image = img::Rgba8Image(w, h, kBackground);
-  const auto cov = visibility(s);
+  const auto cov = visibility(s, opt.uv_shift ? 1 : opt.threads);
   std::vector<tex::Texture> texs;
   std::vector<std::vector<persp::Unit::Coefs>> coefs;
   for (size_t o = 0; o < s.objects.size(); ++o) {
-    const auto& ob = s.objects[o];
-    texs.push_back(scene::build_texture(s, s.materials.at(ob.material).texture));
-    const auto& base = texs.back().levels[0];
-    std::vector<persp::Unit::Coefs> k;
-    const auto tris = scene::in_texels(ob, base.width, base.height);
-    for (size_t t = 0; t < tris.size(); ++t)
-      k.push_back(persp::Unit::quantise(persp::coefficients(s.camera, tris[t]),
-                                        "object " + std::to_string(o) + " triangle " + std::to_string(t)));
-    coefs.push_back(std::move(k));
+    texs.push_back(scene::build_texture(s, s.materials.at(s.objects[o].material).texture));
+    coefs.push_back(setup_fx(s, o, texs.back().levels[0].width, texs.back().levels[0].height));
   }
   std::vector<std::optional<relief::Maps>> reliefs;  // per object with relief and opt.relief
   for (const auto& o : s.objects)
     reliefs.push_back(opt.relief && s.materials.at(o.material).relief
                           ? std::optional(relief::make_maps(s, o.material))
                           : std::nullopt);
-  for (int y = 0; y < h; ++y) {
-    if (opt.progress && (y % 8 == 0 || y == h - 1))
-      std::fprintf(stderr, "\rC-model render %3d%%", (y + 1) * 100 / h);
+  const auto mats = object_materials(s);
+  const persp::RayCaster rays(s.camera);
+  // Rows on opt.threads threads, each into its own list, joined in row order. The uv_shift hook
+  // may keep state (its call order is part of its contract): one thread then.
+  std::vector<std::vector<PixelRecord>> rows(static_cast<size_t>(h));
+  std::atomic<int> rows_done{0};
+  par::for_each_index(h, opt.uv_shift ? 1 : opt.threads, [&](int y) {
+    auto& pixels = rows[static_cast<size_t>(y)];
     for (int x = 0; x < w; ++x) {
       const Cover c = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)];
       if (c.object < 0) continue;
-      const auto& m = s.materials.at(s.objects[static_cast<size_t>(c.object)].material);
+      const auto& m = *mats[static_cast<size_t>(c.object)];
       const auto& tx = texs[static_cast<size_t>(c.object)];
       const auto& k = coefs[static_cast<size_t>(c.object)][static_cast<size_t>(c.triangle)];
       const int top = tx.num_levels() - 1;
@@ -98,7 +110,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       in.v = px.v;
       PixelRecord rec;
       if (const auto& maps = reliefs[static_cast<size_t>(c.object)]; maps && !px.flag)
-        shift_relief_fx(s, c, *maps, tx, x, y, &in.u, &in.v, &rec);
+        shift_relief_fx(s, rays, *m.relief, c, *maps, tx, x, y, &in.u, &in.v, &rec);
       if (opt.uv_shift) opt.uv_shift(x, y, c.object, &in.u, &in.v);
       in.b2 = ellipse::fx::analytic(
           ellipse::fx::make_in(k, x, y, laniso_code(m.max_aniso), static_cast<uint32_t>(top)));
@@ -113,7 +125,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
         rec.lod = top;
         rec.texels = 1;
         f.image.at(x, y) = rec.color;
-        f.pixels.push_back(rec);
+        pixels.push_back(rec);
         continue;
       }
       switch (filter.value_or(m.filter)) {
@@ -146,9 +158,12 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
         }
       }
       f.image.at(x, y) = rec.color;
-      f.pixels.push_back(rec);
+      pixels.push_back(rec);
     }
-  }
+    if (const int done = ++rows_done; opt.progress && (done % 8 == 0 || done == h))
+      std::fprintf(stderr, "\rC-model render %3d%%", done * 100 / h);
+  });
+  f.pixels = par::concat(std::move(rows));
   if (opt.progress) std::fprintf(stderr, "\n");
   return f;
 }

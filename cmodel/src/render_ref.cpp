@@ -9,26 +9,28 @@
 #include "ewa/ewa_ref.hpp"
 #include "pom/pom_layers.hpp"
 #include "pom/relief.hpp"
+#include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
+#include "texunit/convert.hpp"
 
 namespace tu::render {
 
 namespace {
 constexpr img::Rgba8 kBackground{0, 0, 80, 255};
 
-uint8_t to8(double x) { return static_cast<uint8_t>(std::clamp(std::lround(x), 0L, 255L)); }
+uint8_t to8(double x) { return static_cast<uint8_t>(std::clamp<int64_t>(round_i64(x), 0, 255)); }
 img::Rgba8 to8(const tex::RgbaF& c) { return {to8(c.r), to8(c.g), to8(c.b), to8(c.a)}; }
 
 // Relief: (u, v) (level-0 texels) shifted by the 256-layer exact march in the tangent frame of
 // the covered triangle; the footprint (ellipse) stays that of the unshifted surface. Records N of
 // the material's method (the layer-count debug image).
-void shift_relief(const scene::Scene& s, const Cover& c, const relief::Maps& maps, const tex::Texture& tx,
-                  int x, int y, double* u, double* v, PixelRecord* rec) {
-  const auto& rel = *s.materials.at(s.objects[static_cast<size_t>(c.object)].material).relief;
+void shift_relief(const scene::Scene& s, const persp::RayCaster& rays, const scene::Relief& rel,
+                  const Cover& c, const relief::Maps& maps, const tex::Texture& tx, int x, int y,
+                  double* u, double* v, PixelRecord* rec) {
   relief::TangentView tv;
-  if (!relief::pixel_view(s, c.object, c.triangle, x, y, &tv)) return;
+  if (!relief::pixel_view(rays, s, c.object, c.triangle, x, y, &tv)) return;
   const double W = tx.levels[0].width, H = tx.levels[0].height, one = std::ldexp(1.0, fmt::kPomUvF);
-  rec->relief_n = static_cast<int>(relief::layers_at(maps, std::llround(*u / W * one), std::llround(*v / H * one),
+  rec->relief_n = static_cast<int>(relief::layers_at(maps, round_i64(*u / W * one), round_i64(*v / H * one),
                                                      relief::quantise(tv, rel.scale), rel.method, rel.layers));
   const auto r = relief::shift_uv_ref(maps, *u / W, *v / H, tv, rel.scale);
   *u = r.u * W;
@@ -36,28 +38,61 @@ void shift_relief(const scene::Scene& s, const Cover& c, const relief::Maps& map
 }
 }  // namespace
 
-std::vector<Cover> visibility(const scene::Scene& s) {
+std::vector<persp::Coef9> setup_ref(const scene::Scene& s, size_t object, int tex_w, int tex_h) {
+  std::vector<persp::Coef9> k;
+  try {
+    for (const auto& t : scene::in_texels(s.objects.at(object), tex_w, tex_h))
+      k.push_back(persp::coefficients(s.camera, t));
+  } catch (const persp::SetupError& e) {
+    throw persp::SetupError(scene::object_where(s, object) + ": " + e.what());
+  }
+  return k;
+}
+
+std::vector<Cover> visibility(const scene::Scene& s, int threads) {
   const int w = s.camera.width, h = s.camera.height;
   std::vector<Cover> cov(static_cast<size_t>(w) * static_cast<size_t>(h));
   std::vector<double> depth(cov.size(), std::numeric_limits<double>::infinity());
-  for (size_t o = 0; o < s.objects.size(); ++o) {
-    const auto& tris = s.objects[o].triangles;
-    for (size_t t = 0; t < tris.size(); ++t) {
-      for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-          persp::Hit hit;
-          if (!persp::ray_hit(s.camera, tris[t], x, y, &hit)) continue;
-          if (hit.s < 0 || hit.r < 0 || hit.s + hit.r > 1) continue;
-          const size_t i = static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
-          if (hit.dist < depth[i]) {
-            depth[i] = hit.dist;
-            cov[i] = {static_cast<int>(o), static_cast<int>(t)};
-          }
+  const persp::RayCaster rays(s.camera);
+  struct Box {
+    int object, triangle, x0, x1, y0, y1;  // only the pixels the triangle can cover
+  };
+  std::vector<Box> boxes;
+  for (size_t o = 0; o < s.objects.size(); ++o)
+    for (size_t t = 0; t < s.objects[o].triangles.size(); ++t) {
+      Box b{static_cast<int>(o), static_cast<int>(t), 0, w - 1, 0, h - 1};
+      if (!rays.bounds(s.objects[o].triangles[t], &b.x0, &b.x1, &b.y0, &b.y1))
+        b = {b.object, b.triangle, 0, w - 1, 0, h - 1};
+      boxes.push_back(b);
+    }
+  // Rows are independent; within a pixel the triangles keep the scene's order (ties: first).
+  par::for_each_index(h, threads, [&](int y) {
+    for (const Box& b : boxes) {
+      if (y < b.y0 || y > b.y1) continue;
+      const auto& tri = s.objects[static_cast<size_t>(b.object)].triangles[static_cast<size_t>(b.triangle)];
+      for (int x = b.x0; x <= b.x1; ++x) {
+        persp::Hit hit;
+        if (!rays.hit(tri, x, y, &hit)) continue;
+        if (hit.s < 0 || hit.r < 0 || hit.s + hit.r > 1) continue;
+        const size_t i = static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
+        if (hit.dist < depth[i]) {
+          depth[i] = hit.dist;
+          cov[i] = {b.object, b.triangle};
         }
       }
     }
-  }
+  });
   return cov;
+}
+
+size_t covered(const std::vector<Cover>& cov) {
+  return static_cast<size_t>(std::count_if(cov.begin(), cov.end(), [](const Cover& c) { return c.object >= 0; }));
+}
+
+std::vector<const scene::Material*> object_materials(const scene::Scene& s) {
+  std::vector<const scene::Material*> m;
+  for (const auto& o : s.objects) m.push_back(&s.materials.at(o.material));
+  return m;
 }
 
 Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
@@ -68,31 +103,29 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
   // Per object: texture and per-triangle coefficients.
   std::vector<tex::Texture> texs;
   std::vector<std::vector<persp::Coef9>> coefs;
-  for (const auto& o : s.objects) {
-    const auto& m = s.materials.at(o.material);
-    texs.push_back(scene::build_texture(s, m.texture));
-    const auto& base = texs.back().levels[0];
-    std::vector<persp::Coef9> k;
-    for (const auto& t : scene::in_texels(o, base.width, base.height))
-      k.push_back(persp::coefficients(s.camera, t));
-    coefs.push_back(std::move(k));
+  for (size_t o = 0; o < s.objects.size(); ++o) {
+    texs.push_back(scene::build_texture(s, s.materials.at(s.objects[o].material).texture));
+    coefs.push_back(setup_ref(s, o, texs.back().levels[0].width, texs.back().levels[0].height));
   }
   // Per object with relief: depth / complexity maps (docs/blocks/relief.md §9).
   std::vector<std::optional<relief::Maps>> reliefs;
   for (const auto& o : s.objects)
     reliefs.push_back(s.materials.at(o.material).relief ? std::optional(relief::make_maps(s, o.material))
                                                         : std::nullopt);
+  const auto mats = object_materials(s);
+  const persp::RayCaster rays(s.camera);
+  f.pixels.reserve(covered(cov));
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const Cover c = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)];
       if (c.object < 0) continue;
-      const auto& m = s.materials.at(s.objects[static_cast<size_t>(c.object)].material);
+      const auto& m = *mats[static_cast<size_t>(c.object)];
       const auto& tx = texs[static_cast<size_t>(c.object)];
       const persp::Coef9& k = coefs[static_cast<size_t>(c.object)][static_cast<size_t>(c.triangle)];
       double u, v, q;
       persp::eval_ref(k, x, y, &u, &v, &q);
       PixelRecord rec;
-      if (const auto& maps = reliefs[static_cast<size_t>(c.object)]) shift_relief(s, c, *maps, tx, x, y, &u, &v, &rec);
+      if (const auto& maps = reliefs[static_cast<size_t>(c.object)]) shift_relief(s, rays, *m.relief, c, *maps, tx, x, y, &u, &v, &rec);
       rec.x = x, rec.y = y, rec.object = c.object, rec.u = u, rec.v = v;
       const auto j = ellipse::analytic(k, x, y);
       const ellipse::FootprintParams fp{m.max_aniso, static_cast<double>(tx.num_levels() - 1)};
@@ -101,7 +134,7 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
       rec.footprint_lod = foot.lod;
       switch (filter.value_or(m.filter)) {
         case scene::Filter::Nearest:
-          rec.color = tx.fetch(0, static_cast<int64_t>(std::floor(u)), static_cast<int64_t>(std::floor(v)));
+          rec.color = tx.fetch(0, floor_i64(u), floor_i64(v));
           rec.texels = 1;
           break;
         case scene::Filter::Bilinear:

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "ellipse/ellipse_fx.hpp"
 
@@ -43,6 +44,40 @@ TEST(EllipseFx, Log2AndIsqrtUnits) {
     ASSERT_TRUE(r * r <= s && (r + 1) * (r + 1) > s);
   }
   for (uint64_t v = 1; v < 5000; ++v) ASSERT_EQ(fx::log2_fx(u128(1) << 40) - 40 * 2048, 0) << v;
+}
+
+// The table-driven log2 equals the hardware's squaring chain on every mantissa, so log2_fx and
+// log2_fx_serial agree on every input (x only enters through msb and its top mantissa bits).
+TEST(EllipseFx, Log2TableExhaustive) {
+  const uint64_t lo = uint64_t(1) << (fmt::kEllLogMantW - 1), hi = uint64_t(1) << fmt::kEllLogMantW;
+  for (uint64_t m = lo; m < hi; ++m) ASSERT_EQ(fx::log2_frac(m), fx::log2_frac_serial(m)) << m;
+  std::mt19937_64 rng(11);
+  for (int t = 0; t < 200000; ++t) {
+    const u128 x = (u128(rng()) << 64 | rng()) >> (rng() % 128);
+    if (x != 0) ASSERT_EQ(fx::log2_fx(x), fx::log2_fx_serial(x));
+  }
+  for (int b = 0; b < 128; ++b)
+    for (const u128 x : {u128(1) << b, (u128(1) << b) + 1, (u128(1) << b) - 1, ~u128(0) >> b})
+      if (x != 0) ASSERT_EQ(fx::log2_fx(x), fx::log2_fx_serial(x)) << b;
+}
+
+// Floating-point estimate + correction equals the bit-serial square root: random inputs of every
+// length, perfect squares and their neighbours, the double/long-double switch and the extremes.
+TEST(EllipseFx, IsqrtFastEqualsSerial) {
+  std::vector<u128> xs = {0, 1, 2, 3, 4, ~u128(0), ~u128(0) - 1, u128(1) << 52,
+                          (u128(1) << 52) - 1, (u128(1) << 52) + 1};
+  std::mt19937_64 rng(12);
+  for (int b = 1; b <= 64; ++b)
+    for (int t = 0; t < 200; ++t) {
+      const uint64_t k = b == 64 ? rng() : rng() >> (64 - b);
+      const u128 sq = u128(k) * k;
+      xs.push_back(sq);
+      xs.push_back(sq + 1);
+      if (sq) xs.push_back(sq - 1);
+      if (k) xs.push_back(sq + 2 * u128(k));  // (k+1)^2 - 1
+    }
+  for (int t = 0; t < 200000; ++t) xs.push_back((u128(rng()) << 64 | rng()) >> (rng() % 128));
+  for (const u128 x : xs) ASSERT_EQ(fx::isqrt(x), fx::isqrt_serial(x));
 }
 
 struct Stat {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "texunit/parallel.hpp"
+
 namespace tu::blocks {
 
 Block make_reciprocal();  // reciprocal_block.cpp
@@ -53,7 +55,8 @@ Row pick(const Row& row, const std::vector<int>& idx) {
   return r;
 }
 
-vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count, uint64_t seed) {
+vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count, uint64_t seed,
+                         int threads) {
   if (std::find(b.sets.begin(), b.sets.end(), set) == b.sets.end())
     throw std::invalid_argument("block '" + b.name + "' has no set '" + set + "'");
   vec::VectorFile v;
@@ -64,15 +67,25 @@ vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count,
   const auto in_idx = v.indices(vec::Role::In);
   const auto out_idx = v.indices(vec::Role::Out);
   const auto ref_idx = v.indices(vec::Role::Ref);
-  for (const Row& in : b.inputs(set, count, seed)) {
-    Row row(v.fields.size());
-    const Row out = b.model(in);
-    const Row ref = b.ref(in);
-    for (size_t i = 0; i < in_idx.size(); ++i) row[static_cast<size_t>(in_idx[i])] = in[i];
-    for (size_t i = 0; i < out_idx.size(); ++i) row[static_cast<size_t>(out_idx[i])] = out[i];
-    for (size_t i = 0; i < ref_idx.size(); ++i) row[static_cast<size_t>(ref_idx[i])] = ref[i];
-    v.rows.push_back(std::move(row));
-  }
+  // The inputs come from one seeded stream (serial); model and reference are pure functions of
+  // a row, so chunks of rows run on every thread, each into its own slots.
+  const std::vector<Row> ins = b.inputs(set, count, seed);
+  v.rows.resize(ins.size());
+  constexpr size_t kChunk = 512;
+  const int chunks = static_cast<int>((ins.size() + kChunk - 1) / kChunk);
+  par::for_each_index(chunks, threads, [&](int c) {
+    const size_t end = std::min(ins.size(), (static_cast<size_t>(c) + 1) * kChunk);
+    for (size_t r = static_cast<size_t>(c) * kChunk; r < end; ++r) {
+      const Row& in = ins[r];
+      Row row(v.fields.size());
+      const Row out = b.model(in);
+      const Row ref = b.ref(in);
+      for (size_t i = 0; i < in_idx.size(); ++i) row[static_cast<size_t>(in_idx[i])] = in[i];
+      for (size_t i = 0; i < out_idx.size(); ++i) row[static_cast<size_t>(out_idx[i])] = out[i];
+      for (size_t i = 0; i < ref_idx.size(); ++i) row[static_cast<size_t>(ref_idx[i])] = ref[i];
+      v.rows[r] = std::move(row);
+    }
+  });
   return v;
 }
 

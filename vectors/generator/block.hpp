@@ -45,8 +45,10 @@ struct Block {
 const std::vector<Block>& all();
 const Block& find(const std::string& name);  // throws std::invalid_argument listing known names
 
-// A full vector file: inputs, C-model outputs and the reference, for a set of a block.
-vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count, uint64_t seed);
+// A full vector file: inputs, C-model outputs and the reference, for a set of a block. Model and
+// reference rows on `threads` threads (<= 0: every core); the same file for any count.
+vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count, uint64_t seed,
+                         int threads = 0);
 
 // Split/join a file row by role.
 Row pick(const Row& row, const std::vector<int>& idx);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
 #include "reciprocal/reciprocal.hpp"
 
@@ -67,7 +69,9 @@ void lod_unit(const In& in, const Ell& el, bool f_zero, int64_t lf, int64_t lq, 
   const i128 d = el.a - el.c, b = el.b;
   const int k = std::max(0, msb(s) - (fmt::kEllNrmW - 1));
   const i128 sn = static_cast<i128>(s >> k), dn = d >> k, bn = b >> k;
-  const uint64_t r = isqrt(static_cast<u128>(dn * dn + bn * bn));
+  // |d|, |b| <= s < 2^(NrmW + 1) after the shift: the squares fit int64 (exact as before).
+  const int64_t dn64 = static_cast<int64_t>(dn), bn64 = static_cast<int64_t>(bn);
+  const uint64_t r = isqrt(static_cast<u128>(static_cast<uint64_t>(dn64 * dn64 + bn64 * bn64)));
   const u128 lam = static_cast<u128>(sn) + r;  // 2 lambda_max, scaled by 2^(k - NumF)
   const int64_t ll = log2_fx(lam) + int64_t(k - 2 * kNF - 1) * (1 << kL1);  // log2 lambda_max
   const int64_t lmaj2 = ll - 4 * lq;                                     // 2 log2 major
@@ -231,27 +235,100 @@ Local random_local(std::mt19937_64& rng) {
   return l;
 }
 
-int64_t log2_fx(u128 x) {
+uint32_t log2_frac_serial(uint64_t m) {
   constexpr int mw = fmt::kEllLogMantW;
-  const int p = msb(x);
-  uint64_t m = static_cast<uint64_t>(top_bits(x, mw));
-  int64_t fr = 0;
+  uint32_t fr = 0;
   for (int i = 0; i < kL1; ++i) {
     m = static_cast<uint64_t>((u128(m) * m) >> (mw - 1));
     const bool bit = m >> mw;
     if (bit) m >>= 1;
     fr = (fr << 1) | (bit ? 1 : 0);
   }
-  return int64_t(p) * (1 << kL1) + fr;
+  return fr;
 }
 
-uint64_t isqrt(u128 x) {
+namespace {
+// log2_frac_serial is non-decreasing in m (a truncated square keeps the order, and a bit that
+// differs makes the larger mantissa's result larger), so it is a staircase of 2^kL1 steps over
+// the mantissas: kStep[k] = the smallest mantissa whose result is >= k. A mantissa's bucket (its
+// top kL1 fraction bits) is at most 1.5 steps wide (d result / d m <= 2^kL1 / (2^(mw-1) ln 2)),
+// so from the result at the bucket's first mantissa two branch-free steps reach the answer (the
+// constructor checks that no bucket holds more than two steps).
+struct Log2Table {
+  static constexpr int kMw = fmt::kEllLogMantW;
+  static constexpr int kSteps = 1 << kL1;
+  static constexpr int kBucketShift = kMw - 1 - kL1;
+  std::vector<uint32_t> step;       // kSteps + 1 entries, step[kSteps] = 2^mw (sentinel)
+  std::vector<uint16_t> at_bucket;  // result at each bucket's first mantissa
+  Log2Table() : step(kSteps + 1), at_bucket(kSteps) {
+    const uint64_t lo = uint64_t(1) << (kMw - 1), hi = uint64_t(1) << kMw;
+    step[0] = static_cast<uint32_t>(lo);
+    step[kSteps] = static_cast<uint32_t>(hi);
+    for (int k = 1; k < kSteps; ++k) {  // bisection for the first mantissa reaching k
+      uint64_t a = step[k - 1], b = hi;  // result(a) < k or a is the lowest candidate
+      while (a < b) {
+        const uint64_t mid = a + (b - a) / 2;
+        if (log2_frac_serial(mid) >= static_cast<uint32_t>(k)) b = mid;
+        else a = mid + 1;
+      }
+      step[k] = static_cast<uint32_t>(a);
+    }
+    for (int i = 0; i < kSteps; ++i)
+      at_bucket[i] = static_cast<uint16_t>(log2_frac_serial(lo + (uint64_t(i) << kBucketShift)));
+    for (int i = 0; i < kSteps; ++i) {
+      const uint64_t last = lo + (uint64_t(i + 1) << kBucketShift) - 1;
+      if (log2_frac_serial(last) > at_bucket[i] + 2u)
+        throw std::logic_error("log2 table: a bucket holds more than two steps");
+    }
+  }
+  uint32_t frac(uint64_t m) const {
+    uint32_t k = at_bucket[(m >> kBucketShift) & (kSteps - 1)];
+    k += m >= step[k + 1];  // k + 1 <= kSteps: step[kSteps] is the sentinel 2^mw > m
+    k += m >= step[k + 1];
+    return k;
+  }
+};
+const Log2Table& log2_table() {
+  static const Log2Table t;
+  return t;
+}
+}  // namespace
+
+uint32_t log2_frac(uint64_t m) { return log2_table().frac(m); }
+
+int64_t log2_fx_serial(u128 x) {
+  return int64_t(msb(x)) * (1 << kL1) +
+         log2_frac_serial(static_cast<uint64_t>(top_bits(x, fmt::kEllLogMantW)));
+}
+
+int64_t log2_fx(u128 x) {
+  return int64_t(msb(x)) * (1 << kL1) +
+         log2_table().frac(static_cast<uint64_t>(top_bits(x, fmt::kEllLogMantW)));
+}
+
+uint64_t isqrt_serial(u128 x) {
   u128 r = 0;
   for (int b = 63; b >= 0; --b) {
     const u128 t = r | (u128(1) << b);
     if (t * t <= x) r = t;
   }
   return static_cast<uint64_t>(r);
+}
+
+uint64_t isqrt(u128 x) {
+  // Floating-point estimate, then exact integer correction. Below 2^52 x is exact in a double
+  // and the correctly rounded root is off by at most one; above, the 64-bit long double
+  // significand keeps the estimate within a few units of the root.
+  uint64_t r;
+  if (x < (u128(1) << 52)) {
+    r = static_cast<uint64_t>(std::sqrt(static_cast<double>(static_cast<uint64_t>(x))));
+  } else {
+    const long double e = std::sqrt(static_cast<long double>(x));
+    r = e >= 0x1p64L ? ~uint64_t(0) : static_cast<uint64_t>(e);
+  }
+  while (u128(r) * r > x) --r;
+  while (r != ~uint64_t(0) && u128(r + 1) * (r + 1) <= x) ++r;
+  return r;
 }
 
 Out analytic(const In& in) {

@@ -111,9 +111,19 @@ Out analytic(const In& in);
 Out forward_difference(const In& in, int64_t g, int64_t h);
 
 // Log2 unit: x > 0 -> log2(x) with EllLogF + 1 fraction bits (truncating squarings).
+// log2_fx_serial is the hardware's algorithm (EllLogF + 1 truncating squarings of the
+// EllLogMantW-bit mantissa); log2_fx gives the same bits from a staircase table of the
+// squarings' result over the mantissas (equal on every mantissa: EllipseFx.Log2TableExhaustive).
 int64_t log2_fx(u128 x);
-// Integer square root, floor.
+int64_t log2_fx_serial(u128 x);
+// The fraction part alone for a mantissa m in [2^(EllLogMantW-1), 2^EllLogMantW).
+uint32_t log2_frac(uint64_t m);
+uint32_t log2_frac_serial(uint64_t m);
+// Integer square root, floor: isqrt_serial is the bit-serial restoring algorithm (one result
+// bit per step); isqrt gives the same result from a floating-point estimate and an exact
+// correction (EllipseFx.IsqrtFastEqualsSerial).
 uint64_t isqrt(u128 x);
+uint64_t isqrt_serial(u128 x);
 
 // Real values of the outputs.
 double lod_value(const Out& o);

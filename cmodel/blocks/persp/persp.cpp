@@ -54,23 +54,57 @@ Coef9 coefficients(const Camera& cam, const Triangle& t) {
           glm::dot(nq, b.dx), glm::dot(nq, b.dy), glm::dot(nq, b.d0)};
 }
 
-bool ray_hit(const Camera& cam, const Triangle& t, int x, int y, Hit* h) {
+RayCaster::RayCaster(const Camera& cam) : width_(cam.width), height_(cam.height) {
   const Basis b = basis(cam);
-  // Per-pixel ray, built from the pixel centre directly (not from the linear form above).
-  const double th = std::tan(cam.fovy_deg * M_PI / 360.0);
-  const double aspect = static_cast<double>(cam.width) / cam.height;
+  th_ = std::tan(cam.fovy_deg * M_PI / 360.0);
+  aspect_ = static_cast<double>(cam.width) / cam.height;
   const glm::dvec3 right = glm::normalize(glm::cross(b.fwd, v3(cam.up)));
   const glm::dvec3 up = glm::cross(right, b.fwd);
-  const double nx = 2.0 * (x + 0.5) / cam.width - 1.0, ny = 1.0 - 2.0 * (y + 0.5) / cam.height;
-  const glm::dvec3 d = glm::normalize(b.fwd + right * (nx * th * aspect) + up * (ny * th));
+  for (int k = 0; k < 3; ++k) {
+    pos_[k] = b.pos[k];
+    fwd_[k] = b.fwd[k];
+    right_[k] = right[k];
+    up_[k] = up[k];
+  }
+}
+
+bool RayCaster::hit(const Triangle& t, int x, int y, Hit* h) const {
+  // Per-pixel ray, built from the pixel centre directly (not from the linear form above).
+  const glm::dvec3 fwd = v3(fwd_), right = v3(right_), up = v3(up_);
+  const double nx = 2.0 * (x + 0.5) / width_ - 1.0, ny = 1.0 - 2.0 * (y + 0.5) / height_;
+  const glm::dvec3 d = glm::normalize(fwd + right * (nx * th_ * aspect_) + up * (ny * th_));
   const glm::dvec3 p0 = v3(t.v[0].p), e1 = v3(t.v[1].p) - p0, e2 = v3(t.v[2].p) - p0;
   const glm::dmat3 m(e1, e2, -d);  // columns
   const double det = glm::determinant(m);
   if (std::fabs(det) < 1e-300) return false;
-  const glm::dvec3 srt = glm::inverse(m) * (b.pos - p0);
+  const glm::dvec3 srt = glm::inverse(m) * (v3(pos_) - p0);
   if (srt.z <= 0) return false;
   *h = {srt.x, srt.y, srt.z};
   return true;
+}
+
+bool RayCaster::bounds(const Triangle& t, int* x0, int* x1, int* y0, int* y1) const {
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (const auto& v : t.v) {
+    const glm::dvec3 rel = v3(v.p) - v3(pos_);
+    const double z = glm::dot(rel, v3(fwd_));
+    if (!(z > 1e-9 * glm::length(rel))) return false;
+    // Inverse of the ray's pixel-centre mapping: nx = 2 (x + 0.5) / W - 1, ny = 1 - 2 (y + 0.5) / H.
+    const double nx = glm::dot(rel, v3(right_)) / (z * th_ * aspect_);
+    const double ny = glm::dot(rel, v3(up_)) / (z * th_);
+    const double p[2] = {(nx + 1) * width_ / 2 - 0.5, (1 - ny) * height_ / 2 - 0.5};
+    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  }
+  // Clamped as doubles first: a far-off projection does not fit an int. x0 > x1: nothing.
+  auto clip = [](double v, int n) { return static_cast<int>(std::clamp(v, -1.0, double(n))); };
+  *x0 = clip(std::floor(lo[0]) - 2, width_), *x1 = clip(std::ceil(hi[0]) + 2, width_ - 1);
+  *y0 = clip(std::floor(lo[1]) - 2, height_), *y1 = clip(std::ceil(hi[1]) + 2, height_ - 1);
+  *x0 = std::max(*x0, 0), *y0 = std::max(*y0, 0);
+  return true;
+}
+
+bool ray_hit(const Camera& cam, const Triangle& t, int x, int y, Hit* h) {
+  return RayCaster(cam).hit(t, x, y, h);
 }
 
 bool ray_uv(const Camera& cam, const Triangle& t, int x, int y, double* u, double* v) {

@@ -251,6 +251,23 @@ struct Hit {
 };
 bool ray_hit(const Camera& cam, const Triangle& t, int x, int y, Hit* h);
 
+// ray_hit for many pixels of one camera: the camera basis (normalize, cross, tan) is computed
+// once; hit() performs ray_hit's per-pixel arithmetic unchanged, so the results are the same bits.
+class RayCaster {
+ public:
+  explicit RayCaster(const Camera& cam);
+  bool hit(const Triangle& t, int x, int y, Hit* h) const;
+  // Pixel rectangle [x0, x1] x [y0, y1] (clipped to the image) outside which no pixel centre's
+  // ray hits inside t: the vertices' projections plus a 2-pixel margin (far beyond rounding).
+  // False when a vertex is not in front of the eye (the projection then bounds nothing).
+  bool bounds(const Triangle& t, int* x0, int* x1, int* y0, int* y1) const;
+
+ private:
+  double pos_[3], fwd_[3], right_[3], up_[3];
+  double th_, aspect_;
+  int width_, height_;
+};
+
 // A synthetic mapping (any 3x3 map with q > 0 on the span is the view of some plane): on row y,
 // q runs linearly from q0 at x0 to q1 at x1 and u (v) from u0 (v0) to u1 (v1) projectively;
 // bq, bu, bv are the per-row slopes H, B, E. Used by the drift study and the vector sets.

@@ -203,10 +203,15 @@ uint64_t stage_cycles(const std::vector<StagePixel>& px, int fifo_depth) {
   return px.empty() ? 0 : last + 1;
 }
 
-bool pixel_view(const scene::Scene& s, int object, int triangle, int x, int y, TangentView* out) {
+bool pixel_view(const persp::RayCaster& rays, const scene::Scene& s, int object, int triangle,
+                int x, int y, TangentView* out) {
   const auto& tri = s.objects[static_cast<size_t>(object)].triangles[static_cast<size_t>(triangle)];
   persp::Hit hit;
-  return persp::ray_hit(s.camera, tri, x, y, &hit) && tangent_view(tri, s.camera.pos, hit.s, hit.r, out);
+  return rays.hit(tri, x, y, &hit) && tangent_view(tri, s.camera.pos, hit.s, hit.r, out);
+}
+
+bool pixel_view(const scene::Scene& s, int object, int triangle, int x, int y, TangentView* out) {
+  return pixel_view(persp::RayCaster(s.camera), s, object, triangle, x, y, out);
 }
 
 }  // namespace tu::relief

@@ -46,6 +46,9 @@ bool tangent_view(const persp::Triangle& t, const double eye[3], double s, doubl
 // through the pixel centre, as both render engines use it). False: the ray misses the triangle's
 // plane or the uv mapping is degenerate (no shift).
 bool pixel_view(const scene::Scene& s, int object, int triangle, int x, int y, TangentView* out);
+// The same with the camera's rays prepared once (`rays` built from s.camera).
+bool pixel_view(const persp::RayCaster& rays, const scene::Scene& s, int object, int triangle,
+                int x, int y, TangentView* out);
 // The view as the fixed-point unit takes it: s16.14 components, S in u0.16 (clamped to < 1).
 pom::View quantise(const TangentView& v, double scale);
 

@@ -41,7 +41,17 @@ struct Frame {
 struct Cover {
   int object = -1, triangle = -1;
 };
-std::vector<Cover> visibility(const scene::Scene& s);
+// Rows on `threads` threads (<= 0: every core); the same result for any count.
+std::vector<Cover> visibility(const scene::Scene& s, int threads = 0);
+size_t covered(const std::vector<Cover>& cov);  // pixels with an object
+// Each object's material (resolved once per render instead of per pixel by name).
+std::vector<const scene::Material*> object_materials(const scene::Scene& s);
+
+// Set-up of an object's triangles (uv in level-0 texels of a tex_w x tex_h texture): the float
+// coefficients, and the same quantised to B1's formats. A persp::SetupError names the file and
+// the object as scene::object_where does, then the triangle.
+std::vector<persp::Coef9> setup_ref(const scene::Scene& s, size_t object, int tex_w, int tex_h);
+std::vector<persp::Unit::Coefs> setup_fx(const scene::Scene& s, size_t object, int tex_w, int tex_h);
 
 // Float reference render. `filter`, when given, overrides every material's filter.
 Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter = {});
@@ -60,6 +70,9 @@ struct CmodelOptions {
   // the tu_pom_unit / tu_iter_parallax arithmetic) before uv_shift and the filter. false: the
   // texture path alone, as the RTL texture-unit top (no relief stage yet) computes it.
   bool relief = true;
+  // Threads for visibility and the pixels (rows; <= 0: every core). The frame is the same for
+  // any count; a render with a uv_shift hook runs on one thread.
+  int threads = 0;
 };
 // The options of the texture path alone (relief off), for comparisons with the RTL top.
 inline CmodelOptions texture_path_only() {
