@@ -21,6 +21,7 @@
 
 #include "block.hpp"
 #include "cosim.hpp"
+#include "brdf/brdf_error.hpp"
 #include "gauss/clip.hpp"
 #include "gauss/schemes.hpp"
 #include "gauss/weight.hpp"
@@ -417,13 +418,49 @@ std::vector<Spec> registry_specs() {
   // the exhaustive producers below.
   for (const auto& b : blocks::all()) {
     const bool known = b.name.rfind("clip_", 0) == 0 || b.name.rfind("weight_table", 0) == 0 ||
+                       b.name.rfind("brdf_", 0) == 0 ||
                        b.name == "gauss_weight" ||
                        std::any_of(v.begin(), v.end(), [&](const Spec& x) { return x.block == b.name; });
     if (!known) v.push_back({b.name, b.name, b.name, rtl_or_null(b.name), "tu_" + b.name, b.err_metric});
   }
+  // The BRDF models share one section: one row per model (brdf_rows adds the Blinn measures).
+  for (const auto& b : blocks::all())
+    if (b.name.rfind("brdf_", 0) == 0)
+      v.push_back({"brdf", b.name.substr(5), b.name, rtl_or_null(b.name), "tu_" + b.name,
+                   "F (0..1.024, 1 ULP = 2^-8) against the model's own float formula"});
   return v;
 }
 const std::vector<std::string> kGauss = {"clip_volume", "gauss_weight", "weight_table"};
+
+std::string fmt_g(double x, const char* f = "%.4g") {
+  char b[64];
+  std::snprintf(b, sizeof b, f, x);
+  return b;
+}
+
+// brdf rows: the registry row of each model plus its measures against Blinn on the thesis grid
+// (deg 0..90 x n 1..1000): MAD, max |F - c^n| and the relative error at the epicentre F_B = 0.3.
+std::vector<Row> brdf_rows(const Options& opt, AreaCache& cache) {
+  std::vector<Row> out;
+  for (const auto& s : registry_specs()) {
+    if (s.group != "brdf") continue;
+    Row r = registry_row(s, opt, cache);
+    const std::string model = s.variant == "msh_seq" ? "msh" : s.variant;
+    for (brdf::Model m : brdf::kModels) {
+      if (brdf::name(m) != model) continue;
+      const auto g = brdf::vs_blinn_fx(m);
+      const int n_lo = m == brdf::Model::Dsh ? 9 : 2;  // the thesis's ranges (F_dsh: n >= 9)
+      const double ep = brdf::epicentre_rel_fx(m, n_lo);
+      r.extra_json = "\"mad_vs_blinn\": " + jnum(g.mad) + ", \"max_err_vs_blinn\": " + jnum(g.max_abs) +
+                     ", \"epicentre_rel_err\": " + jnum(ep) + ", \"epicentre_n_from\": " + std::to_string(n_lo);
+      r.notes = "MAD vs Blinn " + fmt_g(g.mad) + ", max |F - c^n| " + fmt_g(g.max_abs) +
+                ", epicentre rel. err " + fmt_g(100 * ep, "%.2f") + " % (n " + std::to_string(n_lo) +
+                "..1000); " + r.notes;
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
 
 // Pareto frontier (minimise both): indices sorted by x.
 std::vector<size_t> frontier(const std::vector<std::pair<double, double>>& pts) {
@@ -509,12 +546,6 @@ void plots(const std::vector<Row>& rs, const std::string& dir) {
   std::cerr << "wrote plots to " << dir << "\n";
 }
 
-std::string fmt_g(double x, const char* f = "%.4g") {
-  char b[64];
-  std::snprintf(b, sizeof b, f, x);
-  return b;
-}
-
 void markdown(const std::vector<Row>& rs, const Options& opt) {
   std::ostringstream o;
   o << "# Error against run time: every block and variant\n\n"
@@ -586,7 +617,7 @@ std::string Row::json() const {
          jmeasured(fmax_mhz, stdcell_source) + ", \"latency_ns\": " + jmeasured(latency_ns(), stdcell_source) +
          ", \"ns_per_item\": " + jmeasured(ns_per_item(), stdcell_source) + ", \"stdcell_cells\": " +
          jint(stdcell_cells, stdcell_source) + ", \"critical_path\": " + jstr(critical_path) +
-         ", \"stdcell_source\": " + jstr(stdcell_source) + ", \"notes\": " + jstr(notes) + "}";
+         ", \"stdcell_source\": " + jstr(stdcell_source) + ", \"notes\": " + jstr(notes) + (extra_json.empty() ? "" : ", " + extra_json) + "}";
 }
 
 std::vector<std::string> groups() {
@@ -614,6 +645,7 @@ std::vector<Row> rows(const Options& opt) {
     if (g == "clip_volume") r = clip_rows(opt, cache);
     else if (g == "gauss_weight") r = weight_rows(opt, cache);
     else if (g == "weight_table") r = table_rows(opt, cache);
+    else if (g == "brdf") r = brdf_rows(opt, cache);
     else if (is_relief_block(g)) {
       // report_relief.cpp: the engines' cycles per pixel on the bricks scene stream, pom_unit with
       // its stages pom_setup and pom_refine; area from the same Yosys cache.

@@ -25,6 +25,7 @@ struct Row {
   std::string stdcell_source = "not measured: no RTL", critical_path;
   double latency_ns() const { return period_ns < 0 || latency_cycles < 0 ? -1 : static_cast<double>(latency_cycles) * period_ns; }
   double ns_per_item() const { return period_ns < 0 || latency_cycles < 0 ? -1 : ii_cycles * period_ns; }
+  std::string extra_json;           // block-specific keys, `"k": v, ...` (e.g. brdf: mad_vs_blinn)
   std::string json() const;
 };
 
