@@ -44,7 +44,7 @@ int cmd_vectors(const std::string& block, const std::string& set, uint64_t count
 }
 
 int cmd_cosim(const std::string& block, const std::string& file, double stall, uint64_t seed,
-              const std::string& fst, bool json) {
+              const std::string& fst, bool json, const std::string& rtl) {
   const auto vf = tu::vec::read(file);
   if (vf.block != block)
     throw std::invalid_argument(file + ": vectors are for block '" + vf.block + "', not '" +
@@ -58,6 +58,7 @@ int cmd_cosim(const std::string& block, const std::string& file, double stall, u
   opt.run.stall_prob = stall;
   opt.run.seed = seed;
   opt.run.fst_path = fst_tmp;
+  opt.rtl = rtl;
   tu::cosim::Report rep;
   try {
     rep = tu::cosim::run(vf, opt);
@@ -227,6 +228,8 @@ int main(int argc, char** argv) {
   cos->add_option("--seed", seed, "stall pattern seed")->check(tu::cli::non_negative_integer());
   cos->add_option("--fst", fst, "write an FST waveform");
   cos->add_flag("--json", json, "print one JSON object");
+  std::string rtl_variant;
+  cos->add_option("--rtl", rtl_variant, "RTL variant to run on the block's vectors (e.g. perlin3d_serial)");
 
   auto* gen = app.add_subcommand("gen-rtl", "write rtl/generated/ from the C model's formats and tables");
   gen->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
@@ -314,7 +317,7 @@ int main(int argc, char** argv) {
     if (*vec) return cmd_vectors(block, set, count, seed, out, threads);
     if (*rnd) return tu::cli::run_render(render_args);
     if (*sysm) return tu::cli::run_sysmodel(sysmodel_args);
-    if (*cos) return cmd_cosim(block, file, stall, seed, fst, json);
+    if (*cos) return cmd_cosim(block, file, stall, seed, fst, json, rtl_variant);
     if (*gen) return cmd_gen_rtl(root, check);
     if (*rep) {
       ro.yosys = !no_yosys;

@@ -414,6 +414,12 @@ std::vector<Spec> registry_specs() {
       {"pom_march", "pom_march", "pom_march", rtl_or_null("pom_march"), "tu_pom_march", "march steps"},
       {"iter_parallax", "iter_parallax", "iter_parallax", rtl_or_null("iter_parallax"), "tu_iter_parallax",
        "uv in 2^-16 units"}};
+  // Perlin noise: both schemes on the same vectors (docs/blocks/noise.md).
+  for (const std::string d : {"3d", "2d"}) {
+    v.push_back({"perlin" + d, "pipelined", "perlin" + d, rtl_or_null("perlin" + d), "tu_perlin" + d, "fbm value 0..1"});
+    v.push_back({"perlin" + d, "octave_serial", "perlin" + d, rtl_or_null("perlin" + d + "_serial"),
+                 "tu_perlin" + d + "_serial", "fbm value 0..1"});
+  }
   // Any other registry block (e.g. a new one) gets a row of its own; the Gaussian blocks have
   // the exhaustive producers below.
   for (const auto& b : blocks::all()) {
