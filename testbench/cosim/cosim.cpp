@@ -19,6 +19,7 @@ RtlBlock rtl_iter_parallax();  // iter_parallax_rtl.cpp
 std::vector<RtlBlock> rtl_pom_unit();  // pom_unit_rtl.cpp
 RtlBlock rtl_ellipse();     // ellipse_rtl.cpp
 RtlBlock rtl_ewa();         // ewa_rtl.cpp
+std::vector<RtlBlock> rtl_brdf();  // brdf_rtl.cpp
 std::vector<RtlBlock> rtl_perlin();  // perlin_rtl.cpp (incl. the octave-serial variants)
 
 const RtlBlock& find_rtl(const std::string& name) {
@@ -31,6 +32,9 @@ const RtlBlock& find_rtl(const std::string& name) {
     if (r.name == name) return r;
   static const std::vector<RtlBlock> pom_unit = rtl_pom_unit();
   for (const auto& r : pom_unit)
+    if (r.name == name) return r;
+  static const std::vector<RtlBlock> brdf = rtl_brdf();
+  for (const auto& r : brdf)
     if (r.name == name) return r;
   static const std::vector<RtlBlock> perlin = rtl_perlin();
   for (const auto& r : perlin)
