@@ -14,7 +14,6 @@
 #include <functional>
 #include <iostream>
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -25,6 +24,7 @@
 #include "gauss/clip.hpp"
 #include "gauss/schemes.hpp"
 #include "gauss/weight.hpp"
+#include "texunit/rtl_manifest.hpp"
 
 namespace fs = std::filesystem;
 
@@ -113,45 +113,10 @@ uint64_t fnv1a(const std::string& s, uint64_t h = 1469598103934665603ull) {
   return h;
 }
 
-// The files a top needs: the package(s) it or its submodules name, then the module files of
-// every tu_* module reachable from the top (sorted, so the Yosys input does not depend on order
-// of discovery).
 }  // namespace
 
 std::vector<std::string> rtl_files(const std::string& root, const std::string& top) {
-  std::map<std::string, std::string> module_file, text;
-  const std::regex decl(R"(^\s*(module|package)\s+(\w+))");
-  for (const auto& e : fs::recursive_directory_iterator(fs::path(root) / "rtl")) {
-    if (e.path().extension() != ".sv") continue;
-    const std::string t = slurp(e.path());
-    std::istringstream ls(t);
-    for (std::string line; std::getline(ls, line);) {
-      std::smatch m;
-      if (std::regex_search(line, m, decl)) module_file[m[2]] = e.path().string();
-    }
-    text[e.path().string()] = t;
-  }
-  if (!module_file.count(top)) throw std::invalid_argument("report: RTL top '" + top + "' not found under " + root + "/rtl");
-  std::set<std::string> files, pkgs;
-  std::vector<std::string> todo = {top};
-  const std::regex ident(R"(\btu_\w+)");
-  while (!todo.empty()) {
-    const std::string f = module_file.at(todo.back());
-    todo.pop_back();
-    if (!files.insert(f).second) continue;
-    // Names in comments are not instances.
-    const std::string t = std::regex_replace(text.at(f), std::regex("//[^\n]*"), "");
-    for (auto it = std::sregex_iterator(t.begin(), t.end(), ident); it != std::sregex_iterator(); ++it) {
-      const std::string n = it->str();
-      if (!module_file.count(n)) continue;
-      if (n.size() > 4 && n.compare(n.size() - 4, 4, "_pkg") == 0) pkgs.insert(module_file.at(n));
-      else todo.push_back(n);
-    }
-  }
-  std::vector<std::string> out(pkgs.begin(), pkgs.end());
-  for (const auto& f : files)
-    if (!pkgs.count(f)) out.push_back(f);
-  return out;
+  return rtl::Manifest::load(root).top_sources(top);
 }
 
 namespace {
@@ -184,13 +149,15 @@ void area(Row& r, const Options& opt, AreaCache& cache) {
     r.area_source = "not measured: " + opt.no_yosys_why;
     return;
   }
-  const auto files = rtl_files(opt.root, r.rtl_top);
+  const auto manifest = rtl::Manifest::load(opt.root);
+  const auto files = manifest.top_sources(r.rtl_top);
   uint64_t h = fnv1a(slurp(fs::path(opt.root) / "scripts/yosys_area.sh"));
   std::string list;
   for (const auto& f : files) {
     h = fnv1a(fs::path(f).filename().string() + slurp(f), h);
     list += f + " ";
   }
+  for (const auto& f : manifest.headers()) h = fnv1a(fs::path(f).filename().string() + slurp(f), h);
   char key[17];
   std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(h));
   json& e = cache.j[r.rtl_top];
@@ -576,7 +543,7 @@ std::vector<Row> rows(const Options& opt) {
     else if (is_relief_block(g)) {
       // report_relief.cpp: the engines' cycles per pixel on the bricks scene stream, pom_unit with
       // its stages pom_setup and pom_refine; area from the same Yosys cache.
-      r = relief_rows({g}, opt.root, false);
+      r = relief_rows({g});
       for (auto& x : r) area(x, opt, cache);
     } else
       for (const auto& s : registry_specs())

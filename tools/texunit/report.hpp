@@ -32,8 +32,8 @@ struct Options {
   uint64_t count = 20000;           // random vectors per registry block (plus its stiff set)
 };
 
-// The files an RTL top needs, in Yosys/Verilator order: packages first, then every module file
-// reachable from the top (found by name under ROOT/rtl).
+// The files an RTL top needs, in Yosys/Verilator order: the sources of the rtl/manifest.json block
+// that lists the top (packages first).
 std::vector<std::string> rtl_files(const std::string& root, const std::string& top);
 
 // Report groups in output order (block names of the rows).
