@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Full co-simulation of one block: stiff, golden and 1,000,000 random vectors, 30% stalls.
-# Usage: scripts/cosim_full.sh BLOCK [COUNT]      (TU_TEXUNIT=path/to/texunit to use another build)
+# Usage: scripts/cosim_full.sh BLOCK [COUNT]      (TU_TEXUNIT=path/to/texunit to use another build;
+#        TU_RTL=VARIANT runs another RTL scheme on the block's vectors, e.g. TU_RTL=perlin3d_serial)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 block=${1:?usage: scripts/cosim_full.sh BLOCK [COUNT]}
@@ -11,5 +12,5 @@ dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 for set in golden stiff random; do
   "$tu" vectors --block "$block" --set "$set" --count "$count" --seed 2026 --out "$dir/$set.vec"
-  "$tu" cosim --block "$block" --vectors "$dir/$set.vec" --stall-prob 0.3 --json
+  "$tu" cosim --block "$block" ${TU_RTL:+--rtl "$TU_RTL"} --vectors "$dir/$set.vec" --stall-prob 0.3 --json
 done

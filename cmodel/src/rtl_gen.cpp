@@ -6,6 +6,7 @@
 #include "ewa/ewa_fx.hpp"
 #include "pom/pom_layers.hpp"
 #include "gauss/clip.hpp"
+#include "noise/noise_ref.hpp"
 #include "gauss/weight.hpp"
 #include "reciprocal/reciprocal.hpp"
 #include "texunit/formats.hpp"
@@ -191,6 +192,20 @@ std::string ewa_atan_rom() {
   os << "      default: atan_o = '0;\n    endcase\n  end\nendmodule\n";
   return os.str();
 }
+std::string noise_perm_rom() {
+  // Perlin noise (docs/blocks/noise.md): the permutation table, addressed modulo 256.
+  const auto& p = noise::permutation();
+  std::ostringstream os;
+  os << kBanner << "// Perlin noise permutation ROM: p_o = p[idx_i] (Perlin 2002, the doubled table mod 256).\n"
+     << "module tu_noise_perm_rom (\n"
+     << "  input  logic [tu_formats_pkg::NoiseLatW-1:0] idx_i,\n"
+     << "  output logic [tu_formats_pkg::NoiseLatW-1:0] p_o\n);\n"
+     << "  always_comb begin\n    unique case (idx_i)\n";
+  for (size_t k = 0; k < p.size(); ++k)
+    os << "      " << hex(k, fmt::kNoiseLatW) << ": p_o = " << hex(p[k], fmt::kNoiseLatW) << ";\n";
+  os << "      default: p_o = '0;\n    endcase\n  end\nendmodule\n";
+  return os.str();
+}
 }  // namespace
 
 std::map<std::string, std::string> generated_rtl() {
@@ -199,6 +214,7 @@ std::map<std::string, std::string> generated_rtl() {
           {"rtl/generated/tu_clip_seg_mm1.sv", clip_roms(true)},
           {"rtl/generated/tu_ewa_atan_rom.sv", ewa_atan_rom()},
           {"rtl/generated/tu_ewa_exp2_rom.sv", ewa_exp2_rom()},
+          {"rtl/generated/tu_noise_perm_rom.sv", noise_perm_rom()},
           {"rtl/generated/tu_pom_f_rom.sv", pom_f_rom()},
           {"rtl/generated/tu_recip_rom.sv", recip_rom()},
           {"rtl/generated/tu_wtab1d_rom.sv", wtab1d_rom()},

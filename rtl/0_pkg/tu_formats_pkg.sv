@@ -20,6 +20,27 @@ package tu_formats_pkg;
   localparam int RecipC0F = 30;
   localparam int RecipOutW = 25;  // reciprocal mantissa R in (0.5,1]: unsigned, RecipOutF fraction bits
   localparam int RecipOutF = 24;
+  localparam int NoiseCoordW = 32;  // input coordinates x, y, z: signed, NoiseTF fraction bits (s32.16)
+  localparam int NoiseLatW = 8;  // lattice index floor(x) & 255: the period-256 wrap of the permutation
+  localparam int NoiseTF = 16;  // local coordinate t = frac(x) in [0,1): unsigned, NoiseTF bits (u16.16)
+  localparam int NoiseFadeIF = 24;  // fade intermediates t^2, t^3 (u24.24) and b = t(6t-15)+10: frac bits
+  localparam int NoiseFadeBW = 28;  // b = t(6t-15)+10 in (1,10]: unsigned, NoiseFadeIF fraction bits, half up
+  localparam int NoiseSW = 17;  // fade s = t^3 b in [0,1]: unsigned, NoiseTF fraction bits, half up
+  localparam int NoiseDW = 17;  // corner offsets t, t-1 in [-1,1): signed, NoiseTF fraction bits
+  localparam int NoiseValW = 19;  // gradient dots and lerps in [-2,2]: signed, NoiseTF fraction bits
+  localparam int NoiseOctaves = 4;  // fBm octaves K: noise(2^i x) 2^-i, i < K
+  localparam int NoiseAccW = 23;  // fBm sum: signed, NoiseTF+K-1 fraction bits, exact
+  localparam int NoiseNormF = 18;  // normalisation constants 1/(2 B (2 - 2^(1-K))): NoiseNormF fraction bits
+  localparam int NoiseBound3E4 = 10364;  // bound of |noise3| in 1e-4 (sup 1.0363538, docs/blocks/noise.md)
+  localparam int NoiseBound2E4 = 10000;  // bound of |noise2| in 1e-4 (per-axis bound, exact sup)
+  localparam int NoiseNorm3 = 67450;  // 3-D normalisation constant, round half up: unsigned, NoiseNormF fraction bits
+  localparam int NoiseNorm2 = 69905;  // 2-D normalisation constant, round half up: unsigned, NoiseNormF fraction bits
+  localparam int NoiseNormW = 18;  // normalisation constant word: unsigned (value < 1)
+  localparam int NoiseOutW = 17;  // fbm in [0,1]: unsigned, NoiseTF fraction bits, round half up, clamped
+  localparam int NoiseCoreLatency = 6;  // noise core: 3 hash levels (fade beside), dots + x lerp, y, z lerp
+  localparam int NoisePipeLatency = 7;  // pipelined scheme (K cores) + sum/normalise, II 1
+  localparam int NoiseSerialLatency = 10;  // octave-serial scheme (one core)
+  localparam int NoiseSerialIi = 4;  // octave-serial scheme: one sample per K clocks
   localparam int ClipInW = 13;  // clip distance d: signed, ClipInF fraction bits; domain [-0.5, 0.5], clamped
   localparam int ClipInF = 12;
   localparam int ClipAW = 12;  // a = min(|d|, 0.5): unsigned, ClipInF fraction bits

@@ -19,6 +19,8 @@ RtlBlock rtl_iter_parallax();  // iter_parallax_rtl.cpp
 std::vector<RtlBlock> rtl_pom_unit();  // pom_unit_rtl.cpp
 RtlBlock rtl_ellipse();     // ellipse_rtl.cpp
 RtlBlock rtl_ewa();         // ewa_rtl.cpp
+std::vector<RtlBlock> rtl_brdf();  // brdf_rtl.cpp
+std::vector<RtlBlock> rtl_perlin();  // perlin_rtl.cpp (incl. the octave-serial variants)
 
 const RtlBlock& find_rtl(const std::string& name) {
   static const std::vector<RtlBlock> rtl = {rtl_reciprocal(), rtl_persp(), rtl_persp_k4(), rtl_persp_setup(), rtl_pom_layers(),
@@ -30,6 +32,12 @@ const RtlBlock& find_rtl(const std::string& name) {
     if (r.name == name) return r;
   static const std::vector<RtlBlock> pom_unit = rtl_pom_unit();
   for (const auto& r : pom_unit)
+    if (r.name == name) return r;
+  static const std::vector<RtlBlock> brdf = rtl_brdf();
+  for (const auto& r : brdf)
+    if (r.name == name) return r;
+  static const std::vector<RtlBlock> perlin = rtl_perlin();
+  for (const auto& r : perlin)
     if (r.name == name) return r;
   throw std::invalid_argument("block '" + name + "' has no RTL co-simulation model");
 }
@@ -65,7 +73,7 @@ std::string Report::json() const {
 
 Report run(const vec::VectorFile& vf, const Options& opt) {
   const auto& block = blocks::find(vf.block);
-  const auto& rtl = find_rtl(vf.block);
+  const auto& rtl = find_rtl(opt.rtl.empty() ? vf.block : opt.rtl);
   if (vf.fields.size() != block.fields.size())
     throw std::invalid_argument("vector file fields do not match block '" + block.name + "'");
   for (size_t i = 0; i < vf.fields.size(); ++i) {

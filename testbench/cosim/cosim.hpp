@@ -61,6 +61,7 @@ struct Report {
 struct Options {
   RunOptions run;
   size_t timing_vectors = 256;  // stall-free prefix used for latency and II
+  std::string rtl;  // RTL variant on the file's vectors (e.g. perlin3d_serial); empty: the block's own
 };
 
 // Throws std::invalid_argument when the file's block or fields do not match the block.

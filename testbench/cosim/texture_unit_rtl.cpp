@@ -110,6 +110,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   render::CmodelOptions copt;
   copt.weights = o.weights;
   copt.relief = o.relief;
+  copt.threads = o.threads;
   const render::Frame expect = render::render_cmodel(s, o.filter, copt);
 
   // Textures in the RAM, per-triangle set-up.
@@ -141,7 +142,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   }
 
   // Spans, and the per-pixel cycle costs from the C model.
-  const auto cov = render::visibility(s);
+  const auto cov = render::visibility(s, o.threads);
   std::vector<Row> spans;
   std::vector<ewa::PixelCost> costs;
   std::vector<uint64_t> views;  // the view stream model's words

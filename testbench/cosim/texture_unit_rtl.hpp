@@ -31,6 +31,7 @@ struct RtlRenderOptions {
   std::optional<scene::WeightSource> weights;  // overrides every material's EWA weight source
   double stall_prob = 0;                       // random input bubbles / output stalls
   uint64_t seed = 1;
+  int threads = 0;  // for the C-model render and visibility (<= 0: every core); same result
 };
 
 struct RtlRender {

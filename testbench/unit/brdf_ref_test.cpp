@@ -222,3 +222,34 @@ TEST(BrdfRef, Table42SphereRender) {
 }
 
 }  // namespace
+
+namespace {
+// Max |F(c rounded to k fraction bits) - F(c)| in units of 1/255 over n in the note's set, c on a
+// fine grid of the highlight (where the slope is largest): the note's §8.4 table, which sets the
+// c format (BrdfCF = 20).
+double quantisation_error(double (*f)(double, int), int k) {
+  double worst = 0;
+  const double q = std::ldexp(1.0, k);
+  for (int n : {1, 2, 5, 10, 50, 100, 300, 1000})
+    for (int i = 0; i <= 100000; ++i) {
+      const double c = 1 - std::min(1.0, 8.0 / n) * i / 100000.0;
+      worst = std::max(worst, std::fabs(f(std::round(c * q) / q, n) - f(c, n)) * 255);
+    }
+  return worst;
+}
+
+TEST(BrdfRef, PrecisionOfCSetsTwentyFractionBits) {
+  // Note §8.4: Blinn 1.90 / 0.48 / 0.12, F_MSH 3.07 / 0.78 / 0.19 at k = 16 / 18 / 20.
+  const struct {
+    double (*f)(double, int);
+    double k16, k18, k20;
+  } rows[] = {{ref::blinn, 1.90, 0.48, 0.12}, {ref::msh, 3.07, 0.78, 0.19}, {ref::schlick, 1.88, 0.48, 0.12}};
+  for (const auto& r : rows) {
+    EXPECT_NEAR(quantisation_error(r.f, 16), r.k16, 0.1 * r.k16);
+    EXPECT_NEAR(quantisation_error(r.f, 18), r.k18, 0.1 * r.k18);
+    EXPECT_NEAR(quantisation_error(r.f, 20), r.k20, 0.1 * r.k20);
+  }
+  // At 20 fraction bits the worst model stays under the 0.5-LSB output rounding.
+  EXPECT_LT(quantisation_error(ref::msh, tu::fmt::kBrdfCF), 0.25);
+}
+}  // namespace

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CLI tests of `texunit report` and `texunit plan` (registered in CMakeLists.txt, one case each).
+# CLI tests of `texunit report`, `texunit plan` and --threads (registered in CMakeLists.txt, one case each).
 # Usage: cli_test.sh TEXUNIT SOURCE_DIR CASE
 set -euo pipefail
 tu=$1; src=$2; case=$3
@@ -17,6 +17,17 @@ case $case in
     [ "$(val "$tmp/r.json" "all(isinstance(r['rtl_sim_items_per_s'], (int, float)) and r['rtl_sim_items_per_s'] > 0 for r in d)")" = True ] || fail "rtl speed"
     [ "$(val "$tmp/r.json" "all(r['cycles_source'].startswith('measured') for r in d)")" = True ] || fail "cycles source"
     [ "$(val "$tmp/r.json" "[r['max_abs_err'] for r in d if r['variant'] == 'incremental'][0] < 1/16")" = True ] || fail "persp error"
+    ;;
+  report_stdcell)
+    # Standard-cell columns from the committed cache: numbers where the cache is current, with
+    # latency_ns = latency x period and ns_per_item = II x period; a missing cache says why.
+    "$tu" report --blocks reciprocal --count 2000 --no-yosys --stdcell-cache docs/report/stdcell_cache.json \
+      --json "$tmp/r.json" >/dev/null
+    [ "$(val "$tmp/r.json" "all(isinstance(r[k], (int, float)) and r[k] > 0 for r in d for k in ('area_um2', 'period_ns', 'fmax_mhz'))")" = True ] ||
+      fail "stdcell fields: $(val "$tmp/r.json" "d[0]['stdcell_source']")"
+    [ "$(val "$tmp/r.json" "all(abs(r['latency_ns'] - r['latency_cycles'] * r['period_ns']) < 1e-6 * r['latency_ns'] and abs(r['ns_per_item'] - r['ii_cycles'] * r['period_ns']) < 1e-6 * r['ns_per_item'] for r in d)")" = True ] || fail "ns columns"
+    "$tu" report --blocks reciprocal --count 2000 --no-yosys --stdcell-cache "$tmp/none.json" --json "$tmp/r2.json" >/dev/null
+    [ "$(val "$tmp/r2.json" "d[0]['area_um2'].startswith('not measured: tu_reciprocal not in')")" = True ] || fail "missing-cache reason"
     ;;
   report_bad_block)
     if "$tu" report --blocks recip --no-yosys --json "$tmp/r.json" 2>"$tmp/err"; then fail "accepted an unknown block"; fi
@@ -94,6 +105,18 @@ SV
     TU_TEXUNIT="$tu" scripts/plan_area.sh --coarse docs/scenes/ui_quad.json >"$tmp/out"
     cat "$tmp/out"
     grep -q "full: .*HasEwa=1" "$tmp/out" && grep -q "specialised: .*HasEwa=0" "$tmp/out" || fail "HasEwa not set"
+    ;;
+  threads_same_output)
+    # --threads 1 and --threads 3 write the same bytes (C-model render with relief, vector file).
+    for t in 1 3; do
+      "$tu" render default --engine cmodel --threads $t --out "$tmp/r$t" --dump "$tmp/r$t.csv" 2>/dev/null
+      "$tu" vectors --block ewa --set random --count 3000 --seed 4 --threads $t --out "$tmp/v$t.vec" 2>/dev/null
+    done
+    cmp "$tmp/r1/cmodel.png" "$tmp/r3/cmodel.png" || fail "render image differs"
+    cmp "$tmp/r1.csv" "$tmp/r3.csv" || fail "render dump differs"
+    cmp "$tmp/v1.vec" "$tmp/v3.vec" || fail "vector file differs"
+    if "$tu" render default --engine cmodel --threads -1 --out "$tmp/bad" 2>"$tmp/err"; then fail "accepted --threads -1"; fi
+    grep -q "threads" "$tmp/err" || fail "message: $(cat "$tmp/err")"
     ;;
   *) fail "unknown case" ;;
 esac

@@ -17,6 +17,7 @@
 #include "render_cmd.hpp"
 #include "sysmodel_cmd.hpp"
 #include "report.hpp"
+#include "texunit/parallel.hpp"
 #include "texunit/rtl_gen.hpp"
 #include "texunit/rtl_manifest.hpp"
 #include "vector_file.hpp"
@@ -30,11 +31,11 @@ namespace {
 constexpr uint64_t kMaxCount = 1ull << 22;
 
 int cmd_vectors(const std::string& block, const std::string& set, uint64_t count, uint64_t seed,
-                const std::string& out) {
+                const std::string& out, int threads) {
   const auto& b = tu::blocks::find(block);
   tu::cli::Outputs outs;
   const std::string tmp = outs.stage(out);
-  const auto vf = tu::blocks::generate(b, set, count, seed);
+  const auto vf = tu::blocks::generate(b, set, count, seed, threads);
   tu::vec::write(vf, tmp);
   outs.commit();
   std::cerr << "wrote " << vf.rows.size() << " vectors (" << block << ", " << set << ") to " << out
@@ -43,7 +44,7 @@ int cmd_vectors(const std::string& block, const std::string& set, uint64_t count
 }
 
 int cmd_cosim(const std::string& block, const std::string& file, double stall, uint64_t seed,
-              const std::string& fst, bool json) {
+              const std::string& fst, bool json, const std::string& rtl) {
   const auto vf = tu::vec::read(file);
   if (vf.block != block)
     throw std::invalid_argument(file + ": vectors are for block '" + vf.block + "', not '" +
@@ -57,6 +58,7 @@ int cmd_cosim(const std::string& block, const std::string& file, double stall, u
   opt.run.stall_prob = stall;
   opt.run.seed = seed;
   opt.run.fst_path = fst_tmp;
+  opt.rtl = rtl;
   tu::cosim::Report rep;
   try {
     rep = tu::cosim::run(vf, opt);
@@ -130,33 +132,51 @@ int cmd_relief_quality(const tu::pom::QualityParams& p) {
 // Main job: every block with RTL co-simulated on its golden, stiff and random sets with 30% stalls
 // (one table), then the default scene rendered through the float reference with every filter.
 // Then the C-model and the RTL render engines (texture-unit top == C model on every pixel).
-int cmd_demo(uint64_t count, const std::string& out_dir) {
+int cmd_demo(uint64_t count, const std::string& out_dir, int threads) {
   std::printf("%-12s %-7s %9s %9s %10s %11s %10s %8s %4s %10s\n", "block", "set", "vectors",
               "outputs", "mismatch", "max_ulp", "rms_err", "latency", "II", "cycles");
-  bool ok = true;
+  // One job per (block, set), run on every thread (each run has its own Verilator context),
+  // printed in the registry's order.
+  struct Job {
+    const tu::blocks::Block* block;
+    std::string set;  // empty: no RTL co-simulation model
+    tu::cosim::Report report;
+  };
+  std::vector<Job> jobs;
   for (const auto& b : tu::blocks::all()) {
     try {
       tu::cosim::find_rtl(b.name);
     } catch (const std::invalid_argument&) {  // C model and vectors ahead of the block's RTL
-      std::printf("%-12s (C model only: no RTL co-simulation model yet)\n", b.name.c_str());
+      jobs.push_back({&b, "", {}});
       continue;
     }
-    for (const auto& set : b.sets) {
-      const auto vf = tu::blocks::generate(b, set, count, 2026);
-      tu::cosim::Options opt;
-      opt.run.stall_prob = 0.3;
-      const auto r = tu::cosim::run(vf, opt);
-      ok = ok && r.ok();
-      std::printf("%-12s %-7s %9llu %9llu %10llu %11.4f %10.3g %8llu %4.0f %10llu\n",
-                  b.name.c_str(), set.c_str(), (unsigned long long)r.vectors,
-                  (unsigned long long)r.outputs, (unsigned long long)r.mismatches, r.max_ulp_err,
-                  r.rms_err, (unsigned long long)r.latency_cycles, r.ii_cycles,
-                  (unsigned long long)r.sim_cycles);
+    for (const auto& set : b.sets) jobs.push_back({&b, set, {}});
+  }
+  tu::par::for_each_index(static_cast<int>(jobs.size()), threads, [&](int i) {
+    Job& j = jobs[static_cast<size_t>(i)];
+    if (j.set.empty()) return;
+    const auto vf = tu::blocks::generate(*j.block, j.set, count, 2026, 1);
+    tu::cosim::Options opt;
+    opt.run.stall_prob = 0.3;
+    j.report = tu::cosim::run(vf, opt);
+  });
+  bool ok = true;
+  for (const auto& j : jobs) {
+    const auto& r = j.report;
+    if (j.set.empty()) {
+      std::printf("%-12s (C model only: no RTL co-simulation model yet)\n", j.block->name.c_str());
+      continue;
     }
+    ok = ok && r.ok();
+    std::printf("%-12s %-7s %9llu %9llu %10llu %11.4f %10.3g %8llu %4.0f %10llu\n",
+                j.block->name.c_str(), j.set.c_str(), (unsigned long long)r.vectors,
+                (unsigned long long)r.outputs, (unsigned long long)r.mismatches, r.max_ulp_err,
+                r.rms_err, (unsigned long long)r.latency_cycles, r.ii_cycles,
+                (unsigned long long)r.sim_cycles);
   }
   std::printf("%s\n", ok ? "RTL == C model on every vector (30% random stalls, in order, none lost)"
                           : "MISMATCH: RTL and C model disagree (see above)");
-  ok = tu::cli::demo_render(out_dir) && ok;
+  ok = tu::cli::demo_render(out_dir, threads) && ok;
   return ok ? 0 : 1;
 }
 
@@ -187,6 +207,8 @@ int main(int argc, char** argv) {
   uint64_t count = 1000, seed = 1;
   double stall = 0.3;
   bool json = false, check = false;
+  int threads = 0;  // <= 0: every core
+  const char* threads_help = "threads (default 0: every core); the output is the same for any count";
 
   auto* vec = app.add_subcommand("vectors", "generate a vector file (inputs, C-model outputs, reference)");
   vec->add_option("--block", block, "block name")->required();
@@ -196,6 +218,7 @@ int main(int argc, char** argv) {
       ->check(tu::cli::non_negative_integer() & CLI::Range(uint64_t{1}, kMaxCount));
   vec->add_option("--seed", seed, "generator seed")->check(tu::cli::non_negative_integer());
   vec->add_option("--out", out, "output file")->required();
+  vec->add_option("--threads", threads, threads_help)->check(CLI::Range(0, 4096));
 
   auto* cos = app.add_subcommand("cosim", "run the RTL against the C model on a vector file");
   cos->add_option("--block", block, "block name")->required();
@@ -205,6 +228,8 @@ int main(int argc, char** argv) {
   cos->add_option("--seed", seed, "stall pattern seed")->check(tu::cli::non_negative_integer());
   cos->add_option("--fst", fst, "write an FST waveform");
   cos->add_flag("--json", json, "print one JSON object");
+  std::string rtl_variant;
+  cos->add_option("--rtl", rtl_variant, "RTL variant to run on the block's vectors (e.g. perlin3d_serial)");
 
   auto* gen = app.add_subcommand("gen-rtl", "write rtl/generated/ from the C model's formats and tables");
   gen->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
@@ -215,6 +240,7 @@ int main(int argc, char** argv) {
       ->check(tu::cli::non_negative_integer() & CLI::Range(uint64_t{1}, kMaxCount));
   std::string demo_out = "build/demo";
   demo->add_option("--out", demo_out, "directory for the rendered images");
+  demo->add_option("--threads", threads, threads_help)->check(CLI::Range(0, 4096));
 
   std::string cx_in, cx_out;
   tu::complexity::Params cx;
@@ -247,6 +273,7 @@ int main(int argc, char** argv) {
       ->check(tu::cli::non_negative_integer() & CLI::Range(1ull, 1ull << 26));
   rep->add_option("--yosys-cache", ro.yosys_cache, "JSON cache of Yosys results (keyed by the RTL files' hash)");
   rep->add_flag("--no-yosys", no_yosys, "do not synthesise (cells: not measured)");
+  rep->add_option("--stdcell-cache", ro.stdcell_cache, "standard-cell results (texunit stdcell); read only");
   rep->add_option("--root", ro.root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
 
   std::string rtl_top;
@@ -256,6 +283,16 @@ int main(int argc, char** argv) {
   rtf->add_option("--list", rtl_list, "instead: every top, every file (packages first), the include dirs or the lint-only files")
       ->check(CLI::IsMember({"tops", "all", "include-dirs", "lint-only"}));
   rtf->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+
+  std::vector<std::string> sc_tops;
+  std::string sc_cache = "docs/report/stdcell_cache.json", sc_netlists = "build/stdcell";
+  bool sc_force = false;
+  auto* stc = app.add_subcommand("stdcell", "OSU 0.18 um area and timing of RTL tops (scripts/stdcell_flow.sh), cached");
+  stc->add_option("TOPS", sc_tops, "RTL tops, e.g. tu_reciprocal")->required();
+  stc->add_option("--cache", sc_cache, "JSON cache keyed by the hash of the RTL files and the flow script");
+  stc->add_option("--netlists", sc_netlists, "directory for the gate-level netlists (TOP.v)");
+  stc->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+  stc->add_flag("--force", sc_force, "re-synthesise even when the cache is current");
 
   tu::plan::Options po;
   auto* pln = app.add_subcommand("plan", "specialise the unit to a scene: blocks, variants, RTL configuration");
@@ -277,20 +314,21 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : tu::cli::kUsageExit;
   }
   try {
-    if (*vec) return cmd_vectors(block, set, count, seed, out);
+    if (*vec) return cmd_vectors(block, set, count, seed, out, threads);
     if (*rnd) return tu::cli::run_render(render_args);
     if (*sysm) return tu::cli::run_sysmodel(sysmodel_args);
-    if (*cos) return cmd_cosim(block, file, stall, seed, fst, json);
+    if (*cos) return cmd_cosim(block, file, stall, seed, fst, json, rtl_variant);
     if (*gen) return cmd_gen_rtl(root, check);
     if (*rep) {
       ro.yosys = !no_yosys;
       return tu::report::run(ro);
     }
     if (*pln) return tu::plan::run(po);
+    if (*stc) return tu::report::stdcell(sc_tops, root, sc_cache, sc_netlists, sc_force);
     if (*rtf) return cmd_rtl_files(root, rtl_top, rtl_list);
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*rqc) return cmd_relief_quality(rq);
-    if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000, demo_out);
+    if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000, demo_out, threads);
   } catch (const fs::filesystem_error& e) {
     std::cerr << "texunit: error: " << tu::cli::fs_message(e.path1().string(), "access the file", e.code()) << "\n";
     return 2;

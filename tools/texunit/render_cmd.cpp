@@ -10,6 +10,7 @@
 
 #include "output.hpp"
 #include "texture_unit_rtl.hpp"
+#include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
 
@@ -43,6 +44,9 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
       ->check(CLI::IsMember({"formula", "table1d", "table2d"}));
   r->add_option("--filter", a.filter, "override every material's filter")
       ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa"}));
+  r->add_option("--threads", a.threads, "cmodel / rtl engines: threads for the C-model render (default 0: "
+                "every core); the image is the same for any count")
+      ->check(CLI::Range(0, 4096));
   return r;
 }
 
@@ -67,6 +71,7 @@ int run_render(const RenderArgs& a) {
   opt.progress = isatty(STDERR_FILENO);  // a bar on a terminal; none in a log
   opt.weights = w;
   opt.relief = !a.no_relief;
+  opt.threads = a.threads;
   render::Frame frame;
   bool ok = true;
   if (a.engine == "rtl") {
@@ -75,6 +80,7 @@ int run_render(const RenderArgs& a) {
     ro.filter = f;
     ro.weights = w;
     ro.relief = ro.has_ewa && !a.no_relief;
+    ro.threads = a.threads;
     const auto r = cosim::render_rtl(s, ro);
     frame = r.frame;
     ok = r.ok();
@@ -135,16 +141,16 @@ std::string db(double v) {
   return b;
 }
 // The demo's C-model rows: every filter (EWA with each weight source) against both references.
-void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::string& out_dir);
-void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::string& out_dir);
+void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
+void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
 // The demo's RTL rows: the texture-unit top == the C-model engine on every pixel.
 // `relief`, `relief_refs`: the scene with its relief and its references (the relief row); `s`,
 // `refs`: the texture path.
 bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
-                     const std::string& out_dir);
+                     const std::string& out_dir, int threads);
 }  // namespace
 
-bool demo_render(const std::string& out_dir) {
+bool demo_render(const std::string& out_dir, int threads) {
   const scene::Scene s = scene::default_scene();
   const scene::Filter filters[] = {scene::Filter::Nearest, scene::Filter::Bilinear,
                                    scene::Filter::Trilinear, scene::Filter::Ewa};
@@ -189,13 +195,13 @@ bool demo_render(const std::string& out_dir) {
   const auto ewa_flat = render::render_ref(flat, scene::Filter::Ewa);
   const auto truth_flat = render::render_truth(flat);
   const Refs flat_refs{ewa_flat, truth_flat}, relief_refs{ewa, truth};
-  demo_render_cmodel(flat, flat_refs, out_dir);
-  demo_render_relief(s, relief_refs, out_dir);
-  return demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir);
+  demo_render_cmodel(flat, flat_refs, out_dir, threads);
+  demo_render_relief(s, relief_refs, out_dir, threads);
+  return demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
 }
 
 namespace {
-void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::string& out_dir) {
+void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads) {
   const auto& ewa_ref = refs.ewa;
   struct Row {
     const char* name;
@@ -215,6 +221,7 @@ void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::stri
   for (const auto& r : rows) {
     render::CmodelOptions opt;
     opt.weights = r.weights;  // each render takes ~0.5 s: no progress bar
+    opt.threads = threads;
     const auto t0 = std::chrono::steady_clock::now();
     const auto fr = render::render_cmodel(s, r.filter, opt);
     const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -233,10 +240,12 @@ void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::stri
   }
 }
 
-void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::string& out_dir) {
+void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads) {
   const auto& ewa_ref = refs.ewa;
   const auto t0 = std::chrono::steady_clock::now();
-  const auto fr = render::render_cmodel(s, scene::Filter::Ewa);
+  render::CmodelOptions opt;
+  opt.threads = threads;
+  const auto fr = render::render_cmodel(s, scene::Filter::Ewa, opt);
   const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const auto png = (std::filesystem::path(out_dir) / "cmodel_ewa_relief.png").string();
   img::write_png_rgba(png, fr.image);
@@ -252,7 +261,7 @@ void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::stri
 }
 
 bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
-                     const std::string& out_dir) {
+                     const std::string& out_dir, int threads) {
   struct Row {
     const char* name;
     bool has_ewa;  // false: the bilinear-only unit
@@ -276,14 +285,23 @@ bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const 
               " B1 -> B2 -> relief -> filter), every pixel compared with the C-model engine, no stalls:\n");
   std::printf("%-12s %8s %10s %11s %11s %13s %13s %9s %12s  %s\n", "filter", "pixels", "mismatch",
               "PSNR vs EWA", "vs truth", "cycles/pixel", "predicted", "error", "RTL pixel/s", "image");
-  bool ok = true;
-  for (const auto& r : rows) {
+  // The rows on every thread (each simulation has its own Verilator context), printed in order.
+  constexpr int kRows = sizeof rows / sizeof rows[0];
+  std::vector<cosim::RtlRender> results(kRows);
+  par::for_each_index(kRows, threads, [&](int i) {
+    const Row& r = rows[i];
     cosim::RtlRenderOptions o;
     o.has_ewa = r.has_ewa;
     o.filter = r.filter;
     o.weights = r.weights;
     o.relief = r.relief;
-    const auto res = cosim::render_rtl(r.relief ? relief : r.filter ? s : mixed, o);
+    o.threads = 1;  // the rows already share the cores
+    results[static_cast<size_t>(i)] = cosim::render_rtl(r.relief ? relief : r.filter ? s : mixed, o);
+  });
+  bool ok = true;
+  for (int i = 0; i < kRows; ++i) {
+    const Row& r = rows[i];
+    const auto& res = results[static_cast<size_t>(i)];
     ok = ok && res.ok();
     const auto png = (std::filesystem::path(out_dir) / (std::string("rtl_") + r.name + ".png")).string();
     img::write_png_rgba(png, res.frame.image);

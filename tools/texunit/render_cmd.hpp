@@ -10,6 +10,7 @@ struct RenderArgs {
   bool no_relief = false;
   int ss = 16;                      // --engine truth: samples per pixel side
   std::string truth_kernel = "box";  // --engine truth: box | gauss
+  int threads = 0;  // C-model render and visibility (<= 0: every core)
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);
@@ -19,6 +20,7 @@ int run_render(const RenderArgs& a);  // throws on bad scenes and unwritable out
 // PNGs (one per filter, plus error heat maps against EWA) in out_dir, and a table on stdout.
 // Also pushes the default scene through the Verilated texture-unit top (EWA with each weight
 // source, and the bilinear-only top); false when an RTL pixel differs from the C model.
-bool demo_render(const std::string& out_dir);
+// Renders and simulations on `threads` threads (<= 0: every core).
+bool demo_render(const std::string& out_dir, int threads = 0);
 
 }  // namespace tu::cli

@@ -21,6 +21,7 @@
 
 #include "block.hpp"
 #include "cosim.hpp"
+#include "brdf/brdf_error.hpp"
 #include "gauss/clip.hpp"
 #include "gauss/schemes.hpp"
 #include "gauss/weight.hpp"
@@ -119,6 +120,16 @@ std::vector<std::string> rtl_files(const std::string& root, const std::string& t
   return rtl::Manifest::load(root).top_sources(top);
 }
 
+std::string rtl_hash(const std::string& root, const std::string& top, const std::string& script) {
+  uint64_t h = fnv1a(slurp(fs::path(root) / script));
+  const auto manifest = rtl::Manifest::load(root);
+  for (const auto& f : manifest.top_sources(top)) h = fnv1a(fs::path(f).filename().string() + slurp(f), h);
+  for (const auto& f : manifest.headers()) h = fnv1a(fs::path(f).filename().string() + slurp(f), h);
+  char key[17];
+  std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(h));
+  return key;
+}
+
 namespace {
 
 struct AreaCache {
@@ -140,35 +151,67 @@ struct AreaCache {
   }
 };
 
+// Standard-cell area and timing from the committed cache (never synthesised here: large tops take
+// tens of minutes; `texunit stdcell` / scripts/stdcell.sh fill the cache).
+void stdcell_area(Row& r, const Options& opt) {
+  static std::map<std::string, json> caches;
+  if (opt.stdcell_cache.empty()) {
+    r.stdcell_source = "not measured: no --stdcell-cache";
+    return;
+  }
+  if (!caches.count(opt.stdcell_cache)) caches[opt.stdcell_cache] = AreaCache(opt.stdcell_cache).j;
+  const json& c = caches.at(opt.stdcell_cache);
+  const std::string hint = " (run scripts/stdcell.sh " + r.rtl_top + ")";
+  if (!c.contains(r.rtl_top)) {
+    r.stdcell_source = "not measured: " + r.rtl_top + " not in " + opt.stdcell_cache + hint;
+    return;
+  }
+  const json& e = c.at(r.rtl_top);
+  if (e.value("hash", "") != rtl_hash(opt.root, r.rtl_top, "scripts/stdcell_flow.sh")) {
+    r.stdcell_source = "not measured: RTL or flow changed since the cached run" + hint;
+    return;
+  }
+  r.area_um2 = e.at("area_um2").get<double>();
+  r.period_ns = e.at("period_ns").get<double>();
+  r.fmax_mhz = e.at("fmax_mhz").get<double>();
+  r.stdcell_cells = e.at("cells").get<int64_t>();
+  r.critical_path = e.at("path_from").get<std::string>() + " -> " + e.at("path_to").get<std::string>();
+  r.stdcell_source = "osu018 (scripts/stdcell_flow.sh)";
+}
+
+// Runs a flow script (prints one JSON object) and parses its output; `cmd` is the whole command.
+json run_flow(const std::string& cmd, const std::string& what) {
+  FILE* p = popen((cmd + " 2>/dev/null").c_str(), "r");
+  std::string out;
+  char buf[512];
+  while (p && fgets(buf, sizeof buf, p)) out += buf;
+  if (!p || pclose(p) != 0) throw std::runtime_error("report: " + what + " failed (run " + cmd + ")");
+  return json::parse(out);
+}
+
+std::string file_list(const std::vector<std::string>& files) {
+  std::string list;
+  for (const auto& f : files) list += f + " ";
+  return list;
+}
+
 void area(Row& r, const Options& opt, AreaCache& cache) {
   if (r.rtl_top.empty()) {
     r.area_source = "not measured: no RTL";
+    r.stdcell_source = "not measured: no RTL";
     return;
   }
+  stdcell_area(r, opt);
   if (!opt.yosys) {
     r.area_source = "not measured: " + opt.no_yosys_why;
     return;
   }
-  const auto manifest = rtl::Manifest::load(opt.root);
-  const auto files = manifest.top_sources(r.rtl_top);
-  uint64_t h = fnv1a(slurp(fs::path(opt.root) / "scripts/yosys_area.sh"));
-  std::string list;
-  for (const auto& f : files) {
-    h = fnv1a(fs::path(f).filename().string() + slurp(f), h);
-    list += f + " ";
-  }
-  for (const auto& f : manifest.headers()) h = fnv1a(fs::path(f).filename().string() + slurp(f), h);
-  char key[17];
-  std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(h));
+  const std::string key = rtl_hash(opt.root, r.rtl_top, "scripts/yosys_area.sh");
   json& e = cache.j[r.rtl_top];
   if (!e.is_object() || e.value("hash", "") != key) {
+    const auto files = rtl_files(opt.root, r.rtl_top);
     std::cerr << "yosys: synthesising " << r.rtl_top << " (" << files.size() << " files)\n";
-    FILE* p = popen((opt.root + "/scripts/yosys_area.sh " + r.rtl_top + " " + list + " 2>/dev/null").c_str(), "r");
-    std::string out;
-    char buf[512];
-    while (p && fgets(buf, sizeof buf, p)) out += buf;
-    if (!p || pclose(p) != 0) throw std::runtime_error("report: Yosys failed on " + r.rtl_top + " (run scripts/yosys_area.sh " + r.rtl_top + " " + list + ")");
-    e = json::parse(out);
+    e = run_flow(opt.root + "/scripts/yosys_area.sh " + r.rtl_top + " " + file_list(files), "Yosys on " + r.rtl_top);
     e["hash"] = key;
     cache.save();
   }
@@ -346,6 +389,9 @@ std::string jstr(const std::string& s) { return json(s).dump(); }
 // A measured count, or the reason it is missing.
 std::string jint(int64_t x, const std::string& why) { return x < 0 ? jstr(why) : std::to_string(x); }
 
+// A measured value (>= 0), or the reason it is missing.
+std::string jmeasured(double x, const std::string& why) { return x < 0 ? jstr(why) : jnum(x); }
+
 std::string na(int64_t x) { return x < 0 ? std::string("n/a") : std::to_string(x); }
 
 const cosim::RtlBlock* rtl_or_null(const std::string& name) {
@@ -368,17 +414,59 @@ std::vector<Spec> registry_specs() {
       {"pom_march", "pom_march", "pom_march", rtl_or_null("pom_march"), "tu_pom_march", "march steps"},
       {"iter_parallax", "iter_parallax", "iter_parallax", rtl_or_null("iter_parallax"), "tu_iter_parallax",
        "uv in 2^-16 units"}};
+  // Perlin noise: both schemes on the same vectors (docs/blocks/noise.md).
+  for (const std::string d : {"3d", "2d"}) {
+    v.push_back({"perlin" + d, "pipelined", "perlin" + d, rtl_or_null("perlin" + d), "tu_perlin" + d, "fbm value 0..1"});
+    v.push_back({"perlin" + d, "octave_serial", "perlin" + d, rtl_or_null("perlin" + d + "_serial"),
+                 "tu_perlin" + d + "_serial", "fbm value 0..1"});
+  }
   // Any other registry block (e.g. a new one) gets a row of its own; the Gaussian blocks have
   // the exhaustive producers below.
   for (const auto& b : blocks::all()) {
     const bool known = b.name.rfind("clip_", 0) == 0 || b.name.rfind("weight_table", 0) == 0 ||
+                       b.name.rfind("brdf_", 0) == 0 ||
                        b.name == "gauss_weight" ||
                        std::any_of(v.begin(), v.end(), [&](const Spec& x) { return x.block == b.name; });
     if (!known) v.push_back({b.name, b.name, b.name, rtl_or_null(b.name), "tu_" + b.name, b.err_metric});
   }
+  // The BRDF models share one section: one row per model (brdf_rows adds the Blinn measures).
+  for (const auto& b : blocks::all())
+    if (b.name.rfind("brdf_", 0) == 0)
+      v.push_back({"brdf", b.name.substr(5), b.name, rtl_or_null(b.name), "tu_" + b.name,
+                   "F (0..1.024, 1 ULP = 2^-8) against the model's own float formula"});
   return v;
 }
 const std::vector<std::string> kGauss = {"clip_volume", "gauss_weight", "weight_table"};
+
+std::string fmt_g(double x, const char* f = "%.4g") {
+  char b[64];
+  std::snprintf(b, sizeof b, f, x);
+  return b;
+}
+
+// brdf rows: the registry row of each model plus its measures against Blinn on the thesis grid
+// (deg 0..90 x n 1..1000): MAD, max |F - c^n| and the relative error at the epicentre F_B = 0.3.
+std::vector<Row> brdf_rows(const Options& opt, AreaCache& cache) {
+  std::vector<Row> out;
+  for (const auto& s : registry_specs()) {
+    if (s.group != "brdf") continue;
+    Row r = registry_row(s, opt, cache);
+    const std::string model = s.variant == "msh_seq" ? "msh" : s.variant;
+    for (brdf::Model m : brdf::kModels) {
+      if (brdf::name(m) != model) continue;
+      const auto g = brdf::vs_blinn_fx(m);
+      const int n_lo = m == brdf::Model::Dsh ? 9 : 2;  // the thesis's ranges (F_dsh: n >= 9)
+      const double ep = brdf::epicentre_rel_fx(m, n_lo);
+      r.extra_json = "\"mad_vs_blinn\": " + jnum(g.mad) + ", \"max_err_vs_blinn\": " + jnum(g.max_abs) +
+                     ", \"epicentre_rel_err\": " + jnum(ep) + ", \"epicentre_n_from\": " + std::to_string(n_lo);
+      r.notes = "MAD vs Blinn " + fmt_g(g.mad) + ", max |F - c^n| " + fmt_g(g.max_abs) +
+                ", epicentre rel. err " + fmt_g(100 * ep, "%.2f") + " % (n " + std::to_string(n_lo) +
+                "..1000); " + r.notes;
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
 
 // Pareto frontier (minimise both): indices sorted by x.
 std::vector<size_t> frontier(const std::vector<std::pair<double, double>>& pts) {
@@ -397,6 +485,18 @@ std::vector<size_t> frontier(const std::vector<std::pair<double, double>>& pts) 
 
 double cycles_x(const Row& r) { return static_cast<double>(r.latency_cycles) + r.ii_cycles; }
 
+// The cost axes of the Pareto plots: file suffix, axis label, value (<= 0: not measured).
+struct Measure {
+  const char* stem;
+  const char* label;
+  double (*x)(const Row&);
+};
+const std::vector<Measure> kMeasures = {
+    {"cycles", "latency + II (cycles)", [](const Row& r) { return r.latency_cycles < 0 ? -1.0 : cycles_x(r); }},
+    {"cells", "Yosys cells (synth, generic gates)", [](const Row& r) { return static_cast<double>(r.cells); }},
+    {"ns_per_item", "ns per item (II x clock period, osu018)", [](const Row& r) { return r.ns_per_item(); }},
+    {"area_um2", "area (um^2, osu018 standard cells)", [](const Row& r) { return r.area_um2; }}};
+
 // A block's rows that have the plotted measure (cycles, or Yosys cells), their points
 // (measure, max abs error) and which of them are on the Pareto frontier.
 struct Points {
@@ -404,10 +504,10 @@ struct Points {
   std::vector<std::pair<double, double>> xy;
   std::set<const Row*> front;
 };
-Points points(const std::vector<Row>& rs, const std::string& grp, bool by_cells) {
+Points points(const std::vector<Row>& rs, const std::string& grp, const Measure& m) {
   Points p;
   for (const auto& r : rs) {
-    const double x = by_cells ? static_cast<double>(r.cells) : cycles_x(r);
+    const double x = m.x(r);
     if (r.block != grp || x <= 0 || r.latency_cycles < 0 || !(r.max_abs_err >= 0)) continue;
     p.rows.push_back(&r);
     p.xy.emplace_back(x, r.max_abs_err);
@@ -424,20 +524,20 @@ void plots(const std::vector<Row>& rs, const std::string& dir) {
   g << "set terminal pngcairo size 900,600 noenhanced\nset logscale y\nset grid\nset key bottom left\n"
     << "set offsets graph 0.05, graph 0.3, graph 0.1, graph 0.1\n";  // room for the labels
   for (const auto& grp : groups()) {
-    for (int by_cells = 0; by_cells < 2; ++by_cells) {
+    for (const auto& m : kMeasures) {
       // Error 0 (bit-exact blocks) has no place on the log scale: frontier only, not drawn.
-      Points p = points(rs, grp, by_cells);
+      Points p = points(rs, grp, m);
       for (size_t i = p.rows.size(); i-- > 0;)
         if (p.xy[i].second <= 0) p.rows.erase(p.rows.begin() + static_cast<long>(i)), p.xy.erase(p.xy.begin() + static_cast<long>(i));
       if (p.rows.empty()) continue;
-      const std::string stem = dir + "/" + grp + (by_cells ? "_error_vs_cells" : "_error_vs_cycles");
+      const std::string stem = dir + "/" + grp + "_error_vs_" + m.stem;
       std::ofstream d(stem + ".dat"), fr(stem + "_frontier.dat");
       for (size_t i = 0; i < p.rows.size(); ++i)
         d << p.xy[i].first << " " << p.xy[i].second << " " << p.rows[i]->variant << "/" << p.rows[i]->scheme << "\n";
       for (size_t i : frontier(p.xy)) fr << p.xy[i].first << " " << p.xy[i].second << "\n";
       g << "set output '" << stem << ".png'\nset title '" << grp << ": max abs error ("
-        << p.rows[0]->err_unit << ") against " << (by_cells ? "area" : "cycles") << "'\n"
-        << "set xlabel '" << (by_cells ? "Yosys cells (synth, generic gates)" : "latency + II (cycles)") << "'\n"
+        << p.rows[0]->err_unit << ") against " << m.stem << "'\n"
+        << "set xlabel '" << m.label << "'\n"
         << "set ylabel 'max abs error'\n"
         << "plot '" << stem << ".dat' using 1:2 with points pt 7 ps 1.2 title 'variant', '"
         << stem << "_frontier.dat' using 1:2 with linespoints lw 2 pt 6 ps 2 title 'Pareto frontier', '"
@@ -452,12 +552,6 @@ void plots(const std::vector<Row>& rs, const std::string& dir) {
   std::cerr << "wrote plots to " << dir << "\n";
 }
 
-std::string fmt_g(double x, const char* f = "%.4g") {
-  char b[64];
-  std::snprintf(b, sizeof b, f, x);
-  return b;
-}
-
 void markdown(const std::vector<Row>& rs, const Options& opt) {
   std::ostringstream o;
   o << "# Error against run time: every block and variant\n\n"
@@ -465,7 +559,10 @@ void markdown(const std::vector<Row>& rs, const Options& opt) {
     << "`); do not edit by hand. Column meanings: [README](../README.md#reading-the-report--specialising-the-unit).\n"
     << "Error is against the block's float reference, in the unit named per block; cycles are latency + II "
        "from Verilator where an RTL exists (else the estimator, column *cycles from*); cells / multipliers from "
-       "Yosys `synth` (generic gates) on the RTL top; C-model ns per item timed on this machine; RTL items/s is "
+       "Yosys `synth` (generic gates) on the RTL top; area um2 / period / fmax from the OSU 0.18 um standard-cell "
+       "flow (`scripts/stdcell_flow.sh`, cache `docs/report/stdcell_cache.json`; assumptions in "
+       "[area-timing.md](area-timing.md)), latency ns = latency x period, ns/item = II x period (II: mean measured "
+       "cycles per item for data-dependent blocks); C-model ns per item timed on this machine; RTL items/s is "
        "the Verilator co-simulation throughput with 30% random stalls (outputs checked against the C model).\n";
   for (const auto& grp : groups()) {
     bool any = false;
@@ -477,21 +574,30 @@ void markdown(const std::vector<Row>& rs, const Options& opt) {
     o << "\n## " << grp << "\n\nerror unit: " << unit << "\n\n";
     if (!opt.plots.empty() && fs::exists(opt.plots + "/" + grp + "_error_vs_cycles.png")) {
       const auto rel = fs::relative(fs::absolute(opt.plots), fs::absolute(opt.markdown).parent_path()).string();
-      o << "![" << grp << " error vs cycles](" << rel << "/" << grp << "_error_vs_cycles.png)";
-      if (fs::exists(opt.plots + "/" + grp + "_error_vs_cells.png"))
-        o << " ![" << grp << " error vs cells](" << rel << "/" << grp << "_error_vs_cells.png)";
+      for (const auto& m : kMeasures)
+        if (fs::exists(opt.plots + "/" + grp + "_error_vs_" + m.stem + ".png"))
+          o << "![" << grp << " error vs " << m.stem << "](" << rel << "/" << grp << "_error_vs_" << m.stem << ".png) ";
       o << "\n\n";
     }
     o << "| variant | scheme | max abs err | rms err | max ULP | latency | II | cycles from | cells | mul | "
-         "C model ns/item | RTL sim items/s | Pareto | notes |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    const Points pc = points(rs, grp, false), pa = points(rs, grp, true);
+         "area um2 | period ns | fmax MHz | latency ns | ns/item | critical path | "
+         "C model ns/item | RTL sim items/s | Pareto | notes |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    std::vector<Points> pm;
+    for (const auto& m : kMeasures) pm.push_back(points(rs, grp, m));
     for (const auto& r : rs) {
       if (r.block != grp) continue;
-      const std::string pareto = std::string(pc.front.count(&r) ? "cycles " : "") + (pa.front.count(&r) ? "cells" : "");
+      std::string pareto;
+      for (size_t i = 0; i < kMeasures.size(); ++i)
+        if (pm[i].front.count(&r)) pareto += std::string(pareto.empty() ? "" : " ") + kMeasures[i].stem;
+      const bool sc = r.area_um2 >= 0;
+      const auto std_or = [&](double x, const char* f) { return sc && x >= 0 ? fmt_g(x, f) : std::string("—"); };
       o << "| " << r.variant << " | " << r.scheme << " | " << fmt_g(r.max_abs_err) << " | " << fmt_g(r.rms_err)
         << " | " << fmt_g(r.max_ulp_err, "%.3g") << " | " << na(r.latency_cycles) << " | " << fmt_g(r.ii_cycles, "%.3g")
         << " | " << r.cycles_source << " | " << (r.cells < 0 ? r.area_source : std::to_string(r.cells)) << " | "
-        << na(r.multipliers) << " | " << fmt_g(r.cmodel_ns_per_item, "%.1f") << " | "
+        << na(r.multipliers) << " | " << (sc ? fmt_g(r.area_um2, "%.0f") : r.stdcell_source) << " | "
+        << std_or(r.period_ns, "%.2f") << " | " << std_or(r.fmax_mhz, "%.1f") << " | " << std_or(r.latency_ns(), "%.1f")
+        << " | " << std_or(r.ns_per_item(), "%.2f") << " | " << (sc ? r.critical_path : "—") << " | "
+        << fmt_g(r.cmodel_ns_per_item, "%.1f") << " | "
         << (r.rtl_sim_items_per_s < 0 ? r.rtl_sim_source : fmt_g(r.rtl_sim_items_per_s, "%.0f")) << " | "
         << pareto << " | " << r.notes << " |\n";
     }
@@ -512,7 +618,12 @@ std::string Row::json() const {
          jstr(rtl_top) + ", \"memory_bits\": " + jint(memory_bits, "n/a") + ", \"cmodel_ns_per_item\": " +
          jnum(cmodel_ns_per_item) + ", \"rtl_sim_items_per_s\": " +
          (rtl_sim_items_per_s < 0 ? jstr(rtl_sim_source) : jnum(rtl_sim_items_per_s)) +
-         ", \"rtl_sim_source\": " + jstr(rtl_sim_source) + ", \"notes\": " + jstr(notes) + "}";
+         ", \"rtl_sim_source\": " + jstr(rtl_sim_source) + ", \"area_um2\": " + jmeasured(area_um2, stdcell_source) +
+         ", \"period_ns\": " + jmeasured(period_ns, stdcell_source) + ", \"fmax_mhz\": " +
+         jmeasured(fmax_mhz, stdcell_source) + ", \"latency_ns\": " + jmeasured(latency_ns(), stdcell_source) +
+         ", \"ns_per_item\": " + jmeasured(ns_per_item(), stdcell_source) + ", \"stdcell_cells\": " +
+         jint(stdcell_cells, stdcell_source) + ", \"critical_path\": " + jstr(critical_path) +
+         ", \"stdcell_source\": " + jstr(stdcell_source) + ", \"notes\": " + jstr(notes) + (extra_json.empty() ? "" : ", " + extra_json) + "}";
 }
 
 std::vector<std::string> groups() {
@@ -540,6 +651,7 @@ std::vector<Row> rows(const Options& opt) {
     if (g == "clip_volume") r = clip_rows(opt, cache);
     else if (g == "gauss_weight") r = weight_rows(opt, cache);
     else if (g == "weight_table") r = table_rows(opt, cache);
+    else if (g == "brdf") r = brdf_rows(opt, cache);
     else if (is_relief_block(g)) {
       // report_relief.cpp: the engines' cycles per pixel on the bricks scene stream, pom_unit with
       // its stages pom_setup and pom_refine; area from the same Yosys cache.
@@ -560,6 +672,32 @@ std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string&
   o.root = root;
   o.yosys = yosys;
   return rows(o);
+}
+
+int stdcell(const std::vector<std::string>& tops, const std::string& root, const std::string& cache_path,
+            const std::string& netlists, bool force) {
+  AreaCache cache(cache_path);
+  for (const auto& top : tops) {
+    const std::string key = rtl_hash(root, top, "scripts/stdcell_flow.sh");
+    const std::string net = netlists + "/" + top + ".v";
+    json& e = cache.j[top];
+    // A current entry is kept unless its netlist is wanted and missing (the flow is deterministic:
+    // the re-run only writes the netlist again).
+    if (!force && e.is_object() && e.value("hash", "") == key && fs::exists(net)) {
+      std::cerr << "stdcell: " << top << " current (hash " << key << "), netlist " << net << "\n";
+      continue;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    std::cerr << "stdcell: synthesising " << top << "\n";
+    e = run_flow(root + "/scripts/stdcell_flow.sh " + top + " " + net + " " + file_list(rtl_files(root, top)),
+                 "the standard-cell flow on " + top);
+    e["hash"] = key;
+    e["flow_seconds"] = std::round(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    cache.save();  // after every top: a long background run keeps what it measured
+    std::cerr << "stdcell: " << top << " " << e.at("area_um2") << " um2, " << e.at("period_ns") << " ns, "
+              << e.at("path_from").get<std::string>() << " -> " << e.at("path_to").get<std::string>() << "\n";
+  }
+  return 0;
 }
 
 int run(const Options& in) {

@@ -19,6 +19,7 @@ Block make_persp_setup(); // persp_block.cpp
 Block make_ellipse();     // ellipse_block.cpp
 Block make_ewa();         // ewa_block.cpp
 std::vector<Block> make_brdf_blocks();  // brdf_block.cpp
+std::vector<Block> make_perlin_blocks();  // perlin_block.cpp
 
 const std::vector<Block>& all() {
   static const std::vector<Block> blocks = [] {
@@ -35,6 +36,7 @@ const std::vector<Block>& all() {
     b.push_back(make_ellipse());
     b.push_back(make_ewa());
     for (auto& m : make_brdf_blocks()) b.push_back(std::move(m));
+    for (auto& p : make_perlin_blocks()) b.push_back(std::move(p));
     return b;
   }();
   return blocks;

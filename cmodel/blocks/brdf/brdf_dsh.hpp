@@ -9,8 +9,9 @@
 //   R, p = recip(E)                        1/E = R 2^(30 - p)
 //   G1  = round_half_up(2 q^8 R 2^(30 - p))  24 fraction bits
 //   F   = round_half_up(max(0, S + G1 - 0.25) / 2)  u9.8
-// Error bound (exhaustive, testbench/unit/brdf_fx_test.cpp; docs/blocks/brdf.md): < 0.52 LSB of
-// the output against the float formula at the same c code.
+// Error bound: < 0.501 LSB of the output (2^-8) against the float formula at the same c code; measured
+// max 0.500051 LSB over all 23,215,174 c codes above the cut-off for every n in 1..1000
+// (testbench/long/brdf_long_test.cpp; CI subset testbench/unit/brdf_fx_test.cpp). Monotone in c.
 #pragma once
 
 #include "brdf_common.hpp"

@@ -2,8 +2,9 @@
 //   A  = round_half_up(0.786 u)     u30.24 (0.786 = BrdfK786 / 2^24)
 //   Wq = max(0, 1 - A)              u25.24
 //   F  = round_half_up(c Wq)        u9.8
-// Error bound (exhaustive, testbench/unit/brdf_fx_test.cpp; docs/blocks/brdf.md): < 0.51 LSB of
-// the output against the float formula at the same c code.
+// Error bound: < 0.501 LSB of the output (2^-8) against the float formula at the same c code; measured
+// max 0.500008 LSB over all 9,670,912 c codes above the cut-off for every n in 1..1000
+// (testbench/long/brdf_long_test.cpp; CI subset testbench/unit/brdf_fx_test.cpp). Monotone in c.
 #pragma once
 
 #include "brdf_common.hpp"

@@ -5,8 +5,9 @@
 //   R, p = recip(D)
 //   B  = round_half_up(N R 2^(22 - p))       u25.24, <= 1
 //   F  = round_half_up(B^2)                  u9.8
-// Error bound (exhaustive, testbench/unit/brdf_fx_test.cpp; docs/blocks/brdf.md): < 0.52 LSB of
-// the output against the float formula at the same c code.
+// Error bound: < 0.501 LSB of the output (2^-8) against the float formula at the same c code; measured
+// max 0.500108 LSB over all 59,770,553 c codes above the cut-off for every n in 1..1000
+// (testbench/long/brdf_long_test.cpp; CI subset testbench/unit/brdf_fx_test.cpp). Monotone in c.
 #pragma once
 
 #include "brdf_common.hpp"

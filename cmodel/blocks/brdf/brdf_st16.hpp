@@ -2,8 +2,9 @@
 //   B  = max(0, 1 - u/16)           u25.24 (u/16 exact: the raw code of u read with 24 frac bits)
 //   S1..S4 = round_half_up(S^2)     u25.24 each
 //   F  = round_half_up(S4)          u9.8
-// Error bound (exhaustive, testbench/unit/brdf_fx_test.cpp; docs/blocks/brdf.md): < 0.51 LSB of
-// the output against the float formula at the same c code.
+// Error bound: < 0.501 LSB of the output (2^-8) against the float formula at the same c code; measured
+// max 0.500064 LSB over all 33,422,836 c codes above the cut-off for every n in 1..1000
+// (testbench/long/brdf_long_test.cpp; CI subset testbench/unit/brdf_fx_test.cpp). Monotone in c.
 #pragma once
 
 #include "brdf_common.hpp"

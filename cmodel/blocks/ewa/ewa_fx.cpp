@@ -86,9 +86,12 @@ const std::array<uint32_t, 1u << fmt::kEwaExpF>& exp2_table() {
 }
 
 int32_t cordic_gain_code() {
-  double k = 1;
-  for (int i = 0; i < fmt::kEwaCordIter; ++i) k /= std::sqrt(1 + std::ldexp(1.0, -2 * i));
-  return static_cast<int32_t>(std::floor(std::ldexp(k, kRotF) + 0.5));
+  static const int32_t code = [] {  // once: rotation() starts every pixel from it
+    double k = 1;
+    for (int i = 0; i < fmt::kEwaCordIter; ++i) k /= std::sqrt(1 + std::ldexp(1.0, -2 * i));
+    return static_cast<int32_t>(std::floor(std::ldexp(k, kRotF) + 0.5));
+  }();
+  return code;
 }
 
 int32_t vectoring(int64_t d, int64_t b) {
@@ -217,15 +220,26 @@ PixelSetup setup(const In& in, const tex::Texture& t, const Config& cfg) {
   }
 }
 
-uint32_t normalise(uint64_t acc, uint64_t wsum) {
+namespace {
+// 1/wsum as the unit forms it once per pixel: R and the shift of acc * R.
+struct InvSum {
+  uint32_t mant;
+  int sh;
+};
+InvSum inv_sum(uint64_t wsum) {
   const int p = msb64(wsum), top = fmt::kEwaNrmW - 1;
   const uint64_t m = p >= top ? wsum >> (p - top) : wsum << (top - p);  // floor
   const recip::Result r = recip::eval(static_cast<int32_t>(m));
   // 1/wsum ~= R 2^-(RecipOutF + shift + p - top); shift == top (m's msb).
-  const int sh = fmt::kRecipOutF + static_cast<int>(r.shift) + p - top;
-  const u128 v = (static_cast<u128>(acc) * r.mant + (u128(1) << (sh - 1))) >> sh;
+  return {r.mant, fmt::kRecipOutF + static_cast<int>(r.shift) + p - top};
+}
+uint32_t channel(uint64_t acc, InvSum r) {
+  const u128 v = (static_cast<u128>(acc) * r.mant + (u128(1) << (r.sh - 1))) >> r.sh;
   return static_cast<uint32_t>(std::min<u128>(v, 255));
 }
+}  // namespace
+
+uint32_t normalise(uint64_t acc, uint64_t wsum) { return channel(acc, inv_sum(wsum)); }
 
 Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool direct, WalkStats* st) {
   Out out;
@@ -284,8 +298,9 @@ Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool di
     out.color = t.fetch(su.level, floor_div_step(su.cu + kStep / 2), floor_div_step(su.cv + kStep / 2));
     return out;
   }
-  out.color = {static_cast<uint8_t>(normalise(acc[0], wsum)), static_cast<uint8_t>(normalise(acc[1], wsum)),
-               static_cast<uint8_t>(normalise(acc[2], wsum)), static_cast<uint8_t>(normalise(acc[3], wsum))};
+  const InvSum r = inv_sum(wsum);  // shared by the four channels
+  out.color = {static_cast<uint8_t>(channel(acc[0], r)), static_cast<uint8_t>(channel(acc[1], r)),
+               static_cast<uint8_t>(channel(acc[2], r)), static_cast<uint8_t>(channel(acc[3], r))};
   return out;
 }
 

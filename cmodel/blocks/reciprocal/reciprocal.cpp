@@ -32,17 +32,6 @@ const std::array<Coef, kSegments>& table() {
   return tab;
 }
 
-Out core(Mant m) {
-  const auto idx = m.slice(fmt::kRecipDxW, fmt::kRecipIdxW);
-  const Dx dx = Dx::from_raw(m.slice(0, fmt::kRecipDxW));
-  const Coef& c = table()[idx];
-  const T1 t1 = (c.c2 * dx).as<T1>();                       // truncate
-  const S s = (c.c1 + t1).as<S>();                          // exact (same fraction bits)
-  const T2 t2 = (s * dx).as<T2>();                          // truncate (floor)
-  const auto y = c.c0 + t2;                                 // exact
-  return y.as<Out, Round::HalfUp, Ovf::Sat>();              // round half up
-}
-
 Result eval(int32_t q) {
   // Bring the RecipInW-bit code to a canonical sign-extended value.
   const int w = fmt::kRecipInW;

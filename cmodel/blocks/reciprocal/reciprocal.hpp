@@ -41,8 +41,18 @@ struct Coef {
 // each coefficient format. Deterministic (IEEE double, correctly rounded ops only).
 const std::array<Coef, kSegments>& table();
 
-// Core: mantissa code m (u24.23, top bit set) -> R code.
-Out core(Mant m);
+// Core: mantissa code m (u24.23, top bit set) -> R code. Inline: B1 and B2 call it per pixel.
+inline Out core(Mant m) {
+  static const Coef* const rom = table().data();  // one guarded load instead of a call
+  const auto idx = m.slice(fmt::kRecipDxW, fmt::kRecipIdxW);
+  const Dx dx = Dx::from_raw(m.slice(0, fmt::kRecipDxW));
+  const Coef& c = rom[idx];
+  const T1 t1 = (c.c2 * dx).as<T1>();           // truncate
+  const S s = (c.c1 + t1).as<S>();              // exact (same fraction bits)
+  const T2 t2 = (s * dx).as<T2>();              // truncate (floor)
+  const auto y = c.c0 + t2;                     // exact
+  return y.as<Out, Round::HalfUp, Ovf::Sat>();  // round half up
+}
 
 struct Result {
   uint32_t mant;   // R code, RecipOutW bits

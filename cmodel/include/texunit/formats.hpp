@@ -6,6 +6,8 @@
 // and in the C-model type that uses the constant.
 #pragma once
 
+#include <cstdint>
+
 // X(name, value, description). Values may use earlier names (prefixed k) as constant expressions.
 #define TU_FORMAT_PARAMS(X)                                                                      \
   /* Reciprocal unit (docs/blocks/reciprocal.md) */                                             \
@@ -27,6 +29,32 @@
   X(RecipC0F, 30, "")                                                                           \
   X(RecipOutW, 25, "reciprocal mantissa R in (0.5,1]: unsigned, RecipOutF fraction bits")       \
   X(RecipOutF, 24, "")                                                                          \
+  /* Perlin noise unit (docs/blocks/noise.md) */                                                \
+  X(NoiseCoordW, 32, "input coordinates x, y, z: signed, NoiseTF fraction bits (s32.16)")        \
+  X(NoiseLatW, 8, "lattice index floor(x) & 255: the period-256 wrap of the permutation")       \
+  X(NoiseTF, 16, "local coordinate t = frac(x) in [0,1): unsigned, NoiseTF bits (u16.16)")      \
+  X(NoiseFadeIF, 24, "fade intermediates t^2, t^3 (u24.24) and b = t(6t-15)+10: frac bits")     \
+  X(NoiseFadeBW, 28, "b = t(6t-15)+10 in (1,10]: unsigned, NoiseFadeIF fraction bits, half up") \
+  X(NoiseSW, 17, "fade s = t^3 b in [0,1]: unsigned, NoiseTF fraction bits, half up")           \
+  X(NoiseDW, 17, "corner offsets t, t-1 in [-1,1): signed, NoiseTF fraction bits")              \
+  X(NoiseValW, 19, "gradient dots and lerps in [-2,2]: signed, NoiseTF fraction bits")          \
+  X(NoiseOctaves, 4, "fBm octaves K: noise(2^i x) 2^-i, i < K")                                 \
+  X(NoiseAccW, kNoiseValW + kNoiseOctaves, "fBm sum: signed, NoiseTF+K-1 fraction bits, exact") \
+  X(NoiseNormF, 18, "normalisation constants 1/(2 B (2 - 2^(1-K))): NoiseNormF fraction bits")  \
+  X(NoiseBound3E4, 10364, "bound of |noise3| in 1e-4 (sup 1.0363538, docs/blocks/noise.md)")    \
+  X(NoiseBound2E4, 10000, "bound of |noise2| in 1e-4 (per-axis bound, exact sup)")              \
+  X(NoiseNorm3, static_cast<int>(((int64_t(1) << (kNoiseNormF + kNoiseOctaves - 1)) * 10000 /    \
+                                  (int64_t(kNoiseBound3E4) * ((1 << kNoiseOctaves) - 1)) + 1) / 2), \
+    "3-D normalisation constant, round half up: unsigned, NoiseNormF fraction bits")          \
+  X(NoiseNorm2, static_cast<int>(((int64_t(1) << (kNoiseNormF + kNoiseOctaves - 1)) * 10000 /    \
+                                  (int64_t(kNoiseBound2E4) * ((1 << kNoiseOctaves) - 1)) + 1) / 2), \
+    "2-D normalisation constant, round half up: unsigned, NoiseNormF fraction bits")          \
+  X(NoiseNormW, kNoiseNormF, "normalisation constant word: unsigned (value < 1)")              \
+  X(NoiseOutW, 17, "fbm in [0,1]: unsigned, NoiseTF fraction bits, round half up, clamped")      \
+  X(NoiseCoreLatency, 6, "noise core: 3 hash levels (fade beside), dots + x lerp, y, z lerp")   \
+  X(NoisePipeLatency, kNoiseCoreLatency + 1, "pipelined scheme (K cores) + sum/normalise, II 1") \
+  X(NoiseSerialLatency, kNoiseCoreLatency + kNoiseOctaves, "octave-serial scheme (one core)")   \
+  X(NoiseSerialIi, kNoiseOctaves, "octave-serial scheme: one sample per K clocks")              \
   /* Gaussian pixel model: clip volume, weight, weight tables (docs/blocks/gaussian.md) */      \
   X(ClipInW, 13, "clip distance d: signed, ClipInF fraction bits; domain [-0.5, 0.5], clamped")  \
   X(ClipInF, 12, "")                                                                            \
