@@ -140,12 +140,12 @@ std::string db(double v) {
   std::snprintf(b, sizeof b, std::isinf(v) ? "reference" : "%.2f dB", v);
   return b;
 }
-// The demo's C-model rows: every filter (EWA with each weight source) against the float EWA frame.
+// The demo's C-model rows: every filter (EWA with each weight source) against both references.
 void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
 void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
 // The demo's RTL rows: the texture-unit top == the C-model engine on every pixel.
-// `relief`, `relief_ref`: the scene with its relief and the float EWA + 256-layer relief frame
-// (the relief row); `s`, `ewa_ref`: the texture path.
+// `relief`, `relief_refs`: the scene with its relief and its references (the relief row); `s`,
+// `refs`: the texture path.
 bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
                      const std::string& out_dir, int threads);
 }  // namespace
