@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The whole test suite: release build (C model, RTL co-simulation, benchmarks) and the
-# AddressSanitizer + UBSan build of the C-model tests.
+# The whole test suite: release build (C model, RTL co-simulation, benchmarks), the
+# AddressSanitizer + UBSan build of the C-model tests, and the fuzz targets' short run
+# (scripts/fuzz.sh: corpora replayed, each target fuzzed for seconds; docs/robustness.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -11,3 +12,4 @@ ctest --preset default -j "$jobs"
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$jobs"
 ctest --preset asan -j "$jobs"
+scripts/fuzz.sh

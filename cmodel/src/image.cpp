@@ -6,9 +6,11 @@
 #include <stdexcept>
 #include <system_error>
 
+// Every format stb_image reads (PNG, JPEG, BMP, TGA, GIF first frame, PSD composite, HDR tone
+// mapped to 8 bits, PIC, PNM); the size is checked from the header before decoding (kMaxSide).
 #define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
 #define STBI_FAILURE_USERMSG
+#define STBI_MAX_DIMENSIONS 65536
 #include <stb/stb_image.h>
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
@@ -18,13 +20,19 @@ namespace tu::img {
 namespace {
 using StbData = std::unique_ptr<stbi_uc, void (*)(void*)>;
 
-// Loads a PNG with `want` channels (0: as stored); n receives the stored channel count.
+// Loads an image with `want` channels (0: as stored); n receives the stored channel count.
 StbData load(const std::string& path, int want, int& w, int& h, int& n) {
   if (!std::filesystem::is_regular_file(path))
     throw std::runtime_error(path + ": no such file");
+  // The header first: a too large image is refused before its pixels are decoded.
+  if (!stbi_info(path.c_str(), &w, &h, &n))
+    throw std::runtime_error(path + ": cannot read the image (" + std::string(stbi_failure_reason()) + ")");
+  if (w > kMaxSide || h > kMaxSide)
+    throw std::runtime_error(path + ": the image is " + std::to_string(w) + "x" + std::to_string(h) +
+                             " pixels; at most " + std::to_string(kMaxSide) + " per side are read");
   StbData data(stbi_load(path.c_str(), &w, &h, &n, want), stbi_image_free);
   if (!data)
-    throw std::runtime_error(path + ": cannot read PNG (" + std::string(stbi_failure_reason()) +
+    throw std::runtime_error(path + ": cannot read the image (" + std::string(stbi_failure_reason()) +
                              ")");
   if (w <= 0 || h <= 0 || n <= 0) throw std::runtime_error(path + ": empty image");
   return data;

@@ -55,6 +55,18 @@ ewa::Engine engine_of(scene::Filter f) {
   return ewa::Engine::Ewa;
 }
 
+std::vector<persp::Unit::Coefs> setup_fx(const scene::Scene& s, size_t object, int tex_w, int tex_h) {
+  const auto ref = setup_ref(s, object, tex_w, tex_h);
+  const auto tris = scene::in_texels(s.objects.at(object), tex_w, tex_h);
+  std::vector<persp::Unit::Coefs> k;
+  try {
+    for (size_t t = 0; t < tris.size(); ++t) k.push_back(persp::Unit::quantise(ref[t], tris[t].name));
+  } catch (const persp::SetupError& e) {
+    throw persp::SetupError(scene::object_where(s, object) + ": " + e.what());
+  }
+  return k;
+}
+
 uint32_t laniso_code(double max_aniso) {
   const double l = std::round(std::ldexp(std::log2(std::max(1.0, max_aniso)), fmt::kEllLogF));
   return static_cast<uint32_t>(std::min(l, std::ldexp(1.0, fmt::kEllAnisoW) - 1));
@@ -68,15 +80,8 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
   std::vector<tex::Texture> texs;
   std::vector<std::vector<persp::Unit::Coefs>> coefs;
   for (size_t o = 0; o < s.objects.size(); ++o) {
-    const auto& ob = s.objects[o];
-    texs.push_back(scene::build_texture(s, s.materials.at(ob.material).texture));
-    const auto& base = texs.back().levels[0];
-    std::vector<persp::Unit::Coefs> k;
-    const auto tris = scene::in_texels(ob, base.width, base.height);
-    for (size_t t = 0; t < tris.size(); ++t)
-      k.push_back(persp::Unit::quantise(persp::coefficients(s.camera, tris[t]),
-                                        "object " + std::to_string(o) + " triangle " + std::to_string(t)));
-    coefs.push_back(std::move(k));
+    texs.push_back(scene::build_texture(s, s.materials.at(s.objects[o].material).texture));
+    coefs.push_back(setup_fx(s, o, texs.back().levels[0].width, texs.back().levels[0].height));
   }
   std::vector<std::optional<relief::Maps>> reliefs;  // per object with relief and opt.relief
   for (const auto& o : s.objects)

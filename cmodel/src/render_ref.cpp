@@ -11,13 +11,14 @@
 #include "pom/relief.hpp"
 #include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
+#include "texunit/convert.hpp"
 
 namespace tu::render {
 
 namespace {
 constexpr img::Rgba8 kBackground{0, 0, 80, 255};
 
-uint8_t to8(double x) { return static_cast<uint8_t>(std::clamp(std::lround(x), 0L, 255L)); }
+uint8_t to8(double x) { return static_cast<uint8_t>(std::clamp<int64_t>(round_i64(x), 0, 255)); }
 img::Rgba8 to8(const tex::RgbaF& c) { return {to8(c.r), to8(c.g), to8(c.b), to8(c.a)}; }
 
 // Relief: (u, v) (level-0 texels) shifted by the 256-layer exact march in the tangent frame of
@@ -29,13 +30,24 @@ void shift_relief(const scene::Scene& s, const persp::RayCaster& rays, const sce
   relief::TangentView tv;
   if (!relief::pixel_view(rays, s, c.object, c.triangle, x, y, &tv)) return;
   const double W = tx.levels[0].width, H = tx.levels[0].height, one = std::ldexp(1.0, fmt::kPomUvF);
-  rec->relief_n = static_cast<int>(relief::layers_at(maps, std::llround(*u / W * one), std::llround(*v / H * one),
+  rec->relief_n = static_cast<int>(relief::layers_at(maps, round_i64(*u / W * one), round_i64(*v / H * one),
                                                      relief::quantise(tv, rel.scale), rel.method, rel.layers));
   const auto r = relief::shift_uv_ref(maps, *u / W, *v / H, tv, rel.scale);
   *u = r.u * W;
   *v = r.v * H;
 }
 }  // namespace
+
+std::vector<persp::Coef9> setup_ref(const scene::Scene& s, size_t object, int tex_w, int tex_h) {
+  std::vector<persp::Coef9> k;
+  try {
+    for (const auto& t : scene::in_texels(s.objects.at(object), tex_w, tex_h))
+      k.push_back(persp::coefficients(s.camera, t));
+  } catch (const persp::SetupError& e) {
+    throw persp::SetupError(scene::object_where(s, object) + ": " + e.what());
+  }
+  return k;
+}
 
 std::vector<Cover> visibility(const scene::Scene& s, int threads) {
   const int w = s.camera.width, h = s.camera.height;
@@ -91,14 +103,9 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
   // Per object: texture and per-triangle coefficients.
   std::vector<tex::Texture> texs;
   std::vector<std::vector<persp::Coef9>> coefs;
-  for (const auto& o : s.objects) {
-    const auto& m = s.materials.at(o.material);
-    texs.push_back(scene::build_texture(s, m.texture));
-    const auto& base = texs.back().levels[0];
-    std::vector<persp::Coef9> k;
-    for (const auto& t : scene::in_texels(o, base.width, base.height))
-      k.push_back(persp::coefficients(s.camera, t));
-    coefs.push_back(std::move(k));
+  for (size_t o = 0; o < s.objects.size(); ++o) {
+    texs.push_back(scene::build_texture(s, s.materials.at(s.objects[o].material).texture));
+    coefs.push_back(setup_ref(s, o, texs.back().levels[0].width, texs.back().levels[0].height));
   }
   // Per object with relief: depth / complexity maps (docs/blocks/relief.md §9).
   std::vector<std::optional<relief::Maps>> reliefs;
@@ -127,7 +134,7 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
       rec.footprint_lod = foot.lod;
       switch (filter.value_or(m.filter)) {
         case scene::Filter::Nearest:
-          rec.color = tx.fetch(0, static_cast<int64_t>(std::floor(u)), static_cast<int64_t>(std::floor(v)));
+          rec.color = tx.fetch(0, floor_i64(u), floor_i64(v));
           rec.texels = 1;
           break;
         case scene::Filter::Bilinear:

@@ -28,7 +28,7 @@ std::string formats_pkg() {
   // Every block uses only its own constants: unused package parameters are expected.
   os << kBanner << "package tu_formats_pkg;\n  /* verilator lint_off UNUSEDPARAM */\n";
 #define TU_X_EMIT(name, value, desc)                                                \
-  os << "  localparam int unsigned " #name " = " << fmt::k##name << ";" \
+  os << "  localparam int " #name " = " << fmt::k##name << ";" \
      << (std::string(desc).empty() ? "" : std::string("  // ") + desc) << "\n";
   TU_FORMAT_PARAMS(TU_X_EMIT)
 #undef TU_X_EMIT

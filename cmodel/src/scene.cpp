@@ -4,15 +4,90 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+
+#include "texunit/text.hpp"
 
 namespace tu::scene {
 
 using json = nlohmann::json;
 
+SceneError::SceneError(const std::string& what) : std::runtime_error(printable(what)) {}
+
 namespace {
+
+// Line (1-based) of byte offset `at` in `text`.
+size_t line_of(const std::string& text, size_t at) {
+  at = std::min(at, text.size());
+  return 1 + static_cast<size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at ? at - 1 : 0), '\n'));
+}
+
+// nlohmann's DOM builder behind a SAX filter that is stricter than json::parse: a key repeated
+// in one object is an error naming it (json::parse keeps the last), and every parse error names
+// the line, a number outside double's range included (json::parse throws that one without a
+// position).
+class StrictSax {
+ public:
+  using Dom = nlohmann::detail::json_sax_dom_parser<json>;
+  StrictSax(json& root, const std::string& text, const std::string& source)
+      : dom_(root), text_(text), source_(source) {}
+  bool null() { return value(), dom_.null(); }
+  bool boolean(bool b) { return value(), dom_.boolean(b); }
+  bool number_integer(json::number_integer_t x) { return value(), dom_.number_integer(x); }
+  bool number_unsigned(json::number_unsigned_t x) { return value(), dom_.number_unsigned(x); }
+  bool number_float(json::number_float_t x, const std::string& s) { return value(), dom_.number_float(x, s); }
+  bool string(std::string& s) { return value(), dom_.string(s); }
+  bool binary(json::binary_t& b) { return value(), dom_.binary(b); }
+  bool start_object(std::size_t n) {
+    value();
+    frames_.push_back({false, 0, {}, {}});
+    return dom_.start_object(n);
+  }
+  bool key(std::string& k) {
+    Frame& f = frames_.back();
+    if (!f.keys.insert(k).second) {
+      f.key = k;
+      throw SceneError(source_ + ": " + pointer() + ": duplicate key (a key appears once per object)");
+    }
+    f.key = k;
+    return dom_.key(k);
+  }
+  bool end_object() { return frames_.pop_back(), dom_.end_object(); }
+  bool start_array(std::size_t n) {
+    value();
+    frames_.push_back({true, 0, {}, {}});
+    return dom_.start_array(n);
+  }
+  bool end_array() { return frames_.pop_back(), dom_.end_array(); }
+  bool parse_error(std::size_t at, const std::string& token, const nlohmann::detail::exception& e) {
+    const std::string where = source_ + ":" + std::to_string(line_of(text_, at)) + ": ";
+    if (e.id == 406) throw SceneError(where + "number " + token + " is outside double's range");
+    throw SceneError(where + "malformed JSON (" + e.what() + ")");
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    size_t index;  // arrays: elements seen so far
+    std::string key;  // objects: the current key
+    std::set<std::string> keys;
+  };
+  void value() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+  }
+  std::string pointer() const {
+    std::string p;
+    for (const auto& f : frames_) p += "/" + (f.array ? std::to_string(f.index - 1) : f.key);
+    return p;
+  }
+  Dom dom_;
+  const std::string& text_;
+  const std::string& source_;
+  std::vector<Frame> frames_;
+};
 
 // A JSON object being validated: every access records the field, finish() rejects the rest.
 class Node {
@@ -70,17 +145,23 @@ class Node {
     }
     return s;
   }
-  // A fixed-length array of numbers.
-  std::vector<double> vec(const std::string& k, size_t n, std::optional<std::vector<double>> def = {}) {
+  // A fixed-length array of numbers, each of magnitude <= max_abs.
+  std::vector<double> vec(const std::string& k, size_t n, double max_abs,
+                          std::optional<std::vector<double>> def = {}) {
     if (!has(k) && def) return used_.insert(k), *def;
-    const json& v = raw(k);
+    return numbers(raw(k), k, n, max_abs);
+  }
+  // The same for an array element `json_at` of field k (k names it in messages, e.g. "uv/2").
+  std::vector<double> numbers(const json& v, const std::string& k, size_t n, double max_abs) const {
     if (!v.is_array() || v.size() != n)
       fail_at(k, "expected an array of " + std::to_string(n) + " numbers");
     std::vector<double> out;
     for (size_t i = 0; i < n; ++i) {
-      if (!v[i].is_number()) fail_at(k + "/" + std::to_string(i), "expected a number");
+      if (!v[i].is_number()) fail_at(k, "expected an array of " + std::to_string(n) + " numbers");
       out.push_back(v[i].get<double>());
-      if (!std::isfinite(out.back())) fail_at(k + "/" + std::to_string(i), "not finite");
+      if (!(std::fabs(out.back()) <= max_abs))
+        fail_at(k + "/" + std::to_string(i),
+                "value " + v[i].dump() + " is out of range [-" + fmt(max_abs) + ", " + fmt(max_abs) + "]");
     }
     return out;
   }
@@ -104,10 +185,27 @@ class Node {
 
 bool pow2(int x) { return x > 0 && (x & (x - 1)) == 0; }
 
+// Validated magnitudes (docs/scene-format.md): world coordinates and uv stay where double
+// arithmetic of the set-up and of the float reference is exact enough and every float->int
+// conversion is defined.
+constexpr double kMaxCoord = 1e6;  // |x|, |y|, |z| of camera and vertices, world units
+constexpr double kMaxUv = 65536;   // |u|, |v|, texture repeats
+// Vectors a, b with |a x b| <= kParallel |a| |b| count as parallel (sin of the angle; a triangle
+// with edges this close to collinear has zero area).
+constexpr double kParallel = 1e-12;
+
 void parse_camera(Node n, persp::Camera& c) {
-  const auto p = n.vec("position", 3), l = n.vec("look_at", 3), u = n.vec("up", 3, {{0, 1, 0}});
+  const auto p = n.vec("position", 3, kMaxCoord), l = n.vec("look_at", 3, kMaxCoord);
+  const auto u = n.vec("up", 3, kMaxCoord, {{0, 1, 0}});
   for (int i = 0; i < 3; ++i) c.pos[i] = p[i], c.look_at[i] = l[i], c.up[i] = u[i];
   if (p == l) n.fail_at("look_at", "equals the position");
+  // The camera basis is right = normalize(view x up): up must be non-zero and not along the view.
+  const double d[3] = {l[0] - p[0], l[1] - p[1], l[2] - p[2]};
+  const double x[3] = {d[1] * u[2] - d[2] * u[1], d[2] * u[0] - d[0] * u[2], d[0] * u[1] - d[1] * u[0]};
+  const double dn = std::hypot(d[0], d[1], d[2]), un = std::hypot(u[0], u[1], u[2]);
+  if (!(un > 0)) n.fail_at("up", "is the zero vector");
+  if (!(std::hypot(x[0], x[1], x[2]) > kParallel * dn * un))
+    n.fail_at("up", "is parallel to the view direction (look_at - position)");
   c.fovy_deg = n.num("fovy_deg", 1, 170, 60.0);
   c.width = n.integer("width", 1, 4096);
   c.height = n.integer("height", 1, 4096);
@@ -171,7 +269,7 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
   return m;
 }
 
-Object parse_object(Node n, const Scene& s, int index) {
+Object parse_object(Node n, const Scene& s, int index, std::vector<std::string>* warnings) {
   Object o;
   o.name = n.str("name", "object" + std::to_string(index));
   o.material = n.str("material");
@@ -187,25 +285,26 @@ Object parse_object(Node n, const Scene& s, int index) {
     n.fail_at("uv", "expected " + std::to_string(nv) + " uv pairs for a " + type);
   persp::Vertex v[4];
   for (size_t i = 0; i < nv; ++i) {
-    const auto bad = [&](const char* f, size_t k) {
-      n.fail_at(std::string(f) + "/" + std::to_string(i), "expected an array of " +
-                                                              std::to_string(k) + " numbers");
-    };
-    if (!vs[i].is_array() || vs[i].size() != 3) bad("vertices", 3);
-    if (!uvs[i].is_array() || uvs[i].size() != 2) bad("uv", 2);
-    for (int k = 0; k < 3; ++k) {
-      if (!vs[i][k].is_number()) bad("vertices", 3);
-      v[i].p[k] = vs[i][k].get<double>();
-    }
-    for (int k = 0; k < 2; ++k) {
-      if (!uvs[i][k].is_number()) bad("uv", 2);
-      v[i].uv[k] = uvs[i][k].get<double>();  // texture repeats; see in_texels()
-    }
+    const auto p = n.numbers(vs[i], "vertices/" + std::to_string(i), 3, kMaxCoord);
+    const auto uv = n.numbers(uvs[i], "uv/" + std::to_string(i), 2, kMaxUv);
+    for (int k = 0; k < 3; ++k) v[i].p[k] = p[static_cast<size_t>(k)];
+    for (int k = 0; k < 2; ++k) v[i].uv[k] = uv[static_cast<size_t>(k)];  // texture repeats; see in_texels()
   }
+  // A zero-area triangle (collinear or repeated vertices) covers no pixel: dropped with a
+  // warning, as GPUs drop it (its set-up would divide by its zero normal).
   auto tri = [&](int a, int b, int c, const char* suffix) {
     persp::Triangle t;
     t.name = o.name + suffix;
     t.v[0] = v[a], t.v[1] = v[b], t.v[2] = v[c];
+    double e1[3], e2[3];
+    for (int k = 0; k < 3; ++k) e1[k] = v[b].p[k] - v[a].p[k], e2[k] = v[c].p[k] - v[a].p[k];
+    const double cr = std::hypot(e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                                 e1[0] * e2[1] - e1[1] * e2[0]);
+    if (!(cr > kParallel * std::hypot(e1[0], e1[1], e1[2]) * std::hypot(e2[0], e2[1], e2[2]))) {
+      warnings->push_back(object_where(s, o.name, static_cast<size_t>(index)) + ": triangle '" + t.name +
+                          "' has zero area (collinear or repeated vertices): dropped");
+      return;
+    }
     o.triangles.push_back(t);
   };
   if (nv == 3) tri(0, 1, 2, "");
@@ -218,14 +317,8 @@ Object parse_object(Node n, const Scene& s, int index) {
 
 Scene parse(const std::string& text, const std::string& source, const std::string& base_dir) {
   json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // Byte offset -> line number.
-    const size_t at = std::min(e.byte, text.size());
-    const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at ? at - 1 : 0), '\n');
-    throw SceneError(source + ":" + std::to_string(line) + ": malformed JSON (" + e.what() + ")");
-  }
+  StrictSax sax(j, text, source);
+  json::sax_parse(text, &sax);
   Scene s;
   s.source = source;
   Node root(j, "", s.source);
@@ -249,7 +342,7 @@ Scene parse(const std::string& text, const std::string& source, const std::strin
   if (!objs.is_array() || objs.empty()) root.fail_at("objects", "expected a non-empty array");
   for (size_t i = 0; i < objs.size(); ++i)
     s.objects.push_back(parse_object(Node(objs[i], "/objects/" + std::to_string(i), s.source), s,
-                                     static_cast<int>(i)));
+                                     static_cast<int>(i), &s.warnings));
   if (root.has("error_budget")) {
     Node b = root.obj("error_budget");
     s.budget.max_texel_err = b.num("max_texel_err", 1e-6, 16, s.budget.max_texel_err);
@@ -265,7 +358,16 @@ Scene load(const std::string& path) {
   if (!in) throw SceneError(path + ": cannot open file");
   std::ostringstream ss;
   ss << in.rdbuf();
-  return parse(ss.str(), path, std::filesystem::path(path).parent_path().string());
+  Scene s = parse(ss.str(), path, std::filesystem::path(path).parent_path().string());
+  for (const auto& w : s.warnings) std::cerr << "warning: " << w << "\n";
+  return s;
+}
+
+std::string object_where(const Scene& s, const std::string& name, size_t index) {
+  return s.source + ": object '" + name + "' (/objects/" + std::to_string(index) + ")";
+}
+std::string object_where(const Scene& s, size_t index) {
+  return object_where(s, s.objects.at(index).name, index);
 }
 
 const std::string& default_scene_json() {

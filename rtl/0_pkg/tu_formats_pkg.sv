@@ -2,127 +2,155 @@
 // Do not edit: change the C model and regenerate; GeneratedRtl.IsFresh checks this file.
 package tu_formats_pkg;
   /* verilator lint_off UNUSEDPARAM */
-  localparam int unsigned RecipInW = 24;  // input code q: signed, caller-defined fraction bits
-  localparam int unsigned RecipMantW = 24;  // normalised mantissa M in [1,2): unsigned, RecipMantW-1 fraction bits
-  localparam int unsigned RecipIdxW = 8;  // segment index: top fraction bits of M
-  localparam int unsigned RecipDxW = 15;  // offset in segment: unsigned, RecipMantW-1 frac
-  localparam int unsigned RecipShiftW = 5;  // exponent p = msb position of q, 0..RecipInW-2
-  localparam int unsigned RecipC2W = 14;  // quadratic coefficient c2: unsigned
-  localparam int unsigned RecipC2F = 12;
-  localparam int unsigned RecipT1W = 18;  // t1 = c2*dx, truncated: unsigned
-  localparam int unsigned RecipT1F = 22;
-  localparam int unsigned RecipC1W = 25;  // linear coefficient c1: signed
-  localparam int unsigned RecipC1F = 22;
-  localparam int unsigned RecipSW = 25;  // s = c1 + t1: signed
-  localparam int unsigned RecipT2W = 26;  // t2 = s*dx, truncated: signed
-  localparam int unsigned RecipT2F = 30;
-  localparam int unsigned RecipC0W = 32;  // constant coefficient c0: unsigned
-  localparam int unsigned RecipC0F = 30;
-  localparam int unsigned RecipOutW = 25;  // reciprocal mantissa R in (0.5,1]: unsigned, RecipOutF fraction bits
-  localparam int unsigned RecipOutF = 24;
-  localparam int unsigned ClipInW = 13;  // clip distance d: signed, ClipInF fraction bits; domain [-0.5, 0.5], clamped
-  localparam int unsigned ClipInF = 12;
-  localparam int unsigned ClipAW = 12;  // a = min(|d|, 0.5): unsigned, ClipInF fraction bits
-  localparam int unsigned ClipCoefW = 22;  // polynomial / segment coefficients: signed, ClipCoefF fraction bits
-  localparam int unsigned ClipCoefF = 18;
-  localparam int unsigned ClipAccW = 24;  // Horner/Estrin accumulators and truncated products: signed, ClipCoefF frac
-  localparam int unsigned ClipOutW = 16;  // v: unsigned, ClipOutF fraction bits, round half up, p in [1, 2^16-1] codes
-  localparam int unsigned ClipOutF = 16;
-  localparam int unsigned ClipP1Latency = 2;  // comparator + segment table + one multiply-add, II = 1
-  localparam int unsigned ClipHornerLatency = 4;  // degree-3 Horner, fully pipelined, II = 1
-  localparam int unsigned ClipEstrinLatency = 3;  // degree-3 Estrin (a^2 beside c1*a, c3*a), II = 1
-  localparam int unsigned ClipSeqLatency = 4;  // degree-3 Horner on one shared multiplier (FSM)
-  localparam int unsigned ClipSeqIi = 4;  // initiation interval of the shared-multiplier scheme
-  localparam int unsigned GaussQW = 16;  // normalised quadratic form Q: unsigned, GaussQF fraction bits
-  localparam int unsigned GaussQF = 14;
-  localparam int unsigned GaussTW = 16;  // t = 1 - Q/2 in [0.5, 1]: unsigned, GaussTF fraction bits
-  localparam int unsigned GaussTF = 15;
-  localparam int unsigned GaussSqW = 17;  // t^2, t^4 and w = t^8: unsigned, GaussSqF fraction bits, round half up
-  localparam int unsigned GaussSqF = 16;
-  localparam int unsigned GaussLatency = 3;  // three squarings, one per stage, II = 1
-  localparam int unsigned WtabEntryW = 16;  // weight-table entry: unsigned, WtabEntryW fraction bits, saturating
-  localparam int unsigned GaussXiW = 16;  // ellipse-frame coordinates xi, eta (2-D weight table): signed, GaussXiF frac
-  localparam int unsigned GaussXiF = 14;
-  localparam int unsigned RecipLatency = 5;  // pipeline latency in cycles, II = 1
-  localparam int unsigned PomVzW = 16;  // view-vector z: signed, PomVzF fraction bits (|Vz| > 1 saturates to 1)
-  localparam int unsigned PomVzF = 14;
-  localparam int unsigned PomIdxF = 11;  // ROM index: round_half_up(min(|Vz|,1) * 2^PomIdxF), unsigned
-  localparam int unsigned PomIdxW = 12;  // index 0..2^PomIdxF (2^PomIdxF + 1 ROM entries)
-  localparam int unsigned PomFW = 17;  // F = (1-|Vz|)^0.8: unsigned, PomFF fraction bits, round to nearest, F(0)=1
-  localparam int unsigned PomFF = 16;
-  localparam int unsigned PomCW = 8;  // complexity code C*255: unsigned integer
-  localparam int unsigned PomNW = 6;  // layer counts Nmin, Nmax, N: unsigned integers 0..63
-  localparam int unsigned PomTW = 17;  // T = 255*(Nmax-2*Nmin) + Nmax*code: signed integer
-  localparam int unsigned PomPW = 33;  // P = F*T: signed, PomFF fraction bits (exact)
-  localparam int unsigned PomQW = 16;  // y = floor(P / 2^(PomFF+1)) + 255*PomBias: unsigned integer, < 2^15
-  localparam int unsigned PomBias = 64;  // bias (in units of 255) that makes y non-negative
-  localparam int unsigned PomDivM = 32897;  // floor(y/255) = (y*PomDivM) >> PomDivS, exact for y < 66052
-  localparam int unsigned PomDivS = 23;
-  localparam int unsigned PomLayersLatency = 3;  // pom_layers pipeline latency in cycles, II = 1
-  localparam int unsigned PomUvW = 32;  // POM march uv: signed, PomUvF fraction bits (1.0 = one texture)
-  localparam int unsigned PomUvF = 16;
-  localparam int unsigned PomSF = 16;  // height scale S: unsigned u0.PomSF (S < 1)
-  localparam int unsigned PomVzMin = 512;  // |Vz| guard: |Vz| clamped to >= PomVzMin * 2^-PomVzF (2^-5, 88.2 deg)
-  localparam int unsigned PomWF = 16;  // refinement weight w = a/(a+b) in [0,1]: unsigned, PomWF fraction bits
-  localparam int unsigned PomWW = 17;  // w code 0..2^PomWF
-  localparam int unsigned PomSW = 16;  // height scale S code: unsigned, PomSF fraction bits
-  localparam int unsigned PomDenW = 16;  // refinement operands a, den = a + b: unsigned integers < 2^15
-  localparam int unsigned PomSetupLatency = 7;  // tu_pom_setup: normalise, 4 reciprocal stages, P, dT; II = 1
-  localparam int unsigned PomRefineLatency = 7;  // tu_pom_refine: normalise, 4 reciprocal stages, w, T''; II = 1
-  localparam int unsigned IpxCap = 16;  // iterative parallax: default iteration cap
-  localparam int unsigned IpxEps = 256;  // iterative parallax: default threshold |d| < IpxEps * 2^-PomUvF (2^-8)
-  localparam int unsigned PerspXyW = 12;  // pixel indices x, y and span offset n: unsigned, 0..4095
-  localparam int unsigned PerspF = 40;  // fraction bits of coefficients A..I and of accumulators p_u, p_v, q
-  localparam int unsigned PerspPW = 54;  // A..F, p_u, p_v: signed, PerspF fraction bits, |p| < 2^13
-  localparam int unsigned PerspQW = 44;  // G..I, q: signed, PerspF fraction bits, |q| < 8
-  localparam int unsigned PerspGuardLog2 = 10;  // guard: q < 2^-PerspGuardLog2 (incl. q <= 0) -> flag, u, v saturated
-  localparam int unsigned PerspUvW = 32;  // u, v: signed texels, PerspUvF fraction bits, round half up, saturate
-  localparam int unsigned PerspUvF = 8;
-  localparam int unsigned TexUvF = 8;  // texel coordinates: fraction bits of the B1 output
-  localparam int unsigned TexWeightF = 8;  // bilinear weights out of 2^TexWeightF (truncated from TexUvF bits)
-  localparam int unsigned TexLodF = 8;  // LOD fraction bits: trilinear blend weight
-  localparam int unsigned TexMaxLevels = 13;  // mip levels: up to 4096 texels on a side
-  localparam int unsigned TexAddrW = 26;  // texel RAM word address (RGBA8 words, all levels of several textures)
-  localparam int unsigned TexRamLog2Words = 20;  // simulation texel RAM of the texture-unit top: 2^N RGBA8 words
-  localparam int unsigned PerspLatency = 8;  // per-pixel pipeline latency in cycles, II = 1
-  localparam int unsigned EllNumW = 48;  // derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac
-  localparam int unsigned EllNumF = 32;
-  localparam int unsigned EllNxW = 112;  // exact numerators (span set-up, tu_texture_unit): signed, 2 PerspF frac, |n| < 2^30
-  localparam int unsigned EllDetW = 40;  // det3 of the 3x3 map (per triangle): signed normalised mantissa
-  localparam int unsigned EllDetExpW = 8;  // det3 exponent: signed, det3 = dm * 2^(dexp - (EllDetW - 2))
-  localparam int unsigned EllCoefW = 64;  // Ae', Ce' (unsigned), Be' (signed) codes: exact sums >> EllEexp (floor)
-  localparam int unsigned EllEexpW = 6;  // shared exponent of Ae', Be', Ce': value = code * 2^(eexp - 2 EllNumF)
-  localparam int unsigned EllFmW = 32;  // |f| mantissa (1.31, truncated); Fe' = f^2, f = det3/q
-  localparam int unsigned EllFexpW = 8;  // |f| exponent: signed, |f| = fm * 2^(fexp - 31)
-  localparam int unsigned EllNrmW = 24;  // LOD unit: s = Ae'+Ce' block-normalised to this many bits (floor shifts)
-  localparam int unsigned EllLogMantW = 24;  // log2 unit mantissa (1.23, truncated); EllLogF+1 squarings
-  localparam int unsigned EllLogF = 10;  // log2 of the axes: EllLogF fraction bits (internal EllLogF+1)
-  localparam int unsigned EllLogW = 18;  // log2 major / minor_clamped: signed, EllLogF fraction bits
-  localparam int unsigned EllAnisoW = 14;  // log2(max anisotropy): unsigned, EllLogF fraction bits (default 16:1)
-  localparam int unsigned EllLodW = 12;  // lod: unsigned, EllLodF fraction bits, floor, clamped to [0, max_lod]
-  localparam int unsigned EllLodF = 8;
-  localparam int unsigned EllMaxLodW = 4;  // max_lod (log2 of the texture size): unsigned integer
-  localparam int unsigned EllLatency = 5;  // analytic ellipse/LOD pipeline latency in cycles, II = 1
-  localparam int unsigned EwaCordW = 24;  // CORDIC x, y datapath: signed; d = Ae'-Ce', b = Be' block-normalised to W-3 bits
-  localparam int unsigned EwaCordIter = 16;  // CORDIC iterations (vectoring and rotation)
-  localparam int unsigned EwaAngW = 18;  // binary angle: signed, 2 pi = 2^EwaAngW (wraps), atan table entries
-  localparam int unsigned EwaCsW = 16;  // cos / sin of the major-axis angle: signed, EwaCsF fraction bits (s1.14)
-  localparam int unsigned EwaCsF = 14;
-  localparam int unsigned EwaExpF = 8;  // log2 of the semi-axes at the walk level: EwaExpF fraction bits (truncated)
-  localparam int unsigned EwaAxisMaxLog2 = 7;  // semi-axes clamped to 2^EwaAxisMaxLog2 texels (flag)
-  localparam int unsigned EwaE2W = 17;  // exp2 ROM entry 2^(i/2^EwaExpF): unsigned, EwaE2F fraction bits (u1.16)
-  localparam int unsigned EwaE2F = 16;
-  localparam int unsigned EwaAW = 24;  // semi-axes a, b = 2^ea (box only): unsigned, EwaE2F fraction bits
-  localparam int unsigned EwaKW = 18;  // frame coefficients kxu, kxv, kyu, kyv: signed, EwaKF fraction bits, half up
-  localparam int unsigned EwaKF = 16;
-  localparam int unsigned EwaPosF = 6;  // texel-space centre cu, cv, half extents hu, hv and offsets du, dv: frac bits
-  localparam int unsigned EwaDW = 16;  // offsets du, dv from the centre: signed, EwaPosF fraction bits
-  localparam int unsigned EwaHW = 15;  // half extents hu, hv (rounded up + margin): unsigned, EwaPosF fraction bits
-  localparam int unsigned EwaXiW = 32;  // xi, eta = k . (du, dv): signed, EwaKF + EwaPosF fraction bits (exact)
-  localparam int unsigned EwaQW = 63;  // Q = xi^2 + eta^2, ddQ: unsigned; dQ: signed EwaQW+1; 2 (EwaKF + EwaPosF) frac, exact
-  localparam int unsigned EwaCountW = 17;  // texel counters (box, inside) and the max_texels cap: unsigned integers
-  localparam int unsigned EwaWsumW = 33;  // weight sum: unsigned, GaussSqF fraction bits (exact)
-  localparam int unsigned EwaAccW = 41;  // per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)
-  localparam int unsigned EwaNrmW = 23;  // weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1
+  localparam int RecipInW = 24;  // input code q: signed, caller-defined fraction bits
+  localparam int RecipMantW = 24;  // normalised mantissa M in [1,2): unsigned, RecipMantW-1 fraction bits
+  localparam int RecipIdxW = 8;  // segment index: top fraction bits of M
+  localparam int RecipDxW = 15;  // offset in segment: unsigned, RecipMantW-1 frac
+  localparam int RecipShiftW = 5;  // exponent p = msb position of q, 0..RecipInW-2
+  localparam int RecipC2W = 14;  // quadratic coefficient c2: unsigned
+  localparam int RecipC2F = 12;
+  localparam int RecipT1W = 18;  // t1 = c2*dx, truncated: unsigned
+  localparam int RecipT1F = 22;
+  localparam int RecipC1W = 25;  // linear coefficient c1: signed
+  localparam int RecipC1F = 22;
+  localparam int RecipSW = 25;  // s = c1 + t1: signed
+  localparam int RecipT2W = 26;  // t2 = s*dx, truncated: signed
+  localparam int RecipT2F = 30;
+  localparam int RecipC0W = 32;  // constant coefficient c0: unsigned
+  localparam int RecipC0F = 30;
+  localparam int RecipOutW = 25;  // reciprocal mantissa R in (0.5,1]: unsigned, RecipOutF fraction bits
+  localparam int RecipOutF = 24;
+  localparam int ClipInW = 13;  // clip distance d: signed, ClipInF fraction bits; domain [-0.5, 0.5], clamped
+  localparam int ClipInF = 12;
+  localparam int ClipAW = 12;  // a = min(|d|, 0.5): unsigned, ClipInF fraction bits
+  localparam int ClipCoefW = 22;  // polynomial / segment coefficients: signed, ClipCoefF fraction bits
+  localparam int ClipCoefF = 18;
+  localparam int ClipAccW = 24;  // Horner/Estrin accumulators and truncated products: signed, ClipCoefF frac
+  localparam int ClipOutW = 16;  // v: unsigned, ClipOutF fraction bits, round half up, p in [1, 2^16-1] codes
+  localparam int ClipOutF = 16;
+  localparam int ClipP1Latency = 2;  // comparator + segment table + one multiply-add, II = 1
+  localparam int ClipHornerLatency = 4;  // degree-3 Horner, fully pipelined, II = 1
+  localparam int ClipEstrinLatency = 3;  // degree-3 Estrin (a^2 beside c1*a, c3*a), II = 1
+  localparam int ClipSeqLatency = 4;  // degree-3 Horner on one shared multiplier (FSM)
+  localparam int ClipSeqIi = 4;  // initiation interval of the shared-multiplier scheme
+  localparam int GaussQW = 16;  // normalised quadratic form Q: unsigned, GaussQF fraction bits
+  localparam int GaussQF = 14;
+  localparam int GaussTW = 16;  // t = 1 - Q/2 in [0.5, 1]: unsigned, GaussTF fraction bits
+  localparam int GaussTF = 15;
+  localparam int GaussSqW = 17;  // t^2, t^4 and w = t^8: unsigned, GaussSqF fraction bits, round half up
+  localparam int GaussSqF = 16;
+  localparam int GaussLatency = 3;  // three squarings, one per stage, II = 1
+  localparam int WtabEntryW = 16;  // weight-table entry: unsigned, WtabEntryW fraction bits, saturating
+  localparam int GaussXiW = 16;  // ellipse-frame coordinates xi, eta (2-D weight table): signed, GaussXiF frac
+  localparam int GaussXiF = 14;
+  localparam int RecipLatency = 5;  // pipeline latency in cycles, II = 1
+  localparam int PomVzW = 16;  // view-vector z: signed, PomVzF fraction bits (|Vz| > 1 saturates to 1)
+  localparam int PomVzF = 14;
+  localparam int PomIdxF = 11;  // ROM index: round_half_up(min(|Vz|,1) * 2^PomIdxF), unsigned
+  localparam int PomIdxW = 12;  // index 0..2^PomIdxF (2^PomIdxF + 1 ROM entries)
+  localparam int PomFW = 17;  // F = (1-|Vz|)^0.8: unsigned, PomFF fraction bits, round to nearest, F(0)=1
+  localparam int PomFF = 16;
+  localparam int PomCW = 8;  // complexity code C*255: unsigned integer
+  localparam int PomNW = 6;  // layer counts Nmin, Nmax, N: unsigned integers 0..63
+  localparam int PomTW = 17;  // T = 255*(Nmax-2*Nmin) + Nmax*code: signed integer
+  localparam int PomPW = 33;  // P = F*T: signed, PomFF fraction bits (exact)
+  localparam int PomQW = 16;  // y = floor(P / 2^(PomFF+1)) + 255*PomBias: unsigned integer, < 2^15
+  localparam int PomBias = 64;  // bias (in units of 255) that makes y non-negative
+  localparam int PomDivM = 32897;  // floor(y/255) = (y*PomDivM) >> PomDivS, exact for y < 66052
+  localparam int PomDivS = 23;
+  localparam int PomLayersLatency = 3;  // pom_layers pipeline latency in cycles, II = 1
+  localparam int PomUvW = 32;  // POM march uv: signed, PomUvF fraction bits (1.0 = one texture)
+  localparam int PomUvF = 16;
+  localparam int PomSF = 16;  // height scale S: unsigned u0.PomSF (S < 1)
+  localparam int PomVzMin = 512;  // |Vz| guard: |Vz| clamped to >= PomVzMin * 2^-PomVzF (2^-5, 88.2 deg)
+  localparam int PomWF = 16;  // refinement weight w = a/(a+b) in [0,1]: unsigned, PomWF fraction bits
+  localparam int PomWW = 17;  // w code 0..2^PomWF
+  localparam int PomSW = 16;  // height scale S code: unsigned, PomSF fraction bits
+  localparam int PomDenW = 16;  // refinement operands a, den = a + b: unsigned integers < 2^15
+  localparam int PomSetupLatency = 7;  // tu_pom_setup: normalise, 4 reciprocal stages, P, dT; II = 1
+  localparam int PomRefineLatency = 7;  // tu_pom_refine: normalise, 4 reciprocal stages, w, T''; II = 1
+  localparam int IpxCap = 16;  // iterative parallax: default iteration cap
+  localparam int IpxEps = 256;  // iterative parallax: default threshold |d| < IpxEps * 2^-PomUvF (2^-8)
+  localparam int PerspXyW = 12;  // pixel indices x, y and span offset n: unsigned, 0..4095
+  localparam int PerspF = 40;  // fraction bits of coefficients A..I and of accumulators p_u, p_v, q
+  localparam int PerspPW = 54;  // A..F, p_u, p_v: signed, PerspF fraction bits, |p| < 2^13
+  localparam int PerspQW = 44;  // G..I, q: signed, PerspF fraction bits, |q| < 8
+  localparam int PerspGuardLog2 = 10;  // guard: q < 2^-PerspGuardLog2 (incl. q <= 0) -> flag, u, v saturated
+  localparam int PerspUvW = 32;  // u, v: signed texels, PerspUvF fraction bits, round half up, saturate
+  localparam int PerspUvF = 8;
+  localparam int TexUvF = 8;  // texel coordinates: fraction bits of the B1 output
+  localparam int TexWeightF = 8;  // bilinear weights out of 2^TexWeightF (truncated from TexUvF bits)
+  localparam int TexLodF = 8;  // LOD fraction bits: trilinear blend weight
+  localparam int TexMaxLevels = 13;  // mip levels: up to 4096 texels on a side
+  localparam int TexAddrW = 26;  // texel RAM word address (RGBA8 words, all levels of several textures)
+  localparam int TexRamLog2Words = 20;  // simulation texel RAM of the texture-unit top: 2^N RGBA8 words
+  localparam int PerspLatency = 8;  // per-pixel pipeline latency in cycles, II = 1
+  localparam int EllNumW = 48;  // derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac
+  localparam int EllNumF = 32;
+  localparam int EllNxW = 112;  // exact numerators (span set-up, tu_texture_unit): signed, 2 PerspF frac, |n| < 2^30
+  localparam int EllDetW = 40;  // det3 of the 3x3 map (per triangle): signed normalised mantissa
+  localparam int EllDetExpW = 8;  // det3 exponent: signed, det3 = dm * 2^(dexp - (EllDetW - 2))
+  localparam int EllCoefW = 64;  // Ae', Ce' (unsigned), Be' (signed) codes: exact sums >> EllEexp (floor)
+  localparam int EllEexpW = 6;  // shared exponent of Ae', Be', Ce': value = code * 2^(eexp - 2 EllNumF)
+  localparam int EllFmW = 32;  // |f| mantissa (1.31, truncated); Fe' = f^2, f = det3/q
+  localparam int EllFexpW = 8;  // |f| exponent: signed, |f| = fm * 2^(fexp - 31)
+  localparam int EllNrmW = 24;  // LOD unit: s = Ae'+Ce' block-normalised to this many bits (floor shifts)
+  localparam int EllLogMantW = 24;  // log2 unit mantissa (1.23, truncated); EllLogF+1 squarings
+  localparam int EllLogF = 10;  // log2 of the axes: EllLogF fraction bits (internal EllLogF+1)
+  localparam int EllLogW = 18;  // log2 major / minor_clamped: signed, EllLogF fraction bits
+  localparam int EllAnisoW = 14;  // log2(max anisotropy): unsigned, EllLogF fraction bits (default 16:1)
+  localparam int EllLodW = 12;  // lod: unsigned, EllLodF fraction bits, floor, clamped to [0, max_lod]
+  localparam int EllLodF = 8;
+  localparam int EllMaxLodW = 4;  // max_lod (log2 of the texture size): unsigned integer
+  localparam int EllLatency = 5;  // analytic ellipse/LOD pipeline latency in cycles, II = 1
+  localparam int EwaCordW = 24;  // CORDIC x, y datapath: signed; d = Ae'-Ce', b = Be' block-normalised to W-3 bits
+  localparam int EwaCordIter = 16;  // CORDIC iterations (vectoring and rotation)
+  localparam int EwaAngW = 18;  // binary angle: signed, 2 pi = 2^EwaAngW (wraps), atan table entries
+  localparam int EwaCsW = 16;  // cos / sin of the major-axis angle: signed, EwaCsF fraction bits (s1.14)
+  localparam int EwaCsF = 14;
+  localparam int EwaExpF = 8;  // log2 of the semi-axes at the walk level: EwaExpF fraction bits (truncated)
+  localparam int EwaAxisMaxLog2 = 7;  // semi-axes clamped to 2^EwaAxisMaxLog2 texels (flag)
+  localparam int EwaE2W = 17;  // exp2 ROM entry 2^(i/2^EwaExpF): unsigned, EwaE2F fraction bits (u1.16)
+  localparam int EwaE2F = 16;
+  localparam int EwaAW = 24;  // semi-axes a, b = 2^ea (box only): unsigned, EwaE2F fraction bits
+  localparam int EwaKW = 18;  // frame coefficients kxu, kxv, kyu, kyv: signed, EwaKF fraction bits, half up
+  localparam int EwaKF = 16;
+  localparam int EwaPosF = 6;  // texel-space centre cu, cv, half extents hu, hv and offsets du, dv: frac bits
+  localparam int EwaDW = 16;  // offsets du, dv from the centre: signed, EwaPosF fraction bits
+  localparam int EwaHW = 15;  // half extents hu, hv (rounded up + margin): unsigned, EwaPosF fraction bits
+  localparam int EwaXiW = 32;  // xi, eta = k . (du, dv): signed, EwaKF + EwaPosF fraction bits (exact)
+  localparam int EwaQW = 63;  // Q = xi^2 + eta^2, ddQ: unsigned; dQ: signed EwaQW+1; 2 (EwaKF + EwaPosF) frac, exact
+  localparam int EwaCountW = 17;  // texel counters (box, inside) and the max_texels cap: unsigned integers
+  localparam int EwaWsumW = 33;  // weight sum: unsigned, GaussSqF fraction bits (exact)
+  localparam int EwaAccW = 41;  // per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)
+  localparam int EwaNrmW = 23;  // weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1
+  localparam int BrdfCW = 22;  // c = N.H input: signed, BrdfCF fraction bits; clamped to [0, 1] (c > 1 flags)
+  localparam int BrdfCF = 20;
+  localparam int BrdfClW = 21;  // clamped c and t = 1 - c (exact): unsigned, BrdfCF fraction bits
+  localparam int BrdfNW = 10;  // specular exponent n: unsigned integer, clamped to [1, BrdfNMax] (flag)
+  localparam int BrdfNMax = 1000;  // largest n
+  localparam int BrdfUW = 30;  // u = n (1 - c) (exact): unsigned, BrdfCF fraction bits, [0, 1000]
+  localparam int BrdfDW = 32;  // divisors n(1-c) + k c (Schlick k=1, MSH 1.25, SCOS2 2) in [1, 1000]: unsigned
+  localparam int BrdfDF = 22;  //   BrdfDF fraction bits, exact (monotone in c); 1/D by the reciprocal core
+  localparam int BrdfWF = 24;  // internal values (squares, 1/D^2, base, G): BrdfWF fraction bits, half up
+  localparam int BrdfKF = 24;  // constants 1.6, 0.1, 0.786: unsigned, BrdfKF fraction bits, round to nearest
+  localparam int BrdfK16 = 26843546;  // 1.6 * 2^BrdfKF rounded (F_MSH 2/1.25; 1.6 * 2^24 = 26843545.6)
+  localparam int BrdfK01 = 1677722;  // 0.1 * 2^BrdfKF rounded (F_dsh c + 0.1, F_SCOS2 0.1 u)
+  localparam int BrdfK786 = 13186892;  // 0.786 * 2^BrdfKF rounded (F_QR; 13186891.776)
+  localparam int BrdfBlinnF = 28;  // Blinn square-and-multiply: unsigned, BrdfBlinnF fraction bits, half up
+  localparam int BrdfEF = 30;  // F_dsh divisor E = 1.953125 w^2 + 1.5 (exact from w^2): BrdfEF fraction bits
+  localparam int BrdfEW = 51;  //   E word length (E < 2^21)
+  localparam int BrdfOutW = 9;  // specular F: unsigned, BrdfOutF fraction bits, half up (F_MSH peaks at 1.024)
+  localparam int BrdfOutF = 8;
+  localparam int BrdfCutQ = 9;  // cut-off 2^-q: c below the model's c_cut(n) gives F = 0 (q = OutF+1: lossless)
+  localparam int BrdfSchlickLatency = 6;  // front + D, reciprocal (4), c R scaled; II = 1
+  localparam int BrdfMshLatency = 7;  // front + D + 1.6c, reciprocal (4), R^2, 1.6c R^2 scaled; II = 1
+  localparam int BrdfMshSeqLatency = 9;  // F_MSH on one shared multiplier (FSM) + the reciprocal core
+  localparam int BrdfMshSeqIi = 9;  // initiation interval of the shared-multiplier F_MSH
+  localparam int BrdfScos2Latency = 7;  // front + D + numerator, reciprocal (4), base, base^2; II = 1
+  localparam int BrdfSt16Latency = 5;  // front + base, four squarings; II = 1
+  localparam int BrdfQrLatency = 2;  // front + 1 - 0.786u, c w; II = 1
+  localparam int BrdfBlinnLatency = 11;  // front, 10 square-and-multiply stages; II = 1
+  localparam int BrdfDshLatency = 11;  // front, c^8 / (c+0.1)^8 squarings, w^2, E, two reciprocals; II = 1
   /* verilator lint_on UNUSEDPARAM */
 endpackage

@@ -9,10 +9,10 @@ package tu_unit_cfg_pkg;
   localparam bit HasRelief = 1'b1;
   localparam bit HasPom = 1'b1;  // tu_pom_layers + tu_pom_march
   localparam bit HasIterParallax = 1'b1;
-  localparam int unsigned PomMaxLayers = 256;
+  localparam int PomMaxLayers = 256;
   // bit 0: formula (tu_gauss_weight), bit 1: 1-D table, bit 2: 2-D table
   localparam logic [2:0] WeightSources = 3'd7;
-  localparam int unsigned WtabLog2N = 8;
-  localparam int unsigned Wtab2dLog2N = 5;
-  localparam int unsigned PerspLanes = 1;
+  localparam int WtabLog2N = 8;
+  localparam int Wtab2dLog2N = 5;
+  localparam int PerspLanes = 1;
 endpackage

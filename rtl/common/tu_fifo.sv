@@ -1,8 +1,8 @@
 // Synchronous FIFO, valid/ready on both sides, Depth entries (power of two), registered storage.
 // Decouples the fixed-latency B1/B2 pipelines from the data-dependent filter engine.
 module tu_fifo #(
-  parameter int unsigned Width = 8,
-  parameter int unsigned Depth = 4
+  parameter int Width = 8,
+  parameter int Depth = 4
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
@@ -13,7 +13,7 @@ module tu_fifo #(
   input  logic             out_ready_i,
   output logic [Width-1:0] out_data_o
 );
-  localparam int unsigned PtrW = $clog2(Depth);
+  localparam int PtrW = $clog2(Depth);
   logic [Width-1:0] mem_q [Depth];
   logic [PtrW-1:0]  wr_q, rd_q;
   logic [PtrW:0]    cnt_q;

@@ -3,7 +3,7 @@
 // pipeline accepts one input per clock (II = 1) while the consumer keeps up, and holds every
 // stage (losing nothing) while it does not.
 module tu_pipe_valid #(
-  parameter int unsigned Depth = 1
+  parameter int Depth = 1
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,

@@ -33,21 +33,21 @@ module tu_ellipse (
   output logic [tu_formats_pkg::EllLodW-1:0]     lod_o,
   output logic [4:0]                             flags_o
 );
-  localparam int unsigned NW  = tu_formats_pkg::EllNumW;
-  localparam int unsigned NF  = tu_formats_pkg::EllNumF;
-  localparam int unsigned QW  = tu_formats_pkg::PerspQW;
-  localparam int unsigned MW  = tu_formats_pkg::RecipMantW;
-  localparam int unsigned RW  = tu_formats_pkg::RecipOutW;
-  localparam int unsigned DW  = tu_formats_pkg::EllDetW;
-  localparam int unsigned LMW = tu_formats_pkg::EllLogMantW;
-  localparam int unsigned L1  = tu_formats_pkg::EllLogF + 1;   // internal log fraction bits
-  localparam int unsigned LW  = tu_formats_pkg::EllLogW;
-  localparam int unsigned NrW = tu_formats_pkg::EllNrmW;
-  localparam int unsigned CW  = tu_formats_pkg::EllCoefW;
-  localparam int unsigned XW  = 2 * NW + 4;                    // exact sums (signed)
-  localparam int unsigned SqW = 2 * NrW + 4;                   // d^2 + b^2
-  localparam int unsigned RtW = SqW / 2;                       // isqrt
-  localparam int unsigned PW  = DW + RW + 1;                   // det3 mantissa * R (signed)
+  localparam int NW  = tu_formats_pkg::EllNumW;
+  localparam int NF  = tu_formats_pkg::EllNumF;
+  localparam int QW  = tu_formats_pkg::PerspQW;
+  localparam int MW  = tu_formats_pkg::RecipMantW;
+  localparam int RW  = tu_formats_pkg::RecipOutW;
+  localparam int DW  = tu_formats_pkg::EllDetW;
+  localparam int LMW = tu_formats_pkg::EllLogMantW;
+  localparam int L1  = tu_formats_pkg::EllLogF + 1;   // internal log fraction bits
+  localparam int LW  = tu_formats_pkg::EllLogW;
+  localparam int NrW = tu_formats_pkg::EllNrmW;
+  localparam int CW  = tu_formats_pkg::EllCoefW;
+  localparam int XW  = 2 * NW + 4;                    // exact sums (signed)
+  localparam int SqW = 2 * NrW + 4;                   // d^2 + b^2
+  localparam int RtW = SqW / 2;                       // isqrt
+  localparam int PW  = DW + RW + 1;                   // det3 mantissa * R (signed)
   localparam logic [QW-1:0] GuardVal = QW'(1) << (tu_formats_pkg::PerspF - tu_formats_pkg::PerspGuardLog2);
   localparam logic signed [31:0] LogMax = 32'((1 << (LW - 1)) - 1);
   localparam logic signed [31:0] LogMin = -32'(1 << (LW - 1));

@@ -5,8 +5,8 @@
 // overlaps the walk of pixel i. Data-dependent cycles; exact count: ewa::stream_cycles
 // (cmodel/blocks/ewa/ewa_cycles.hpp).
 module tu_ewa #(
-  parameter int unsigned CordUnroll = 2,
-  parameter int unsigned SqrtStep   = 4
+  parameter int CordUnroll = 2,
+  parameter int SqrtStep   = 4
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -39,8 +39,8 @@ module tu_ewa #(
   output logic [tu_formats_pkg::EwaCountW-1:0]  inside_o,
   output logic [4:0]                            flags_o
 );
-  localparam int unsigned XiW = tu_formats_pkg::EwaXiW;
-  localparam int unsigned AW  = tu_formats_pkg::TexAddrW;
+  localparam int XiW = tu_formats_pkg::EwaXiW;
+  localparam int AW  = tu_formats_pkg::TexAddrW;
   // texture / weight configuration travels with the record (the set-up holds one pixel)
   logic [AW-1:0] base_q;
   logic [3:0]    lw_q, lh_q;

@@ -4,9 +4,9 @@
 //   x -= sigma (y >>> i),  y += sigma (x >>> i),  z -= sigma atan_i   (floor shifts)
 // The set-up FSM applies it once per clock (Unroll iterations per clock).
 module tu_ewa_cordic #(
-  parameter int unsigned Unroll = 2,
-  parameter int unsigned XW = tu_formats_pkg::EwaCordW + 2,  // headroom over the C model's int64
-  parameter int unsigned ZW = tu_formats_pkg::EwaAngW + 2
+  parameter int Unroll = 2,
+  parameter int XW = tu_formats_pkg::EwaCordW + 2,  // headroom over the C model's int64
+  parameter int ZW = tu_formats_pkg::EwaAngW + 2
 ) (
   input  logic                 rotate_i,
   input  logic [4:0]           i0_i,
@@ -17,7 +17,7 @@ module tu_ewa_cordic #(
   output logic signed [XW-1:0] y_o,
   output logic signed [ZW-1:0] z_o
 );
-  localparam int unsigned AngW = tu_formats_pkg::EwaAngW;
+  localparam int AngW = tu_formats_pkg::EwaAngW;
   logic [AngW-1:0] at [Unroll];
   for (genvar j = 0; j < Unroll; j++) begin : g_rom
     logic [tu_formats_pkg::EwaCordW-1:0] gain_unused;  // the rotation start value: read by the set-up

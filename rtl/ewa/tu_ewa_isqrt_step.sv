@@ -2,8 +2,8 @@
 // applies it once per clock to the two half-extent radicands. After RootW/Step calls from
 // rem = root = 0, root = floor(sqrt(x)) and rem = x - root^2 (so ceil(sqrt(x)) = root + (rem != 0)).
 module tu_ewa_isqrt_step #(
-  parameter int unsigned RootW = 16,
-  parameter int unsigned Step  = 4
+  parameter int RootW = 16,
+  parameter int Step  = 4
 ) (
   input  logic [2*RootW-1:0] x_i,     // radicand bits still to consume, msb first
   input  logic [RootW+1:0]   rem_i,

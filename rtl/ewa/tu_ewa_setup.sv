@@ -21,8 +21,8 @@
 // pixel (no texture coordinates: the texture's mean, the top level's single texel, as
 // render::render_cmodel) goes from ACCEPT straight to HAND: 1.
 module tu_ewa_setup #(
-  parameter int unsigned CordUnroll = 2,  // CORDIC iterations per clock (divides EwaCordIter)
-  parameter int unsigned SqrtStep   = 4   // square-root bits per clock (divides RootW)
+  parameter int CordUnroll = 2,  // CORDIC iterations per clock (divides EwaCordIter)
+  parameter int SqrtStep   = 4   // square-root bits per clock (divides RootW)
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -66,30 +66,30 @@ module tu_ewa_setup #(
   output logic signed [63:0]                    ddqy_o,     // second difference along y
   output logic signed [63:0]                    dqy_o       // change of the x-difference per row
 );
-  localparam int unsigned Iter  = tu_formats_pkg::EwaCordIter;
-  localparam int unsigned AngW  = tu_formats_pkg::EwaAngW;
-  localparam int unsigned CW    = tu_formats_pkg::EwaCordW;
-  localparam int unsigned XW    = CW + 2;
-  localparam int unsigned ZW    = AngW + 2;
-  localparam int unsigned RotF  = CW - 3;
-  localparam int unsigned CsF   = tu_formats_pkg::EwaCsF;
-  localparam int unsigned CsW   = tu_formats_pkg::EwaCsW;
-  localparam int unsigned ExpF  = tu_formats_pkg::EwaExpF;
-  localparam int unsigned E2F   = tu_formats_pkg::EwaE2F;
-  localparam int unsigned E2W   = tu_formats_pkg::EwaE2W;
-  localparam int unsigned AxW   = tu_formats_pkg::EwaAW;
-  localparam int unsigned KW    = tu_formats_pkg::EwaKW;
-  localparam int unsigned KF    = tu_formats_pkg::EwaKF;
-  localparam int unsigned PosF  = tu_formats_pkg::EwaPosF;
-  localparam int unsigned XiW   = tu_formats_pkg::EwaXiW;
-  localparam int unsigned NW    = tu_formats_pkg::EwaCountW;
-  localparam int unsigned LW    = tu_formats_pkg::EllLogW;
-  localparam int unsigned UW    = tu_formats_pkg::PerspUvW;
-  localparam int unsigned Sh    = E2F + CsF - PosF;        // half-extent radicand scale (2 Sh bits)
-  localparam int unsigned PW    = AxW + CsW;               // a c etc. (signed)
-  localparam int unsigned RadW  = 2 * PW;                  // (a c)^2 + (b s)^2
-  localparam int unsigned RootW = 16;                      // radicand / 2^(2 Sh) < 2^32 (tested)
-  localparam int unsigned Step  = 1 << PosF;
+  localparam int Iter  = tu_formats_pkg::EwaCordIter;
+  localparam int AngW  = tu_formats_pkg::EwaAngW;
+  localparam int CW    = tu_formats_pkg::EwaCordW;
+  localparam int XW    = CW + 2;
+  localparam int ZW    = AngW + 2;
+  localparam int RotF  = CW - 3;
+  localparam int CsF   = tu_formats_pkg::EwaCsF;
+  localparam int CsW   = tu_formats_pkg::EwaCsW;
+  localparam int ExpF  = tu_formats_pkg::EwaExpF;
+  localparam int E2F   = tu_formats_pkg::EwaE2F;
+  localparam int E2W   = tu_formats_pkg::EwaE2W;
+  localparam int AxW   = tu_formats_pkg::EwaAW;
+  localparam int KW    = tu_formats_pkg::EwaKW;
+  localparam int KF    = tu_formats_pkg::EwaKF;
+  localparam int PosF  = tu_formats_pkg::EwaPosF;
+  localparam int XiW   = tu_formats_pkg::EwaXiW;
+  localparam int NW    = tu_formats_pkg::EwaCountW;
+  localparam int LW    = tu_formats_pkg::EllLogW;
+  localparam int UW    = tu_formats_pkg::PerspUvW;
+  localparam int Sh    = E2F + CsF - PosF;        // half-extent radicand scale (2 Sh bits)
+  localparam int PW    = AxW + CsW;               // a c etc. (signed)
+  localparam int RadW  = 2 * PW;                  // (a c)^2 + (b s)^2
+  localparam int RootW = 16;                      // radicand / 2^(2 Sh) < 2^32 (tested)
+  localparam int Step  = 1 << PosF;
   localparam logic signed [31:0] StepS  = 32'(Step);
   localparam logic signed [31:0] StepSq = 32'(Step * Step);
   localparam logic signed [LW-1:0] LogNegInf = {1'b1, {(LW-1){1'b0}}};
@@ -141,7 +141,7 @@ module tu_ewa_setup #(
   );
   logic [CW-1:0]   gain;  // round(CORDIC gain 2^(EwaCordW-3)): the rotation's start x
   logic [AngW-1:0] atan_unused;
-  tu_ewa_atan_rom u_gain (.i_i('0), .atan_o(atan_unused), .gain_o(gain));
+  tu_ewa_atan_rom u_gain (.i_i(4'd0), .atan_o(atan_unused), .gain_o(gain));
   // theta from 2 phi (wrapped to AngW bits): phi + 1/4 turn reduced to [-1/4, 1/4) turn
   logic signed [ZW-1:0] two_phi, theta;
   always_comb begin

@@ -55,21 +55,21 @@ module tu_ewa_walk (
   output logic [tu_formats_pkg::EwaCountW-1:0]     inside_o,
   output logic [4:0]                               flags_o
 );
-  localparam int unsigned XiW  = tu_formats_pkg::EwaXiW;
-  localparam int unsigned PosF = tu_formats_pkg::EwaPosF;
-  localparam int unsigned QF   = 2 * (tu_formats_pkg::EwaKF + PosF);
-  localparam int unsigned GQW  = tu_formats_pkg::GaussQW;
-  localparam int unsigned GXW  = tu_formats_pkg::GaussXiW;
-  localparam int unsigned WW   = tu_formats_pkg::GaussSqW;     // weight codes (u17.16)
-  localparam int unsigned WsW  = tu_formats_pkg::EwaWsumW;
-  localparam int unsigned AcW  = tu_formats_pkg::EwaAccW;
-  localparam int unsigned NrW  = tu_formats_pkg::EwaNrmW;
-  localparam int unsigned MW   = tu_formats_pkg::RecipMantW;
-  localparam int unsigned RW   = tu_formats_pkg::RecipOutW;
-  localparam int unsigned NW   = tu_formats_pkg::EwaCountW;
-  localparam int unsigned AW   = tu_formats_pkg::TexAddrW;
-  localparam int unsigned Drain = 5;
-  localparam int unsigned NormCycles = 6;
+  localparam int XiW  = tu_formats_pkg::EwaXiW;
+  localparam int PosF = tu_formats_pkg::EwaPosF;
+  localparam int QF   = 2 * (tu_formats_pkg::EwaKF + PosF);
+  localparam int GQW  = tu_formats_pkg::GaussQW;
+  localparam int GXW  = tu_formats_pkg::GaussXiW;
+  localparam int WW   = tu_formats_pkg::GaussSqW;     // weight codes (u17.16)
+  localparam int WsW  = tu_formats_pkg::EwaWsumW;
+  localparam int AcW  = tu_formats_pkg::EwaAccW;
+  localparam int NrW  = tu_formats_pkg::EwaNrmW;
+  localparam int MW   = tu_formats_pkg::RecipMantW;
+  localparam int RW   = tu_formats_pkg::RecipOutW;
+  localparam int NW   = tu_formats_pkg::EwaCountW;
+  localparam int AW   = tu_formats_pkg::TexAddrW;
+  localparam int Drain = 5;
+  localparam int NormCycles = 6;
 
   typedef enum logic [2:0] {WIdle, WWalk, WDrain, WNear, WNear2, WNorm, WOut} state_e;
   state_e st_q;

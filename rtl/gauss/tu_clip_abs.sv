@@ -4,7 +4,7 @@ module tu_clip_abs (
   output logic [tu_formats_pkg::ClipAW-1:0]  a_o,
   output logic                                neg_o
 );
-  localparam int unsigned InW = tu_formats_pkg::ClipInW;
+  localparam int InW = tu_formats_pkg::ClipInW;
   localparam logic [InW-1:0] Half = InW'(1) << (tu_formats_pkg::ClipInF - 1);
   logic [InW-1:0] mag;
   assign neg_o = d_i[InW-1];

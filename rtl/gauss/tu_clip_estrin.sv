@@ -13,10 +13,10 @@ module tu_clip_estrin (
   input  logic                                out_ready_i,
   output logic [tu_formats_pkg::ClipOutW-1:0] v_o
 );
-  localparam int unsigned AccW = tu_formats_pkg::ClipAccW;
-  localparam int unsigned AW   = tu_formats_pkg::ClipAW;
-  localparam int unsigned Lat  = tu_formats_pkg::ClipEstrinLatency;
-  localparam int unsigned F    = tu_formats_pkg::ClipCoefF;
+  localparam int AccW = tu_formats_pkg::ClipAccW;
+  localparam int AW   = tu_formats_pkg::ClipAW;
+  localparam int Lat  = tu_formats_pkg::ClipEstrinLatency;
+  localparam int F    = tu_formats_pkg::ClipCoefF;
   logic en;
   logic [Lat-1:0] stage_valid;
   tu_pipe_valid #(.Depth(Lat)) u_ctrl (

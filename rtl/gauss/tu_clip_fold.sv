@@ -4,9 +4,9 @@ module tu_clip_fold (
   input  logic                                       neg_i,
   output logic [tu_formats_pkg::ClipOutW-1:0]        v_o
 );
-  localparam int unsigned AccW = tu_formats_pkg::ClipAccW;
-  localparam int unsigned Sh   = tu_formats_pkg::ClipCoefF - tu_formats_pkg::ClipOutF;
-  localparam int unsigned OutW = tu_formats_pkg::ClipOutW;
+  localparam int AccW = tu_formats_pkg::ClipAccW;
+  localparam int Sh   = tu_formats_pkg::ClipCoefF - tu_formats_pkg::ClipOutF;
+  localparam int OutW = tu_formats_pkg::ClipOutW;
   logic signed [AccW:0] rnd;
   logic [OutW-1:0]      p;
   assign rnd = ($signed({acc_i[AccW-1], acc_i}) + $signed((AccW+1)'(1 << (Sh - 1)))) >>> Sh;

@@ -12,8 +12,8 @@ module tu_clip_horner (
   input  logic                                out_ready_i,
   output logic [tu_formats_pkg::ClipOutW-1:0] v_o
 );
-  localparam int unsigned AccW = tu_formats_pkg::ClipAccW;
-  localparam int unsigned Lat  = tu_formats_pkg::ClipHornerLatency;
+  localparam int AccW = tu_formats_pkg::ClipAccW;
+  localparam int Lat  = tu_formats_pkg::ClipHornerLatency;
   logic en;
   logic [Lat-1:0] stage_valid;
   tu_pipe_valid #(.Depth(Lat)) u_ctrl (

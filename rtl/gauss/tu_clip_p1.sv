@@ -11,7 +11,7 @@ module tu_clip_p1 (
   input  logic                                out_ready_i,
   output logic [tu_formats_pkg::ClipOutW-1:0] v_o
 );
-  localparam int unsigned AccW = tu_formats_pkg::ClipAccW;
+  localparam int AccW = tu_formats_pkg::ClipAccW;
   logic en;
   logic [tu_formats_pkg::ClipP1Latency-1:0] stage_valid;
   tu_pipe_valid #(.Depth(tu_formats_pkg::ClipP1Latency)) u_ctrl (

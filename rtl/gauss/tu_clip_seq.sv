@@ -13,7 +13,7 @@ module tu_clip_seq (
   input  logic                                out_ready_i,
   output logic [tu_formats_pkg::ClipOutW-1:0] v_o
 );
-  localparam int unsigned AccW = tu_formats_pkg::ClipAccW;
+  localparam int AccW = tu_formats_pkg::ClipAccW;
   typedef enum logic [1:0] {Idle, Busy, Done} state_e;
   state_e state_q;
   logic [1:0] k_q;

@@ -12,11 +12,11 @@ module tu_gauss_weight (
   input  logic                                out_ready_i,
   output logic [tu_formats_pkg::GaussSqW-1:0] w_o
 );
-  localparam int unsigned SqW = tu_formats_pkg::GaussSqW;
-  localparam int unsigned SqF = tu_formats_pkg::GaussSqF;
-  localparam int unsigned TW  = tu_formats_pkg::GaussTW;
-  localparam int unsigned TF  = tu_formats_pkg::GaussTF;
-  localparam int unsigned Lat = tu_formats_pkg::GaussLatency;
+  localparam int SqW = tu_formats_pkg::GaussSqW;
+  localparam int SqF = tu_formats_pkg::GaussSqF;
+  localparam int TW  = tu_formats_pkg::GaussTW;
+  localparam int TF  = tu_formats_pkg::GaussTF;
+  localparam int Lat = tu_formats_pkg::GaussLatency;
   logic en;
   logic [Lat-1:0] stage_valid;
   tu_pipe_valid #(.Depth(Lat)) u_ctrl (

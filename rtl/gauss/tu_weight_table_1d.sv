@@ -6,7 +6,7 @@
 //   stage 3: w = e0 + floor((d + 2^(Fb-1)) / 2^Fb), 0 if Q > 1                     (registered)
 // The ROM tu_wtab1d_rom is generated from the C model's table (`texunit gen-rtl`).
 module tu_weight_table_1d #(
-  parameter int unsigned Log2N = 8  // table size N = 2^Log2N (+1 entries); gauss::kWtabRtlLog2N
+  parameter int Log2N = 8  // table size N = 2^Log2N (+1 entries); gauss::kWtabRtlLog2N
 ) (
   input  logic                                   clk_i,
   input  logic                                   rst_ni,
@@ -17,13 +17,13 @@ module tu_weight_table_1d #(
   input  logic                                   out_ready_i,
   output logic [tu_formats_pkg::WtabEntryW-1:0]  w_o
 );
-  localparam int unsigned QF  = tu_formats_pkg::GaussQF;
-  localparam int unsigned EW  = tu_formats_pkg::WtabEntryW;
-  localparam int unsigned Fb  = QF - Log2N;        // interpolation fraction bits
-  localparam int unsigned IdxW = Log2N + 1;        // 0..N
-  localparam int unsigned DW  = EW + 1;            // e1 - e0, signed
-  localparam int unsigned PW  = DW + Fb + 1;       // (e1 - e0) * f, signed
-  localparam int unsigned Lat = 3;
+  localparam int QF  = tu_formats_pkg::GaussQF;
+  localparam int EW  = tu_formats_pkg::WtabEntryW;
+  localparam int Fb  = QF - Log2N;        // interpolation fraction bits
+  localparam int IdxW = Log2N + 1;        // 0..N
+  localparam int DW  = EW + 1;            // e1 - e0, signed
+  localparam int PW  = DW + Fb + 1;       // (e1 - e0) * f, signed
+  localparam int Lat = 3;
   logic           en;
   logic [Lat-1:0] stage_valid;
   tu_pipe_valid #(.Depth(Lat)) u_ctrl (

@@ -8,7 +8,7 @@
 //   stage 4: w = r0 + floor((p2 + 2^(Fb-1)) / 2^Fb), 0 if x > 1 or y > 1            (registered)
 // The ROM tu_wtab2d_rom is generated from the C model's table (`texunit gen-rtl`).
 module tu_weight_table_2d #(
-  parameter int unsigned Log2N = 5  // N = 2^Log2N cells per axis (+1 entries); gauss::kWtab2dRtlLog2N
+  parameter int Log2N = 5  // N = 2^Log2N cells per axis (+1 entries); gauss::kWtab2dRtlLog2N
 ) (
   input  logic                                   clk_i,
   input  logic                                   rst_ni,
@@ -20,14 +20,14 @@ module tu_weight_table_2d #(
   input  logic                                   out_ready_i,
   output logic [tu_formats_pkg::WtabEntryW-1:0]  w_o
 );
-  localparam int unsigned XW   = tu_formats_pkg::GaussXiW;
-  localparam int unsigned XF   = tu_formats_pkg::GaussXiF;
-  localparam int unsigned EW   = tu_formats_pkg::WtabEntryW;
-  localparam int unsigned Fb   = XF - Log2N;      // interpolation fraction bits
-  localparam int unsigned AW   = Log2N + 1;       // cell index 0..N
-  localparam int unsigned DW   = EW + 1;          // e1 - e0, signed
-  localparam int unsigned PW   = DW + Fb + 1;     // (e1 - e0) * f, signed
-  localparam int unsigned Lat  = 4;
+  localparam int XW   = tu_formats_pkg::GaussXiW;
+  localparam int XF   = tu_formats_pkg::GaussXiF;
+  localparam int EW   = tu_formats_pkg::WtabEntryW;
+  localparam int Fb   = XF - Log2N;      // interpolation fraction bits
+  localparam int AW   = Log2N + 1;       // cell index 0..N
+  localparam int DW   = EW + 1;          // e1 - e0, signed
+  localparam int PW   = DW + Fb + 1;     // (e1 - e0) * f, signed
+  localparam int Lat  = 4;
   logic           en;
   logic [Lat-1:0] stage_valid;
   tu_pipe_valid #(.Depth(Lat)) u_ctrl (

@@ -9,7 +9,7 @@
 //   S8 round      : >> (RecipOutF + e - PerspUvF), round half up, saturate to s32.8;
 //                   guarded: u = v = max code, flag = 1
 module tu_persp #(
-  parameter int unsigned Direct = 0  // 1: direct evaluation (three multipliers) instead of accumulators
+  parameter int Direct = 0  // 1: direct evaluation (three multipliers) instead of accumulators
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -28,8 +28,8 @@ module tu_persp #(
   output logic [tu_formats_pkg::PerspUvW-1:0]  v_o,
   output logic                                 flag_o
 );
-  localparam int unsigned PW = tu_formats_pkg::PerspPW;
-  localparam int unsigned QW = tu_formats_pkg::PerspQW;
+  localparam int PW = tu_formats_pkg::PerspPW;
+  localparam int QW = tu_formats_pkg::PerspQW;
   logic                                    en, accept;
   logic [tu_formats_pkg::PerspLatency-1:0] stage_valid;
 

@@ -4,7 +4,7 @@
 //   S2..S8   : K copies of tu_persp_pixel (K reciprocal cores)
 // Bit-identical to the C model's Model::span_klane<K> (and to every other traversal).
 module tu_persp_klane #(
-  parameter int unsigned K = 4  // lanes, a power of two
+  parameter int K = 4  // lanes, a power of two
 ) (
   input  logic                                   clk_i,
   input  logic                                   rst_ni,
@@ -23,10 +23,10 @@ module tu_persp_klane #(
   output logic [K*tu_formats_pkg::PerspUvW-1:0]  v_o,
   output logic [K-1:0]                           flag_o
 );
-  localparam int unsigned PW = tu_formats_pkg::PerspPW;
-  localparam int unsigned QW = tu_formats_pkg::PerspQW;
-  localparam int unsigned UW = tu_formats_pkg::PerspUvW;
-  localparam int unsigned LogK = $clog2(K);
+  localparam int PW = tu_formats_pkg::PerspPW;
+  localparam int QW = tu_formats_pkg::PerspQW;
+  localparam int UW = tu_formats_pkg::PerspUvW;
+  localparam int LogK = $clog2(K);
 
   logic                                    en, accept;
   logic [tu_formats_pkg::PerspLatency-1:0] stage_valid;

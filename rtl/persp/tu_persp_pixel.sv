@@ -11,14 +11,14 @@ module tu_persp_pixel (
   output logic [tu_formats_pkg::PerspUvW-1:0] v_o,
   output logic                                flag_o
 );
-  localparam int unsigned PW = tu_formats_pkg::PerspPW;
-  localparam int unsigned QW = tu_formats_pkg::PerspQW;
-  localparam int unsigned MW = tu_formats_pkg::RecipMantW;
-  localparam int unsigned RW = tu_formats_pkg::RecipOutW;
-  localparam int unsigned UW = tu_formats_pkg::PerspUvW;
-  localparam int unsigned EW = 6;                 // msb position of q, 0..QW-2
-  localparam int unsigned ProdW = PW + RW + 1;    // signed p * unsigned R
-  localparam int unsigned CoreLat = 4;
+  localparam int PW = tu_formats_pkg::PerspPW;
+  localparam int QW = tu_formats_pkg::PerspQW;
+  localparam int MW = tu_formats_pkg::RecipMantW;
+  localparam int RW = tu_formats_pkg::RecipOutW;
+  localparam int UW = tu_formats_pkg::PerspUvW;
+  localparam int EW = 6;                 // msb position of q, 0..QW-2
+  localparam int ProdW = PW + RW + 1;    // signed p * unsigned R
+  localparam int CoreLat = 4;
   localparam logic [QW-1:0] GuardVal = QW'(1) << (tu_formats_pkg::PerspF - tu_formats_pkg::PerspGuardLog2);
   localparam logic signed [ProdW-1:0] UMax = ProdW'({1'b0, {(UW-1){1'b1}}});
   localparam logic signed [ProdW-1:0] UMin = -ProdW'({1'b1, {(UW-1){1'b0}}});
@@ -88,7 +88,7 @@ module tu_persp_pixel (
   logic signed [ProdW:0]   rnd_u, rnd_v;
   logic [UW-1:0]           u_d, v_d, u_q8, v_q8;
   logic                    flag_q8;
-  localparam int unsigned XW = ProdW + 1;
+  localparam int XW = ProdW + 1;
   localparam logic signed [XW-1:0] SatMax = XW'(UMax);
   localparam logic signed [XW-1:0] SatMin = XW'(UMin);
   localparam logic signed [XW-1:0] One = XW'(1);

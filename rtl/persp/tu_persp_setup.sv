@@ -31,14 +31,14 @@ module tu_persp_setup (
   output logic [tu_formats_pkg::PerspQW-1:0]  q_o,
   output logic                                ovf_o
 );
-  localparam int unsigned PW  = tu_formats_pkg::PerspPW;
-  localparam int unsigned QW  = tu_formats_pkg::PerspQW;
-  localparam int unsigned XW  = tu_formats_pkg::PerspXyW;
-  localparam int unsigned PMW = PW + XW + 1;  // signed coefficient x unsigned index, exact
-  localparam int unsigned QMW = QW + XW + 1;
-  localparam int unsigned PSW = PMW + 1;      // A x + B y + C: |.| < 2^(PW+XW) + 2^(PW-1)
-  localparam int unsigned QSW = QMW + 1;
-  localparam int unsigned Depth = 2;
+  localparam int PW  = tu_formats_pkg::PerspPW;
+  localparam int QW  = tu_formats_pkg::PerspQW;
+  localparam int XW  = tu_formats_pkg::PerspXyW;
+  localparam int PMW = PW + XW + 1;  // signed coefficient x unsigned index, exact
+  localparam int QMW = QW + XW + 1;
+  localparam int PSW = PMW + 1;      // A x + B y + C: |.| < 2^(PW+XW) + 2^(PW-1)
+  localparam int QSW = QMW + 1;
+  localparam int Depth = 2;
 
   logic             en;
   logic [Depth-1:0] stage_valid;

@@ -22,8 +22,8 @@ module tu_iter_parallax
   output logic [4:0]                          iters_o,
   output logic                                nonconv_o
 );
-  localparam int unsigned UvW = tu_formats_pkg::PomUvW;
-  localparam int unsigned TexLsb = tu_formats_pkg::PomUvF - 6;
+  localparam int UvW = tu_formats_pkg::PomUvW;
+  localparam int TexLsb = tu_formats_pkg::PomUvF - 6;
 
   typedef enum logic [1:0] {Idle, Run, Done} state_e;
   state_e state_q;

@@ -18,16 +18,16 @@ module tu_pom_layers
   output logic [tu_formats_pkg::PomNW-1:0]    n_o,
   output logic                                neg_o
 );
-  localparam int unsigned VzW  = tu_formats_pkg::PomVzW;
-  localparam int unsigned NW   = tu_formats_pkg::PomNW;
-  localparam int unsigned FW   = tu_formats_pkg::PomFW;
-  localparam int unsigned TW   = tu_formats_pkg::PomTW;
-  localparam int unsigned PW   = tu_formats_pkg::PomPW;
-  localparam int unsigned QW   = tu_formats_pkg::PomQW;
-  localparam int unsigned IdxW = tu_formats_pkg::PomIdxW;
-  localparam int unsigned Sh   = tu_formats_pkg::PomVzF - tu_formats_pkg::PomIdxF;
-  localparam int unsigned DivS = tu_formats_pkg::PomDivS;
-  localparam int unsigned DW   = QW + 16;  // y * PomDivM (PomDivM < 2^16)
+  localparam int VzW  = tu_formats_pkg::PomVzW;
+  localparam int NW   = tu_formats_pkg::PomNW;
+  localparam int FW   = tu_formats_pkg::PomFW;
+  localparam int TW   = tu_formats_pkg::PomTW;
+  localparam int PW   = tu_formats_pkg::PomPW;
+  localparam int QW   = tu_formats_pkg::PomQW;
+  localparam int IdxW = tu_formats_pkg::PomIdxW;
+  localparam int Sh   = tu_formats_pkg::PomVzF - tu_formats_pkg::PomIdxF;
+  localparam int DivS = tu_formats_pkg::PomDivS;
+  localparam int DW   = QW + 16;  // y * PomDivM (PomDivM < 2^16)
 
   logic en;
   logic [tu_formats_pkg::PomLayersLatency-1:0] stage_valid;
@@ -81,10 +81,10 @@ module tu_pom_layers
   logic [NW-1:0]  n_d, n_q;
   always_comb begin
     prod   = DW'(y_q) * DW'(tu_formats_pkg::PomDivM);
-    n_full = signed'((NW+3)'(nmin_q[1])) + signed'((NW+3)'(prod >> DivS))
-           - signed'((NW+3)'(tu_formats_pkg::PomBias));
-    if (n_full < signed'((NW+3)'(lo_q[1])))      n_d = lo_q[1];
-    else if (n_full > signed'((NW+3)'(hi_q[1]))) n_d = hi_q[1];
+    n_full = $signed((NW+3)'(nmin_q[1])) + $signed((NW+3)'(prod >> DivS))
+           - $signed((NW+3)'(tu_formats_pkg::PomBias));
+    if (n_full < $signed((NW+3)'(lo_q[1])))      n_d = lo_q[1];
+    else if (n_full > $signed((NW+3)'(hi_q[1]))) n_d = hi_q[1];
     else                                         n_d = n_full[NW-1:0];
   end
 

@@ -16,8 +16,8 @@
 // one), so a stream of pixels takes k + 1 cycles per pixel (k + 1 compares) without stalls;
 // one pixel alone: accepted in cycle 0, output in cycle k + 2.
 module tu_pom_march #(
-  parameter int unsigned SideW = 1,     // carried with the pixel (the unit's dT and flags)
-  parameter int unsigned DepthPort = 0  // 0: bricks ROM; 1: external depth RAM (d_* ports)
+  parameter int SideW = 1,     // carried with the pixel (the unit's dT and flags)
+  parameter int DepthPort = 0  // 0: bricks ROM; 1: external depth RAM (d_* ports)
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -45,10 +45,10 @@ module tu_pom_march #(
   output logic [15:0]                         den_o,
   output logic [SideW-1:0]                    side_o
 );
-  localparam int unsigned UvW = tu_formats_pkg::PomUvW;
-  localparam int unsigned NW = tu_formats_pkg::PomNW;
-  localparam int unsigned TexLsb = tu_formats_pkg::PomUvF - 6;
-  localparam int unsigned TexAW = tu_formats_pkg::TexAddrW;
+  localparam int UvW = tu_formats_pkg::PomUvW;
+  localparam int NW = tu_formats_pkg::PomNW;
+  localparam int TexLsb = tu_formats_pkg::PomUvF - 6;
+  localparam int TexAW = tu_formats_pkg::TexAddrW;
 
   typedef enum logic {Idle, Run} state_e;
   state_e state_q;

@@ -7,7 +7,7 @@
 //                T'' outside [0, 1]^2
 // side_i (the unit's back / clamped flags) is carried along unchanged.
 module tu_pom_refine #(
-  parameter int unsigned SideW = 1
+  parameter int SideW = 1
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -31,20 +31,20 @@ module tu_pom_refine #(
   output logic                                discard_o,
   output logic [SideW-1:0]                    side_o
 );
-  localparam int unsigned Lat = tu_formats_pkg::PomRefineLatency;
-  localparam int unsigned UvW = tu_formats_pkg::PomUvW;
-  localparam int unsigned UvF = tu_formats_pkg::PomUvF;
-  localparam int unsigned NW  = tu_formats_pkg::PomNW;
-  localparam int unsigned DW  = tu_formats_pkg::PomDenW;
-  localparam int unsigned WW  = tu_formats_pkg::PomWW;
-  localparam int unsigned WF  = tu_formats_pkg::PomWF;
-  localparam int unsigned MW  = tu_formats_pkg::RecipMantW;
-  localparam int unsigned RW  = tu_formats_pkg::RecipOutW;
-  localparam int unsigned PW  = tu_formats_pkg::RecipShiftW;
-  localparam int unsigned RF  = tu_formats_pkg::RecipOutF;
-  localparam int unsigned AwW = DW + WF + RW;    // (a << WF) * R, unsigned
-  localparam int unsigned ShW = UvW + WW + 1;    // w * dT, signed
-  localparam int unsigned CoreLat = 4;
+  localparam int Lat = tu_formats_pkg::PomRefineLatency;
+  localparam int UvW = tu_formats_pkg::PomUvW;
+  localparam int UvF = tu_formats_pkg::PomUvF;
+  localparam int NW  = tu_formats_pkg::PomNW;
+  localparam int DW  = tu_formats_pkg::PomDenW;
+  localparam int WW  = tu_formats_pkg::PomWW;
+  localparam int WF  = tu_formats_pkg::PomWF;
+  localparam int MW  = tu_formats_pkg::RecipMantW;
+  localparam int RW  = tu_formats_pkg::RecipOutW;
+  localparam int PW  = tu_formats_pkg::RecipShiftW;
+  localparam int RF  = tu_formats_pkg::RecipOutF;
+  localparam int AwW = DW + WF + RW;    // (a << WF) * R, unsigned
+  localparam int ShW = UvW + WW + 1;    // w * dT, signed
+  localparam int CoreLat = 4;
 
   logic en;
   logic [Lat-1:0] stage_valid;

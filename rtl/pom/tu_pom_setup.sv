@@ -7,7 +7,7 @@
 //   stage 6    : dT = round_half_up(P * R_n >> (p_n + RecipOutF))
 // side_i is carried along unchanged (the unit passes the pixel's T and wrap through it).
 module tu_pom_setup #(
-  parameter int unsigned SideW = 1
+  parameter int SideW = 1
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -28,18 +28,18 @@ module tu_pom_setup #(
   output logic                                clamped_o,
   output logic [SideW-1:0]                    side_o
 );
-  localparam int unsigned Lat = tu_formats_pkg::PomSetupLatency;
-  localparam int unsigned VzW = tu_formats_pkg::PomVzW;
-  localparam int unsigned UvW = tu_formats_pkg::PomUvW;
-  localparam int unsigned NW  = tu_formats_pkg::PomNW;
-  localparam int unsigned SW  = tu_formats_pkg::PomSW;
-  localparam int unsigned MW  = tu_formats_pkg::RecipMantW;
-  localparam int unsigned RW  = tu_formats_pkg::RecipOutW;
-  localparam int unsigned PW  = tu_formats_pkg::RecipShiftW;
-  localparam int unsigned RF  = tu_formats_pkg::RecipOutF;
-  localparam int unsigned XsW = VzW + SW + 1;   // S*Vx: signed
-  localparam int unsigned PrW = XsW + RW + 1;   // S*Vx * R_a, P * R_n (P fits in XsW)
-  localparam int unsigned CoreLat = 4;
+  localparam int Lat = tu_formats_pkg::PomSetupLatency;
+  localparam int VzW = tu_formats_pkg::PomVzW;
+  localparam int UvW = tu_formats_pkg::PomUvW;
+  localparam int NW  = tu_formats_pkg::PomNW;
+  localparam int SW  = tu_formats_pkg::PomSW;
+  localparam int MW  = tu_formats_pkg::RecipMantW;
+  localparam int RW  = tu_formats_pkg::RecipOutW;
+  localparam int PW  = tu_formats_pkg::RecipShiftW;
+  localparam int RF  = tu_formats_pkg::RecipOutF;
+  localparam int XsW = VzW + SW + 1;   // S*Vx: signed
+  localparam int PrW = XsW + RW + 1;   // S*Vx * R_a, P * R_n (P fits in XsW)
+  localparam int CoreLat = 4;
 
   logic en;
   logic [Lat-1:0] stage_valid;

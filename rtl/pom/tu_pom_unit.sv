@@ -9,8 +9,8 @@
 // latency) with the map's base and log2 sides given with each pixel (tu_pom_march). side_i is
 // carried to side_o with its pixel (unused: tie to 0).
 module tu_pom_unit #(
-  parameter int unsigned DepthPort = 0,
-  parameter int unsigned SideW = 1
+  parameter int DepthPort = 0,
+  parameter int SideW = 1
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -42,12 +42,12 @@ module tu_pom_unit #(
   output logic                                clamped_o,
   output logic [SideW-1:0]                    side_o
 );
-  localparam int unsigned UvW = tu_formats_pkg::PomUvW;
-  localparam int unsigned NW  = tu_formats_pkg::PomNW;
-  localparam int unsigned DW  = tu_formats_pkg::PomDenW;
-  localparam int unsigned AW  = tu_formats_pkg::TexAddrW;
-  localparam int unsigned XW  = AW + 8 + SideW;   // depth map, side: set-up -> march
-  localparam int unsigned SSideW = 2 * UvW + 1 + XW;  // T, wrap, depth map, side
+  localparam int UvW = tu_formats_pkg::PomUvW;
+  localparam int NW  = tu_formats_pkg::PomNW;
+  localparam int DW  = tu_formats_pkg::PomDenW;
+  localparam int AW  = tu_formats_pkg::TexAddrW;
+  localparam int XW  = AW + 8 + SideW;   // depth map, side: set-up -> march
+  localparam int SSideW = 2 * UvW + 1 + XW;  // T, wrap, depth map, side
 
   // ---- Set-up --------------------------------------------------------------------------------
   logic           s_valid, s_ready, s_back, s_clamped;
@@ -62,7 +62,7 @@ module tu_pom_unit #(
   );
 
   // ---- March ----------------------------------------------------------------------------------
-  localparam int unsigned MSideW = 2 * UvW + 3 + SideW;  // dT, wrap, back, clamped, side
+  localparam int MSideW = 2 * UvW + 3 + SideW;  // dT, wrap, back, clamped, side
   logic              m_valid, m_ready;
   logic [UvW-1:0]    m_u, m_v;
   logic [NW-1:0]     m_steps;

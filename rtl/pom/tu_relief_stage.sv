@@ -13,10 +13,10 @@
 // without a shift stream at 1 pixel / clock and wait only for older shifted pixels.
 // Stream cycles without back-pressure: relief::stage_cycles (same structure, cycle by cycle).
 module tu_relief_stage #(
-  parameter int unsigned SideW = 1,
+  parameter int SideW = 1,
   // Sideband FIFO entries: more than the pixels the POM path holds (3 + 7 + 2 + 7), so a
   // full POM path never stalls the pixels behind it for lack of FIFO room.
-  parameter int unsigned FifoDepth = 32
+  parameter int FifoDepth = 32
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -52,19 +52,19 @@ module tu_relief_stage #(
   output logic [tu_formats_pkg::PomNW-1:0]     n_o,
   output logic [SideW-1:0]                     side_o
 );
-  localparam int unsigned UvW  = tu_formats_pkg::PerspUvW;
-  localparam int unsigned PUvW = tu_formats_pkg::PomUvW;
-  localparam int unsigned PF   = tu_formats_pkg::PomUvF;
-  localparam int unsigned Sh   = tu_formats_pkg::PomUvF - tu_formats_pkg::TexUvF;  // 8
-  localparam int unsigned NW   = tu_formats_pkg::PomNW;
-  localparam int unsigned VW   = tu_formats_pkg::PomVzW;
-  localparam int unsigned SW   = tu_formats_pkg::PomSW;
-  localparam int unsigned AW   = tu_formats_pkg::TexAddrW;
-  localparam int unsigned LL   = tu_formats_pkg::PomLayersLatency;
+  localparam int UvW  = tu_formats_pkg::PerspUvW;
+  localparam int PUvW = tu_formats_pkg::PomUvW;
+  localparam int PF   = tu_formats_pkg::PomUvF;
+  localparam int Sh   = tu_formats_pkg::PomUvF - tu_formats_pkg::TexUvF;  // 8
+  localparam int NW   = tu_formats_pkg::PomNW;
+  localparam int VW   = tu_formats_pkg::PomVzW;
+  localparam int SW   = tu_formats_pkg::PomSW;
+  localparam int AW   = tu_formats_pkg::TexAddrW;
+  localparam int LL   = tu_formats_pkg::PomLayersLatency;
   localparam logic [NW-1:0] Nmin = NW'(4);  // pom::kDefaultNmin (relief::layers_at)
 
   // ---- Input: FIFO entry for every pixel, POM path for shifted ones ------------------------
-  localparam int unsigned FW = 1 + 2 * UvW + 8 + SideW;  // shift, u, v, lw, lh, side
+  localparam int FW = 1 + 2 * UvW + 8 + SideW;  // shift, u, v, lw, lh, side
   logic          shift, f_in_ready, l_in_ready, fire;
   logic          f_valid, f_ready;
   logic [FW-1:0] f_data;
@@ -85,7 +85,7 @@ module tu_relief_stage #(
   endfunction
 
   // ---- Layers N (3 stages; its side data moves in lockstep under an identical controller) ----
-  localparam int unsigned LW = 2 * PF + 3 * VW + SW + NW + 1 + AW + 8;
+  localparam int LW = 2 * PF + 3 * VW + SW + NW + 1 + AW + 8;
   logic          l_valid, l_out_valid, l_en, m_ready;
   logic [NW-1:0] l_n;
   logic [LL-1:0] l_stage_valid;
@@ -105,7 +105,7 @@ module tu_relief_stage #(
     if (l_en) begin
       l_side_q[0] <= {frac(u_i, lw_i), frac(v_i, lh_i), vx_i, vy_i, vz_i, scale_i, layers_i,
                       adaptive_i, hbase_i, hlw_i, hlh_i};
-      for (int unsigned k = 1; k < LL; k++) l_side_q[k] <= l_side_q[k-1];
+      for (int k = 1; k < LL; k++) l_side_q[k] <= l_side_q[k-1];
     end
   end
   logic [PF-1:0] m_fu, m_fv;

@@ -4,8 +4,8 @@
 // word, view_valid_i follows in_valid_i for relief pixels unless view_bubble_i (random) holds it
 // back, so the stage sees pixels waiting for their view word.
 module tu_relief_stage_sim #(
-  parameter int unsigned SideW = 20,
-  parameter int unsigned Words = 1 << 17  // depth RAM words (the test's maps take ~72,000)
+  parameter int SideW = 20,
+  parameter int Words = 1 << 17  // depth RAM words (the test's maps take ~72,000)
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,

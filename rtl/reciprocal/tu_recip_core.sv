@@ -11,12 +11,12 @@ module tu_recip_core
   input  logic [tu_formats_pkg::RecipMantW-1:0] m_i,
   output logic [tu_formats_pkg::RecipOutW-1:0]  r_o
 );
-  localparam int unsigned P1W = tu_formats_pkg::RecipC2W + tu_formats_pkg::RecipDxW;            // c2 * dx
-  localparam int unsigned P1F = tu_formats_pkg::RecipC2F + tu_formats_pkg::RecipMantW - 1;
-  localparam int unsigned P2W = tu_formats_pkg::RecipSW + tu_formats_pkg::RecipDxW + 1;         // s * dx (signed)
-  localparam int unsigned P2F = tu_formats_pkg::RecipC1F + tu_formats_pkg::RecipMantW - 1;
-  localparam int unsigned YW  = tu_formats_pkg::RecipC0W + 2;                   // c0 + t2 (signed)
-  localparam int unsigned RndShift = tu_formats_pkg::RecipC0F - tu_formats_pkg::RecipOutF;
+  localparam int P1W = tu_formats_pkg::RecipC2W + tu_formats_pkg::RecipDxW;            // c2 * dx
+  localparam int P1F = tu_formats_pkg::RecipC2F + tu_formats_pkg::RecipMantW - 1;
+  localparam int P2W = tu_formats_pkg::RecipSW + tu_formats_pkg::RecipDxW + 1;         // s * dx (signed)
+  localparam int P2F = tu_formats_pkg::RecipC1F + tu_formats_pkg::RecipMantW - 1;
+  localparam int YW  = tu_formats_pkg::RecipC0W + 2;                   // c0 + t2 (signed)
+  localparam int RndShift = tu_formats_pkg::RecipC0F - tu_formats_pkg::RecipOutF;
 
   // Stage 1: ROM
   logic [tu_formats_pkg::RecipC0W-1:0]        c0_rom;

@@ -2,13 +2,13 @@
 // bits): p = msb position of q, M = q << (RecipMantW - 1 - p) in [1, 2). Combinational; the same
 // rule as recip::eval. q = 0 gives p = 0, M = 0 (the caller must not use the result).
 module tu_recip_norm #(
-  parameter int unsigned InW = 16
+  parameter int InW = 16
 ) (
   input  logic [InW-1:0]                           q_i,
   output logic [tu_formats_pkg::RecipMantW-1:0]    m_o,
   output logic [tu_formats_pkg::RecipShiftW-1:0]   p_o
 );
-  localparam int unsigned MW = tu_formats_pkg::RecipMantW;
+  localparam int MW = tu_formats_pkg::RecipMantW;
   always_comb begin
     p_o = '0;
     for (int i = 0; i < InW; i++) begin

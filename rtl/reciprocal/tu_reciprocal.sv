@@ -14,7 +14,7 @@ module tu_reciprocal
   output logic [tu_formats_pkg::RecipShiftW-1:0] shift_o,
   output logic                   flag_o
 );
-  localparam int unsigned CoreLat = 4;
+  localparam int CoreLat = 4;
   logic                 en;
   logic [tu_formats_pkg::RecipLatency-1:0] stage_valid;
 

@@ -25,9 +25,9 @@ module tu_bilinear (
   input  logic                                out_ready_i,
   output logic [31:0]                         rgba_o
 );
-  localparam int unsigned UW = tu_formats_pkg::PerspUvW;
-  localparam int unsigned F  = tu_formats_pkg::TexUvF;
-  localparam int unsigned One = 1 << F;
+  localparam int UW = tu_formats_pkg::PerspUvW;
+  localparam int F  = tu_formats_pkg::TexUvF;
+  localparam int One = 1 << F;
   localparam logic [F:0]   OneF = (F+1)'(One);
   logic [2:0]                          st_q;   // 0 idle, 1..4 read k-1, 5 last data, 6 output
   logic signed [UW-1:0]                x0_q, y0_q;

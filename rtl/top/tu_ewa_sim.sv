@@ -1,7 +1,7 @@
 // Simulation top of the EWA engine (block "ewa"): tu_ewa with the texel RAM model attached; the
 // testbench loads the texture through the RAM's write port before the pixel stream.
 module tu_ewa_sim #(
-  parameter int unsigned Words = 1 << 17
+  parameter int Words = 1 << 17
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,

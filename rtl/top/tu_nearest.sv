@@ -22,8 +22,8 @@ module tu_nearest (
   input  logic                                out_ready_i,
   output logic [31:0]                         rgba_o
 );
-  localparam int unsigned UW = tu_formats_pkg::PerspUvW;
-  localparam int unsigned F  = tu_formats_pkg::TexUvF;
+  localparam int UW = tu_formats_pkg::PerspUvW;
+  localparam int F  = tu_formats_pkg::TexUvF;
   logic [1:0]                          st_q;  // 0 idle, 1 read, 2 data, 3 output
   logic signed [UW-1:0]                x_q, y_q;
   logic [tu_formats_pkg::TexAddrW-1:0] base_q;

@@ -7,7 +7,7 @@
 // Latency 2 (S1: four products with the 12-bit indices, S2: sums), II = 1, same as
 // tu_persp_setup. side_i is carried along unchanged.
 module tu_num_setup #(
-  parameter int unsigned SideW = 1
+  parameter int SideW = 1
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -32,8 +32,8 @@ module tu_num_setup #(
   output logic [tu_formats_pkg::EllNxW-1:0]   nn_o,
   output logic [SideW-1:0]                    side_o
 );
-  localparam int unsigned NW = tu_formats_pkg::EllNxW;
-  localparam int unsigned XW = tu_formats_pkg::PerspXyW;
+  localparam int NW = tu_formats_pkg::EllNxW;
+  localparam int XW = tu_formats_pkg::PerspXyW;
   logic       en;
   logic [1:0] stage_valid;
   tu_pipe_valid #(.Depth(2)) u_ctrl (

@@ -4,7 +4,7 @@
 // and the B2 numerators: nux, nvx constant along the row, nuy -= m, nvy -= nn per pixel (exact),
 // each rounded half up to s(EllNumW).EllNumF and saturated (ellipse::fx::round_num).
 module tu_span_expand #(
-  parameter int unsigned SideW = 1
+  parameter int SideW = 1
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -42,10 +42,10 @@ module tu_span_expand #(
   output logic [tu_formats_pkg::EllNumW-1:0]  nvy_o,
   output logic [SideW-1:0]                    side_o
 );
-  localparam int unsigned NW  = tu_formats_pkg::EllNxW;
-  localparam int unsigned OW  = tu_formats_pkg::EllNumW;
-  localparam int unsigned Sh  = 2 * tu_formats_pkg::PerspF - tu_formats_pkg::EllNumF;
-  localparam int unsigned RsW = NW - Sh + 1;
+  localparam int NW  = tu_formats_pkg::EllNxW;
+  localparam int OW  = tu_formats_pkg::EllNumW;
+  localparam int Sh  = 2 * tu_formats_pkg::PerspF - tu_formats_pkg::EllNumF;
+  localparam int RsW = NW - Sh + 1;
   localparam logic signed [RsW-1:0] OMax = (RsW'(1) <<< (OW - 1)) - RsW'(1);
   localparam logic signed [RsW-1:0] OMin = -(RsW'(1) <<< (OW - 1));
 

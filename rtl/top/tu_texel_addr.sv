@@ -4,7 +4,7 @@
 // 2^max(0, lw-L) x 2^max(0, lh-L); levels are stored one after another from level 0, so
 // levelbase(L) = sum_{k<L} 2^(max(0,lw-k) + max(0,lh-k)).
 module tu_texel_addr #(
-  parameter int unsigned CoordW = 32
+  parameter int CoordW = 32
 ) (
   input  logic [tu_formats_pkg::TexAddrW-1:0] base_i,     // texture base (word address)
   input  logic [3:0]                          lw_i,       // log2 width of level 0
@@ -15,7 +15,7 @@ module tu_texel_addr #(
   input  logic signed [CoordW-1:0]            y_i,
   output logic [tu_formats_pkg::TexAddrW-1:0] addr_o
 );
-  localparam int unsigned AW = tu_formats_pkg::TexAddrW;
+  localparam int AW = tu_formats_pkg::TexAddrW;
   logic [3:0]    wl, hl;  // log2 size of level L
   logic [AW-1:0] lbase, xw, yw, wmask, hmask;
   always_comb begin

@@ -3,8 +3,8 @@
 // mip level of a power-of-two texture at its level base offset, tu_texel_addr). Not synthesised
 // for area: the texture unit's texel port stands for a texture cache.
 module tu_texel_ram #(
-  parameter int unsigned AddrW = tu_formats_pkg::TexAddrW,
-  parameter int unsigned Words = 1 << 17
+  parameter int AddrW = tu_formats_pkg::TexAddrW,
+  parameter int Words = 1 << 17
 ) (
   input  logic             clk_i,
   input  logic             rd_en_i,
@@ -14,7 +14,7 @@ module tu_texel_ram #(
   input  logic [AddrW-1:0] wr_addr_i,
   input  logic [31:0]      wr_data_i
 );
-  localparam int unsigned IdxW = $clog2(Words);
+  localparam int IdxW = $clog2(Words);
   logic [31:0] mem_q [Words];
   always_ff @(posedge clk_i) begin
     if (wr_en_i && wr_addr_i < AddrW'(Words)) mem_q[IdxW'(wr_addr_i)] <= wr_data_i;

@@ -16,13 +16,13 @@ module tu_texture_unit #(
   // Filter engines: EWA (tu_ewa), bilinear at level 0 (tu_bilinear), trilinear (tu_trilinear),
   // nearest at level 0 (tu_nearest). Each span's filt_i picks one; a span asking for an engine the
   // unit leaves out goes to the first present of EWA, trilinear, bilinear, nearest.
-  parameter int unsigned HasEwa       = {31'b0, tu_unit_cfg_pkg::HasEwa},
-  parameter int unsigned HasBilinear  = {31'b0, tu_unit_cfg_pkg::HasBilinear},
-  parameter int unsigned HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
-  parameter int unsigned HasNearest   = {31'b0, tu_unit_cfg_pkg::HasNearest},
+  parameter int HasEwa       = {31'b0, tu_unit_cfg_pkg::HasEwa},
+  parameter int HasBilinear  = {31'b0, tu_unit_cfg_pkg::HasBilinear},
+  parameter int HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
+  parameter int HasNearest   = {31'b0, tu_unit_cfg_pkg::HasNearest},
   // 1: relief stage (tu_relief_stage: POM, fixed or adaptive layers) between B1 and the filter
-  parameter int unsigned HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
-  parameter int unsigned FifoDepth = 4   // pixels buffered between B2 and the filter
+  parameter int HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
+  parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -96,22 +96,22 @@ module tu_texture_unit #(
   output logic [1:0]                            pflags_o,  // B1: {span set-up overflow, guard}
   output logic [tu_formats_pkg::PomNW-1:0]      rn_o       // relief layers used (0: not shifted)
 );
-  localparam int unsigned PW = tu_formats_pkg::PerspPW;
-  localparam int unsigned QW = tu_formats_pkg::PerspQW;
-  localparam int unsigned XW = tu_formats_pkg::PerspXyW;
-  localparam int unsigned UW = tu_formats_pkg::PerspUvW;
-  localparam int unsigned AW = tu_formats_pkg::TexAddrW;
-  localparam int unsigned NW = tu_formats_pkg::EllNxW;
+  localparam int PW = tu_formats_pkg::PerspPW;
+  localparam int QW = tu_formats_pkg::PerspQW;
+  localparam int XW = tu_formats_pkg::PerspXyW;
+  localparam int UW = tu_formats_pkg::PerspUvW;
+  localparam int AW = tu_formats_pkg::TexAddrW;
+  localparam int NW = tu_formats_pkg::EllNxW;
   // material fields carried per pixel
-  localparam int unsigned MatW  = AW + 4 + 4 + 1 + 2 + tu_formats_pkg::EwaCountW + 2;
+  localparam int MatW  = AW + 4 + 4 + 1 + 2 + tu_formats_pkg::EwaCountW + 2;
   // per-triangle B2 fields
-  localparam int unsigned TriW  = tu_formats_pkg::EllDetW + tu_formats_pkg::EllDetExpW +
+  localparam int TriW  = tu_formats_pkg::EllDetW + tu_formats_pkg::EllDetExpW +
                                   tu_formats_pkg::EllAnisoW + tu_formats_pkg::EllMaxLodW;
   // material relief fields, used up by the relief stage
-  localparam int unsigned RelW  = 2 + tu_formats_pkg::PomNW + tu_formats_pkg::PomSW + AW + 8;
-  localparam int unsigned SpanW = 2 * PW + QW + 3 * XW + TriW + MatW + RelW;
-  localparam int unsigned PixW  = 2 * XW + 1 + MatW + RelW;   // x, y, ovf, material, relief
-  localparam int unsigned FPixW = 2 * XW + 1 + MatW;          // after the relief stage
+  localparam int RelW  = 2 + tu_formats_pkg::PomNW + tu_formats_pkg::PomSW + AW + 8;
+  localparam int SpanW = 2 * PW + QW + 3 * XW + TriW + MatW + RelW;
+  localparam int PixW  = 2 * XW + 1 + MatW + RelW;   // x, y, ovf, material, relief
+  localparam int FPixW = 2 * XW + 1 + MatW;          // after the relief stage
 
   // ---------------- span set-up: fork to B1 set-up and numerator set-up, join ----------------
   logic ps_in_ready, ns_in_ready, ps_valid, ns_valid, sj_valid, sj_ready;
@@ -149,7 +149,7 @@ module tu_texture_unit #(
   assign {s_a, s_d, s_g, s_x0, s_x1, s_y, s_tri, s_mat} = ns_side;
 
   // ---------------- span -> pixels ----------------
-  localparam int unsigned ExSideW = TriW + PixW;
+  localparam int ExSideW = TriW + PixW;
   logic ex_valid, ex_ready;
   logic [PW-1:0] ex_pu0, ex_pv0, ex_a, ex_d;
   logic [QW-1:0] ex_q0, ex_g, ex_q;
@@ -215,7 +215,7 @@ module tu_texture_unit #(
 
   // ---------------- relief stage ----------------
   // B1's (u, v) shifted by the material's POM relief; everything else rides along in order.
-  localparam int unsigned RSideW = FPixW + 1 + 3 * tu_formats_pkg::EllCoefW +
+  localparam int RSideW = FPixW + 1 + 3 * tu_formats_pkg::EllCoefW +
                                    2 * tu_formats_pkg::EllLogW + tu_formats_pkg::EllLodW + 5;
   logic [FPixW-1:0] pj_fpix;
   logic [RelW-1:0]  pj_rel;
@@ -260,7 +260,7 @@ module tu_texture_unit #(
   end
 
   // ---------------- FIFO in front of the filter ----------------
-  localparam int unsigned FW = RSideW + 2 * UW + tu_formats_pkg::PomNW;
+  localparam int FW = RSideW + 2 * UW + tu_formats_pkg::PomNW;
   logic          fq_valid, fq_ready;
   logic [FW-1:0] fq_data;
   tu_fifo #(.Width(FW), .Depth(FifoDepth)) u_fifo (
@@ -291,7 +291,7 @@ module tu_texture_unit #(
   // all its pixels (cur_q: the engine of the pixels in flight, inflight_q: how many), so outputs
   // stay in order and only one engine drives the texel port. Switches happen at material changes
   // only (ewa::stream_cycles counts the drain).
-  localparam int unsigned OsW = 2 * XW + 2 + 5 + tu_formats_pkg::PomNW;
+  localparam int OsW = 2 * XW + 2 + 5 + tu_formats_pkg::PomNW;
   localparam logic [1:0] EngBil = 2'd0, EngEwa = 2'd1, EngTri = 2'd2, EngNst = 2'd3;
   localparam logic [1:0] EngFirst = (HasEwa != 0) ? EngEwa : (HasTriFilter != 0) ? EngTri :
                                     (HasBilinear != 0) ? EngBil : EngNst;

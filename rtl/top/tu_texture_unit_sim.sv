@@ -3,12 +3,12 @@
 // depth map and the view words through the write port (ram_sel_i: 0 texels, 1 depth, 2 views)
 // during reset, before the spans.
 module tu_texture_unit_sim #(
-  parameter int unsigned HasEwa      = {31'b0, tu_unit_cfg_pkg::HasEwa},
-  parameter int unsigned HasBilinear = {31'b0, tu_unit_cfg_pkg::HasBilinear},
-  parameter int unsigned HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
-  parameter int unsigned HasNearest = {31'b0, tu_unit_cfg_pkg::HasNearest},
-  parameter int unsigned HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
-  parameter int unsigned Words  = 1 << tu_formats_pkg::TexRamLog2Words
+  parameter int HasEwa      = {31'b0, tu_unit_cfg_pkg::HasEwa},
+  parameter int HasBilinear = {31'b0, tu_unit_cfg_pkg::HasBilinear},
+  parameter int HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
+  parameter int HasNearest = {31'b0, tu_unit_cfg_pkg::HasNearest},
+  parameter int HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
+  parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -72,7 +72,7 @@ module tu_texture_unit_sim #(
   logic                                tex_req;
   logic [tu_formats_pkg::TexAddrW-1:0] tex_addr;
   logic [31:0]                         tex_data;
-  localparam int unsigned VzW = tu_formats_pkg::PomVzW;
+  localparam int VzW = tu_formats_pkg::PomVzW;
   logic                                view_valid, view_ready, d_req;
   logic [63:0]                         view;
   logic [tu_formats_pkg::TexAddrW-1:0] d_addr;

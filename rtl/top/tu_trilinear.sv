@@ -25,8 +25,8 @@ module tu_trilinear (
   output logic [31:0]                         rgba_o,
   output logic [3:0]                          level_o    // floor(lod): the finer level blended
 );
-  localparam int unsigned UW = tu_formats_pkg::PerspUvW;
-  localparam int unsigned LF = tu_formats_pkg::TexLodF;
+  localparam int UW = tu_formats_pkg::PerspUvW;
+  localparam int LF = tu_formats_pkg::TexLodF;
 
   typedef enum logic [2:0] {Idle, IssueA, WaitA, IssueB, WaitB, Out} state_e;
   state_e state_q;

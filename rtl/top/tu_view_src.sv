@@ -3,8 +3,8 @@
 // during reset through a 32-bit port (word i: low half at address 2i, high half at 2i + 1); the
 // model then offers them in order on a valid/ready port. Not synthesised for area.
 module tu_view_src #(
-  parameter int unsigned AddrW = tu_formats_pkg::TexAddrW,
-  parameter int unsigned Words = 1 << 16
+  parameter int AddrW = tu_formats_pkg::TexAddrW,
+  parameter int Words = 1 << 16
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
@@ -15,7 +15,7 @@ module tu_view_src #(
   input  logic             out_ready_i,
   output logic [63:0]      out_data_o
 );
-  localparam int unsigned IdxW = $clog2(Words);
+  localparam int IdxW = $clog2(Words);
   logic [63:0]   mem_q [Words];
   logic [IdxW:0] count_q = '0;  // words written (loaded during reset, so not reset itself)
   logic [IdxW:0] rd_q;

@@ -132,10 +132,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       throw std::runtime_error(s.source + ": textures need " + std::to_string(ram.size()) + " texel words and " +
                                std::to_string(depth_ram.size()) + " depth words, the RTL RAM models hold " +
                                std::to_string(kRamWords) + " each");
-    const auto tris = scene::in_texels(ob, x.tex.levels[0].width, x.tex.levels[0].height);
-    for (size_t t = 0; t < tris.size(); ++t)
-      x.coefs.push_back(persp::Unit::quantise(persp::coefficients(s.camera, tris[t]),
-                                              "object " + std::to_string(oi) + " triangle " + std::to_string(t)));
+    x.coefs = render::setup_fx(s, oi, x.tex.levels[0].width, x.tex.levels[0].height);
     objs.push_back(std::move(x));
   }
 

@@ -91,4 +91,58 @@ TEST(Scene, MissingFileAndPngTextureRelativeToTheScene) {
   }
   std::filesystem::remove_all(dir);
 }
+// Bad input found by testing as a new user would (issue 13 §5): each names the file and the
+// line or the field.
+TEST(Scene, NumberOutsideDoubleRangeNamesTheLine) {
+  EXPECT_EQ(error_of("{\n  \"texunit_scene\": 1,\n  \"camera\": {\"fovy_deg\": 1e400}\n}"),
+            "s.json:3: number 1e400 is outside double's range");
+}
+
+TEST(Scene, DuplicateKeyIsAnError) {
+  EXPECT_EQ(error_of(edited("\"fovy_deg\": 60,", "\"fovy_deg\": 60, \"fovy_deg\": 90,")),
+            "s.json: /camera/fovy_deg: duplicate key (a key appears once per object)");
+  EXPECT_EQ(error_of(edited("\"material\": \"wall\"", "\"material\": \"wall\", \"material\": \"ground\"")),
+            "s.json: /objects/1/material: duplicate key (a key appears once per object)");
+}
+
+TEST(Scene, NulByteInAKeyIsShownEscaped) {
+  // what() is a C string: the NUL would have cut the message.
+  EXPECT_EQ(error_of(edited("\"fovy_deg\": 60,", "\"fovy_deg\": 60, \"zo\\u0000om\": 2,")),
+            "s.json: /camera/zo\\x00om: unknown field");
+}
+
+TEST(Scene, CameraUpZeroOrAlongTheViewIsRejected) {
+  EXPECT_EQ(error_of(edited("\"up\": [0, 1, 0]", "\"up\": [0, 0, 0]")), "s.json: /camera/up: is the zero vector");
+  // look_at - position = (0.6, -0.5, -10).
+  EXPECT_EQ(error_of(edited("\"up\": [0, 1, 0]", "\"up\": [1.2, -1, -20]")),
+            "s.json: /camera/up: is parallel to the view direction (look_at - position)");
+}
+
+TEST(Scene, HugeMagnitudesAreOutOfRange) {
+  EXPECT_EQ(error_of(edited("[[0, 0], [4, 0], [4, 16], [0, 16]]", "[[0, 0], [1e18, 0], [4, 16], [0, 16]]")),
+            "s.json: /objects/0/uv/1/0: value 1e+18 is out of range [-65536, 65536]");
+  EXPECT_EQ(error_of(edited("[-20, 0, -0.5], [20, 0, -0.5]", "[-20, 0, -0.5], [1e308, 0, -0.5]")),
+            "s.json: /objects/0/vertices/1/0: value 1e+308 is out of range [-1e+06, 1e+06]");
+  EXPECT_EQ(error_of(edited("\"position\": [0, 1.5, 0]", "\"position\": [0, 1.5e7, 0]")),
+            "s.json: /camera/position/1: value 15000000.0 is out of range [-1e+06, 1e+06]");
+}
+
+TEST(Scene, ZeroAreaTriangleIsDroppedWithAWarningNamingTheObject) {
+  // Quad (0,1,2) + (0,2,3): vertex 3 = vertex 0 makes the second triangle degenerate.
+  const Scene s = parse(edited("[[2.5, 0, -1.5], [3.5, 0, -40], [3.5, 4, -40], [2.5, 4, -1.5]]",
+                               "[[2.5, 0, -1.5], [3.5, 0, -40], [3.5, 4, -40], [2.5, 0, -1.5]]"),
+                        "s.json", ".");
+  ASSERT_EQ(s.objects[1].triangles.size(), 1u);
+  EXPECT_EQ(s.objects[1].triangles[0].name, "wall#0");
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_EQ(s.warnings[0], "s.json: object 'wall' (/objects/1): triangle 'wall#1' has zero area "
+                           "(collinear or repeated vertices): dropped");
+  // Collinear vertices too.
+  const Scene c = parse(edited("[[2.5, 0, -1.5], [3.5, 0, -40], [3.5, 4, -40], [2.5, 4, -1.5]]",
+                               "[[0, 0, -2], [1, 0, -3], [2, 0, -4], [2.5, 4, -1.5]]"),
+                        "s.json", ".");
+  EXPECT_EQ(c.objects[1].triangles.size(), 1u);
+  EXPECT_EQ(c.warnings.size(), 1u);
+  EXPECT_TRUE(default_scene().warnings.empty());
+}
 }  // namespace

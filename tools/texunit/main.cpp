@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "block.hpp"
+#include "cli_checks.hpp"
+#include "output.hpp"
 #include "complexity/complexity.hpp"
 #include "pom/relief_quality.hpp"
 #include "cosim.hpp"
@@ -23,11 +25,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Vectors per generated set (`vectors --count`, `demo --count`): a set is held in memory
+// (about 200 bytes per vector for the widest block, ewa), so 2^22 vectors stay under 1 GB.
+constexpr uint64_t kMaxCount = 1ull << 22;
+
 int cmd_vectors(const std::string& block, const std::string& set, uint64_t count, uint64_t seed,
                 const std::string& out, int threads) {
   const auto& b = tu::blocks::find(block);
+  tu::cli::Outputs outs;
+  const std::string tmp = outs.stage(out);
   const auto vf = tu::blocks::generate(b, set, count, seed, threads);
-  tu::vec::write(vf, out);
+  tu::vec::write(vf, tmp);
+  outs.commit();
   std::cerr << "wrote " << vf.rows.size() << " vectors (" << block << ", " << set << ") to " << out
             << "\n";
   return 0;
@@ -39,10 +48,15 @@ int cmd_cosim(const std::string& block, const std::string& file, double stall, u
   if (vf.block != block)
     throw std::invalid_argument(file + ": vectors are for block '" + vf.block + "', not '" +
                                 block + "'");
+  if (vf.rows.empty())
+    throw std::invalid_argument(file + ": no vectors (the file has a header and no data line)");
+  // The waveform is written by Verilator, which fails silently: check its directory first.
+  tu::cli::Outputs outs;
+  const std::string fst_tmp = fst.empty() ? "" : outs.stage(fst);
   tu::cosim::Options opt;
   opt.run.stall_prob = stall;
   opt.run.seed = seed;
-  opt.run.fst_path = fst;
+  opt.run.fst_path = fst_tmp;
   tu::cosim::Report rep;
   try {
     rep = tu::cosim::run(vf, opt);
@@ -63,6 +77,7 @@ int cmd_cosim(const std::string& block, const std::string& file, double stall, u
               << rep.wall_s << " s\n";
   }
   if (!rep.first_mismatch.empty()) std::cerr << "first mismatch: " << rep.first_mismatch << "\n";
+  outs.commit();  // the waveform, also of a run with mismatches (it is how they are debugged)
   return rep.ok() ? 0 : 1;
 }
 
@@ -82,10 +97,12 @@ int cmd_gen_rtl(const std::string& root, bool check) {
       ++stale;
       continue;
     }
-    fs::create_directories(p.parent_path());
-    const fs::path tmp = p.string() + ".tmp";
-    std::ofstream(tmp, std::ios::binary) << content;
-    fs::rename(tmp, p);
+    tu::cli::Outputs outs;
+    outs.make_dir(p.parent_path().string());
+    const std::string tmp = outs.stage(p.string());
+    if (!(std::ofstream(tmp, std::ios::binary) << content))
+      throw std::runtime_error(p.string() + ": cannot write the file");
+    outs.commit();
     std::cerr << "wrote " << p.string() << "\n";
   }
   return stale ? 1 : 0;
@@ -94,9 +111,12 @@ int cmd_gen_rtl(const std::string& root, bool check) {
 // Complexity map (docs/blocks/relief.md): HEIGHT.png (first channel) -> 8-bit level codes.
 int cmd_complexity(const std::string& in, const std::string& out, const tu::complexity::Params& p) {
   tu::complexity::validate(p);
+  tu::cli::Outputs outs;
+  const std::string tmp = outs.stage(out);
   const auto h = tu::img::read_png_channel0(in);
   const auto c = tu::complexity::complexity_map(h, p);
-  tu::img::write_png_gray(out, c);
+  tu::img::write_png_gray(tmp, c);
+  outs.commit();
   std::cerr << "wrote " << c.width << "x" << c.height << " complexity map (" << p.levels
             << " levels, gamma " << p.gamma << ", dilate " << p.dilate << ") to " << out << "\n";
   return 0;
@@ -175,8 +195,9 @@ int main(int argc, char** argv) {
   vec->add_option("--block", block, "block name")->required();
   vec->add_option("--set", set, "golden | stiff | random")
       ->check(CLI::IsMember({"golden", "stiff", "random"}));
-  vec->add_option("--count", count, "vectors in a random set")->check(CLI::Range(1ull, 1ull << 32));
-  vec->add_option("--seed", seed, "generator seed");
+  vec->add_option("--count", count, "vectors in a random set")
+      ->check(tu::cli::non_negative_integer() & CLI::Range(uint64_t{1}, kMaxCount));
+  vec->add_option("--seed", seed, "generator seed")->check(tu::cli::non_negative_integer());
   vec->add_option("--out", out, "output file")->required();
   vec->add_option("--threads", threads, threads_help)->check(CLI::Range(0, 4096));
 
@@ -184,8 +205,8 @@ int main(int argc, char** argv) {
   cos->add_option("--block", block, "block name")->required();
   cos->add_option("--vectors", file, "vector file")->required()->check(CLI::ExistingFile);
   cos->add_option("--stall-prob", stall, "probability of an input bubble / output stall")
-      ->check(CLI::Range(0.0, 0.95));
-  cos->add_option("--seed", seed, "stall pattern seed");
+      ->check(tu::cli::finite_in(0.0, 0.95));
+  cos->add_option("--seed", seed, "stall pattern seed")->check(tu::cli::non_negative_integer());
   cos->add_option("--fst", fst, "write an FST waveform");
   cos->add_flag("--json", json, "print one JSON object");
 
@@ -194,7 +215,8 @@ int main(int argc, char** argv) {
   gen->add_flag("--check", check, "only check that the files are up to date");
 
   auto* demo = app.add_subcommand("demo", "main job: co-simulate every block and print the table");
-  demo->add_option("--count", count, "random vectors per block")->check(CLI::Range(1ull, 1ull << 32));
+  demo->add_option("--count", count, "random vectors per block")
+      ->check(tu::cli::non_negative_integer() & CLI::Range(uint64_t{1}, kMaxCount));
   std::string demo_out = "build/demo";
   demo->add_option("--out", demo_out, "directory for the rendered images");
   demo->add_option("--threads", threads, threads_help)->check(CLI::Range(0, 4096));
@@ -205,16 +227,16 @@ int main(int argc, char** argv) {
   cpx->add_option("HEIGHT", cx_in, "height map PNG (first channel)")->required();
   cpx->add_option("OUT", cx_out, "output PNG (8-bit grey level codes)")->required();
   cpx->add_option("--levels", cx.levels, "quantisation levels")->check(CLI::Range(2, 256));
-  cpx->add_option("--gamma", cx.gamma, "gamma exponent")->check(CLI::Range(1e-6, 16.0));
-  cpx->add_option("--dilate", cx.dilate, "odd max-filter size (1 = none)")
-      ->check(CLI::Range(1, 255) & CLI::Validator([](std::string& s) {
-        return std::stoi(s) % 2 ? std::string() : std::string("must be odd");
-      }, "ODD"));
+  cpx->add_option("--gamma", cx.gamma, "gamma exponent")->check(tu::cli::finite_in(1e-6, 16.0));
+  cpx->add_option("--dilate", cx.dilate, "odd max-filter size (1 = none)")->check(tu::cli::odd_in(1, 255));
 
   tu::pom::QualityParams rq;
   auto* rqc = app.add_subcommand("relief-quality", "POM / iterative parallax PSNR vs steps (docs/blocks/relief.md)");
   rqc->add_option("--size", rq.side, "texture and image side (power of two)")->check(CLI::IsMember({16, 32, 64, 128, 256, 512}));
-  rqc->add_option("--scale", rq.scale, "height scale S")->check(CLI::Range(0.0, 0.99));
+  rqc->add_option("--scale", rq.scale, "height scale S")->check(tu::cli::finite_in(0.0, 0.99));
+  rqc->add_option("--height", rq.height_png, "a height map PNG of your own (first channel, 255 = top; square, "
+                  "power of two, 16..512) instead of the procedural maps; its side replaces --size")
+      ->check(CLI::ExistingFile);
   rqc->add_option("--debug-dir", rq.debug_dir, "write layer-count debug PNGs here")->check(CLI::ExistingDirectory);
 
   tu::report::Options ro;
@@ -227,7 +249,7 @@ int main(int argc, char** argv) {
   rep->add_option("--plots", ro.plots, "directory for the per-block Pareto plots (gnuplot PNG)");
   rep->add_option("--markdown", ro.markdown, "write a Markdown table grouped per block");
   rep->add_option("--count", ro.count, "random vectors per registry block (plus its stiff set)")
-      ->check(CLI::Range(1ull, 1ull << 26));
+      ->check(tu::cli::non_negative_integer() & CLI::Range(1ull, 1ull << 26));
   rep->add_option("--yosys-cache", ro.yosys_cache, "JSON cache of Yosys results (keyed by the RTL files' hash)");
   rep->add_flag("--no-yosys", no_yosys, "do not synthesise (cells: not measured)");
   rep->add_option("--root", ro.root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
@@ -240,7 +262,7 @@ int main(int argc, char** argv) {
   tu::plan::Options po;
   auto* pln = app.add_subcommand("plan", "specialise the unit to a scene: blocks, variants, RTL configuration");
   pln->add_option("SCENE", po.scene, "scene JSON file, or 'default'")->required();
-  pln->add_option("--report", po.report, "measured report table (scripts/report.sh)");
+  pln->add_option("--report", po.report, "measured report table (scripts/report.sh; default: the copy of docs/report/report.json built into texunit)");
   pln->add_option("--out", po.out_sv, "write the RTL configuration package (tu_unit_cfg_pkg) here");
   pln->add_option("--out-full", po.out_full_sv, "write the full unit's configuration package here");
   pln->add_flag("--json", po.json, "print the plan as JSON");
@@ -250,7 +272,12 @@ int main(int argc, char** argv) {
   tu::cli::SysmodelArgs sysmodel_args;
   auto* sysm = tu::cli::add_sysmodel(app, sysmodel_args);
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help prints and succeeds; every usage error exits 2 (CLI11's own codes differ by kind).
+    return app.exit(e) == 0 ? 0 : tu::cli::kUsageExit;
+  }
   try {
     if (*vec) return cmd_vectors(block, set, count, seed, out, threads);
     if (*rnd) return tu::cli::run_render(render_args);
@@ -269,6 +296,9 @@ int main(int argc, char** argv) {
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*rqc) return cmd_relief_quality(rq);
     if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000, demo_out, threads);
+  } catch (const fs::filesystem_error& e) {
+    std::cerr << "texunit: error: " << tu::cli::fs_message(e.path1().string(), "access the file", e.code()) << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "texunit: error: " << e.what() << "\n";
     return 2;

@@ -1,6 +1,8 @@
 // `texunit plan`: see plan.hpp and README "Reading the report / specialising the unit".
 #include "plan.hpp"
 
+#include "output.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -24,6 +26,9 @@
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
+extern const char tu_report_table_json[];  // report_table_embed.cpp (embed.cmake)
+extern const unsigned long tu_report_table_json_size;
+
 namespace tu::plan {
 
 namespace {
@@ -42,12 +47,22 @@ struct TRow {
   double cost() const { return cells >= 0 ? cells : 1e12 + static_cast<double>(mul); }
 };
 
-std::vector<TRow> load_table(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot read the report table (run scripts/report.sh)");
+constexpr const char* kBuiltInReport = "docs/report/report.json";
+
+// The table of `path`, or the built-in copy of docs/report/report.json when path is empty.
+std::vector<TRow> load_table(const std::string& file) {
+  const std::string path = file.empty() ? kBuiltInReport : file;
+  std::string text(tu_report_table_json, tu_report_table_json_size);
+  if (!file.empty()) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw std::runtime_error(path + ": cannot read the report table (run scripts/report.sh)");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    text = ss.str();
+  }
   json j;
   try {
-    j = json::parse(in);
+    j = json::parse(text);
   } catch (const json::exception& e) {
     throw std::runtime_error(path + ": malformed JSON (" + e.what() + ")");
   }
@@ -220,12 +235,12 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam bit HasRelief = 1'b" << c.relief << ";\n"
      << "  localparam bit HasPom = 1'b" << c.pom << ";  // tu_pom_layers + tu_pom_march\n"
      << "  localparam bit HasIterParallax = 1'b" << c.iter_parallax << ";\n"
-     << "  localparam int unsigned PomMaxLayers = " << c.pom_max_layers << ";\n"
+     << "  localparam int PomMaxLayers = " << c.pom_max_layers << ";\n"
      << "  // bit 0: formula (tu_gauss_weight), bit 1: 1-D table, bit 2: 2-D table\n"
      << "  localparam logic [2:0] WeightSources = 3'd" << c.weight_sources << ";\n"
-     << "  localparam int unsigned WtabLog2N = " << c.wtab_log2n << ";\n"
-     << "  localparam int unsigned Wtab2dLog2N = " << c.wtab2d_log2n << ";\n"
-     << "  localparam int unsigned PerspLanes = " << c.persp_lanes << ";\n"
+     << "  localparam int WtabLog2N = " << c.wtab_log2n << ";\n"
+     << "  localparam int Wtab2dLog2N = " << c.wtab2d_log2n << ";\n"
+     << "  localparam int PerspLanes = " << c.persp_lanes << ";\n"
      << "endpackage\n";
   return sv.str();
 }
@@ -235,6 +250,7 @@ std::string package(const Config& c, const std::string& origin) {
 int run(const Options& opt) {
   const scene::Scene s = opt.scene == "default" ? scene::default_scene() : scene::load(opt.scene);
   const auto table = load_table(opt.report);
+  const std::string report_name = opt.report.empty() ? kBuiltInReport : opt.report;
   auto rows_of = [&](const std::string& block) {
     std::vector<const TRow*> v;
     for (const auto& r : table)
@@ -244,13 +260,13 @@ int run(const Options& opt) {
   auto one = [&](const std::string& block, const std::string& variant) -> const TRow* {
     for (const TRow* r : rows_of(block))
       if (r->variant == variant) return r;
-    throw std::runtime_error(opt.report + ": no row " + block + "/" + variant + " with an RTL");
+    throw std::runtime_error(report_name + ": no row " + block + "/" + variant + " with an RTL");
   };
   // A block measured per operating point (relief: per view angle and layer count): the preferred
   // variant if measured, else the block's first row with an RTL (its cells are the same).
   auto pick = [&](const std::string& block, const std::string& prefer) -> const TRow* {
     const auto v = rows_of(block);
-    if (v.empty()) throw std::runtime_error(opt.report + ": no row of " + block + " with an RTL");
+    if (v.empty()) throw std::runtime_error(report_name + ": no row of " + block + " with an RTL");
     for (const TRow* r : v)
       if (r->variant == prefer) return r;
     return v.front();
@@ -408,7 +424,7 @@ int run(const Options& opt) {
       if (r->scheme == scheme) return static_cast<int>(std::lround(std::log2(std::stod(r->variant.substr(3)))));
     return 0;
   };
-  const std::string origin = "`texunit plan " + opt.scene + "` from " + opt.report;
+  const std::string origin = "`texunit plan " + opt.scene + "` from " + report_name;
   const Config planned{has_tri, has_ewa, uses("bilinear"), uses("trilinear"), false, relief, pom, iterative, max_layers, weight_bit(weights),
                        log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1};
   // The full unit: everything in, relief up to the scene format's 256 layers.
@@ -458,7 +474,7 @@ int run(const Options& opt) {
 
   const size_t px = bil.pixels.size();
   json out = {{"scene", s.source},
-              {"report_table", opt.report},
+              {"report_table", report_name},
               {"covered_pixels", px},
               {"footprint", {{"p99_lod", q_lod}, {"p99_anisotropy", q_aniso}, {"lod_histogram", hist_lod},
                              {"anisotropy_histogram", hist_aniso}}},
@@ -479,13 +495,16 @@ int run(const Options& opt) {
               {"scene_cycles", {{"specialised", spec_cycles}, {"full", full_cycles}, {"full_as_authored", authored_cycles},
                                 {"model", "ewa::stream_cycles on the C-model render (texture path): equal to the RTL"}}},
               {"area_note", "cells are the sum of the blocks' Yosys cells (each block synthesised alone)"}};
-  // Everything is decided before anything is written.
+  // Everything is decided before anything is written, and every file is written or none.
+  cli::Outputs outs;
   for (const auto& [path, cfg, what] : {std::tuple{opt.out_sv, planned, "specialised"}, {opt.out_full_sv, everything, "full"}}) {
     if (path.empty()) continue;
-    std::ofstream(path + ".tmp") << package(cfg, origin + " (" + what + " unit)");
-    fs::rename(path + ".tmp", path);
-    std::cerr << "wrote " << path << "\n";
+    if (!(std::ofstream(outs.stage(path)) << package(cfg, origin + " (" + what + " unit)")))
+      throw std::runtime_error(path + ": cannot write the file");
   }
+  outs.commit();
+  for (const auto& path : {opt.out_sv, opt.out_full_sv})
+    if (!path.empty()) std::cerr << "wrote " << path << "\n";
   if (opt.json) {
     std::cout << out.dump(2) << "\n";
     return 0;

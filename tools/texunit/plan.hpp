@@ -12,7 +12,9 @@ namespace tu::plan {
 
 struct Options {
   std::string scene;                             // file, or "default"
-  std::string report = "docs/report/report.json";  // measured table (`scripts/report.sh`)
+  // Measured table (`scripts/report.sh`); empty: the copy of docs/report/report.json built into
+  // the binary (so that plan works from any directory).
+  std::string report;
   std::string out_sv;                            // SystemVerilog package; empty: none
   std::string out_full_sv;                       // the same for the full unit (area comparison)
   bool json = false;

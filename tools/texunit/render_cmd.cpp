@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <unistd.h>
 
+#include "output.hpp"
 #include "texture_unit_rtl.hpp"
 #include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
@@ -51,9 +53,14 @@ int run_render(const RenderArgs& a) {
   if (a.weights == "formula") w = scene::WeightSource::Formula;
   if (a.weights == "table1d") w = scene::WeightSource::Table1d;
   if (a.weights == "table2d") w = scene::WeightSource::Table2d;
-  // Everything is computed before any file is written: a failure leaves no partial output.
+  // Every output is checked before the render and written only when all succeed (Outputs).
+  Outputs outs;
+  outs.make_dir(a.out_dir);
+  const std::string png = (std::filesystem::path(a.out_dir) / (a.engine + ".png")).string();
+  const std::string png_tmp = outs.stage(png);
+  const std::string dump_tmp = a.dump.empty() ? "" : outs.stage(a.dump);
   render::CmodelOptions opt;
-  opt.progress = true;
+  opt.progress = isatty(STDERR_FILENO);  // a bar on a terminal; none in a log
   opt.weights = w;
   opt.relief = !a.no_relief;
   opt.threads = a.threads;
@@ -86,19 +93,15 @@ int run_render(const RenderArgs& a) {
   } else {
     frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt) : render::render_ref(s, f);
   }
-  std::filesystem::create_directories(a.out_dir);
-  const std::string png = (std::filesystem::path(a.out_dir) / (a.engine + ".png")).string();
-  img::write_png_rgba(png, frame.image);
+  img::write_png_rgba(png_tmp, frame.image);
+  const auto layers = render::layers_image(s, frame);
+  const std::string lp = (std::filesystem::path(a.out_dir) / "layers.png").string();
+  if (layers) img::write_png_gray(outs.stage(lp), *layers);
+  if (!a.dump.empty()) render::write_dump_csv(dump_tmp, frame);
+  outs.commit();
   std::cerr << "wrote " << png << " (" << frame.pixels.size() << " covered pixels)\n";
-  if (const auto layers = render::layers_image(s, frame)) {
-    const std::string lp = (std::filesystem::path(a.out_dir) / "layers.png").string();
-    img::write_png_gray(lp, *layers);
-    std::cerr << "wrote " << lp << " (adaptive relief: N per pixel, (N - 4) / (Nmax - 4) as grey)\n";
-  }
-  if (!a.dump.empty()) {
-    render::write_dump_csv(a.dump, frame);
-    std::cerr << "wrote " << a.dump << "\n";
-  }
+  if (layers) std::cerr << "wrote " << lp << " (adaptive relief: N per pixel, (N - 4) / (Nmax - 4) as grey)\n";
+  if (!a.dump.empty()) std::cerr << "wrote " << a.dump << "\n";
   return ok ? 0 : 1;
 }
 

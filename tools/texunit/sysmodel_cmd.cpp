@@ -7,6 +7,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "cli_checks.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "texunit/formats.hpp"
 #include "texunit/render.hpp"
@@ -29,13 +30,9 @@ CLI::App* add_sysmodel(CLI::App& app, SysmodelArgs& a) {
   c->add_option("--fifo-depth", a.fifo_depth, "pixels buffered between B2 and the filter")
       ->check(CLI::Range(1, 1024));
   c->add_option("--cord-unroll", a.cord_unroll, "EWA set-up: CORDIC iterations per clock (divides EwaCordIter)")
-      ->check(CLI::Range(1, tu::fmt::kEwaCordIter) & CLI::Validator([](std::string& v) {
-        return tu::fmt::kEwaCordIter % std::stoi(v) ? std::string("must divide EwaCordIter") : std::string();
-      }, "DIVISOR"));
+      ->check(divisor_of(tu::fmt::kEwaCordIter, "EwaCordIter"));
   c->add_option("--sqrt-step", a.sqrt_step, "EWA set-up: square-root bits per clock (divides the root width)")
-      ->check(CLI::Range(1, tu::ewa::EngineParams{}.root_w) & CLI::Validator([](std::string& v) {
-        return tu::ewa::EngineParams{}.root_w % std::stoi(v) ? std::string("must divide the root width") : std::string();
-      }, "DIVISOR"));
+      ->check(divisor_of(tu::ewa::EngineParams{}.root_w, "the root width"));
   c->add_option("--engine-compare", a.compare,
                  "also render the scene through the RTL (Verilator) in this process: both cycle totals, ratios")
       ->check(CLI::IsMember({"rtl"}));

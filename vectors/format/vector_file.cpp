@@ -6,7 +6,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "texunit/text.hpp"
+
 namespace tu::vec {
+
+FormatError::FormatError(const std::string& what) : std::runtime_error(printable(what)) {}
 
 namespace {
 const char* role_name(Role r) { return r == Role::In ? "in" : r == Role::Out ? "out" : "ref"; }
@@ -108,6 +112,9 @@ VectorFile parse(const std::string& text, const std::string& name) {
       } else if (key == "seed") {
         try {
           size_t used = 0;
+          // Digits only: std::stoull would wrap a leading '-' to 2^64 - n.
+          if (val.empty() || val.find_first_not_of("0123456789") != std::string::npos)
+            throw std::invalid_argument("");
           v.seed = std::stoull(val, &used);
           if (used != val.size()) throw std::invalid_argument("");
         } catch (const std::exception&) {
@@ -189,6 +196,11 @@ VectorFile read(const std::string& path) {
 
 std::string serialise(const VectorFile& v) {
   std::ostringstream os;
+  serialise(v, os);
+  return os.str();
+}
+
+void serialise(const VectorFile& v, std::ostream& os) {
   os << "# texunit-vectors 1\n# block: " << v.block << "\n# set: " << v.set
      << "\n# seed: " << v.seed << "\n# fields:";
   for (const auto& f : v.fields) os << ' ' << f.name << ':' << role_name(f.role) << ':' << f.fmt.str();
@@ -203,7 +215,6 @@ std::string serialise(const VectorFile& v) {
     }
     os << '\n';
   }
-  return os.str();
 }
 
 void write(const VectorFile& v, const std::string& path) {
@@ -211,7 +222,7 @@ void write(const VectorFile& v, const std::string& path) {
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw FormatError(path + ":0: cannot write file");
-    out << serialise(v);
+    serialise(v, out);  // streamed: no second copy of a large file in memory
     if (!out) {
       std::filesystem::remove(tmp);
       throw FormatError(path + ":0: write failed");

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <iosfwd>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -48,14 +49,16 @@ struct VectorFile {
   int index_of(const std::string& name) const;  // -1 when absent
 };
 
-// A malformed file: the message is "FILE:LINE: reason".
+// A malformed file: the message is "FILE:LINE: reason" (control bytes quoted from the file
+// escaped, tu::printable).
 struct FormatError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit FormatError(const std::string& what);
 };
 
 VectorFile read(const std::string& path);                       // throws FormatError
 VectorFile parse(const std::string& text, const std::string& name);  // same, from memory
 std::string serialise(const VectorFile& v);
+void serialise(const VectorFile& v, std::ostream& os);
 // Writes atomically (temporary file + rename): a failed run leaves no partial output.
 void write(const VectorFile& v, const std::string& path);
 

@@ -18,6 +18,7 @@ Block make_persp_k4();    // persp_block.cpp
 Block make_persp_setup(); // persp_block.cpp
 Block make_ellipse();     // ellipse_block.cpp
 Block make_ewa();         // ewa_block.cpp
+std::vector<Block> make_brdf_blocks();  // brdf_block.cpp
 
 const std::vector<Block>& all() {
   static const std::vector<Block> blocks = [] {
@@ -33,6 +34,7 @@ const std::vector<Block>& all() {
     b.push_back(make_persp_setup());
     b.push_back(make_ellipse());
     b.push_back(make_ewa());
+    for (auto& m : make_brdf_blocks()) b.push_back(std::move(m));
     return b;
   }();
   return blocks;

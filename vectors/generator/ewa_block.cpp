@@ -138,8 +138,10 @@ Block make_ewa() {
   const std::string cnt = uf(fmt::kEwaCountW, 0);
   b.fields = {field("u", Role::In, uv),
               field("v", Role::In, uv),
-              field("ae", Role::In, uf(fmt::kEllCoefW, 0)),
-              field("ce", Role::In, uf(fmt::kEllCoefW, 0)),
+              // B2 block-normalises Ae', Ce' below 2^(EllCoefW-2) (ellipse_fx.cpp): the field
+              // holds exactly that range, on which ewa::fx's Ae' - Ce' cannot overflow.
+              field("ae", Role::In, uf(fmt::kEllCoefW - 2, 0)),
+              field("ce", Role::In, uf(fmt::kEllCoefW - 2, 0)),
               field("be", Role::In, sf(fmt::kEllCoefW, 0)),
               field("lmaj", Role::In, lg),
               field("lmin", Role::In, lg),

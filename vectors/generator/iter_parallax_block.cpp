@@ -14,7 +14,7 @@ namespace tu::blocks {
 namespace {
 using namespace pomvec;
 Row row(uint64_t u, uint64_t v, const pom::IpxDir& d) {
-  return {u & 0xffff, v & 0xffff, c32(d.su), c32(d.sv), c32(d.sh)};
+  return {u & 0xffff, v & 0xffff, c32(d.su), c32(d.sv), static_cast<uint64_t>(d.sh)};
 }
 
 std::vector<Row> golden_inputs() {
@@ -60,7 +60,11 @@ Block make_iter_parallax() {
   const auto F = field;  // block.hpp
   b.fields = {F("u", vec::Role::In, "u16.16"),      F("v", vec::Role::In, "u16.16"),
               F("su", vec::Role::In, "s32.16"),     F("sv", vec::Role::In, "s32.16"),
-              F("sh", vec::Role::In, "s32.16"),     F("tu", vec::Role::Out, "u16.16"),
+              // sh in [0, 2): what ipx_dir_seed / ipx_dir_normalised give (|Vz|, 1). Beyond 2 the
+              // depth iteration D += (h - D) sh diverges (|1 - sh| > 1) and d * su overflows
+              // 64 bits within the cap: the field is narrowed so that every code it holds is
+              // defined (the RTL port stays 32 bits).
+              F("sh", vec::Role::In, "u17.16"),     F("tu", vec::Role::Out, "u16.16"),
               F("tv", vec::Role::Out, "u16.16"),    F("iters", vec::Role::Out, "u5.0"),
               F("nonconv", vec::Role::Out, "u1.0"), F("ref_u", vec::Role::Ref, "f64"),
               F("ref_v", vec::Role::Ref, "f64")};
@@ -69,12 +73,12 @@ Block make_iter_parallax() {
   b.model = [](const Row& in) {
     const auto o = pom::iter_parallax(depth(), static_cast<int64_t>(in[0]),
                                       static_cast<int64_t>(in[1]),
-                                      pom::IpxDir{s32(in[2]), s32(in[3]), s32(in[4])});
+                                      pom::IpxDir{s32(in[2]), s32(in[3]), static_cast<int64_t>(in[4])});
     return Row{static_cast<uint64_t>(o.u), static_cast<uint64_t>(o.v), o.iters, o.nonconv ? 1u : 0u};
   };
   b.ref = [](const Row& in) {
     double u = in[0] / 65536.0, v = in[1] / 65536.0, D = 0;
-    const double su = s32(in[2]) / 65536.0, sv = s32(in[3]) / 65536.0, sh = s32(in[4]) / 65536.0;
+    const double su = s32(in[2]) / 65536.0, sv = s32(in[3]) / 65536.0, sh = double(in[4]) / 65536.0;
     for (int i = 0; i <= fmt::kIpxCap; ++i) {
       const double d = pom::tex_nearest_f(depth(), u, v) * 257 / 65536.0 - D;
       if (std::fabs(d) < fmt::kIpxEps / 65536.0 || i == fmt::kIpxCap) break;

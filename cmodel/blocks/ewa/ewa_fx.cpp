@@ -6,6 +6,7 @@
 
 #include "gauss/weight.hpp"
 #include "reciprocal/reciprocal.hpp"
+#include "texunit/convert.hpp"
 
 namespace tu::ewa::fx {
 
@@ -158,7 +159,8 @@ PixelSetup setup(const In& in, const tex::Texture& t, const Config& cfg) {
       level = top;
       su.flags |= kLodSat;
     }
-    // ae, ce < 2^62 (B2 block floating point): the difference fits int64.
+    // ae, ce < 2^62 (B2 block floating point; the ewa vector fields are u62): the difference
+    // fits int64.
     const int64_t d = static_cast<int64_t>(o.ae) - static_cast<int64_t>(o.ce);
     su.two_phi = vectoring(d, o.be);
     // phi = 2 phi / 2 is the minor axis; the major axis is a quarter turn away, modulo a half
@@ -309,7 +311,7 @@ Out filter(const In& in, const tex::Texture& t, const Config& cfg, bool direct, 
 In in_from_local(const ellipse::fx::Local& l, uint32_t laniso, uint32_t max_lod) {
   In in;
   const auto code = [](double x) {
-    return static_cast<int64_t>(std::floor(std::ldexp(x, fmt::kTexUvF) + 0.5));
+    return floor_i64(std::ldexp(x, fmt::kTexUvF) + 0.5);
   };
   in.u = code(l.u);
   in.v = code(l.v);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "texunit/convert.hpp"
 
 namespace tu::ewa {
 
@@ -22,7 +23,7 @@ Result filter_ref(const tex::Texture& t, double u, double v, const ellipse::Jaco
 Result filter_axes(const tex::Texture& t, double u, double v, double s1, double s2, double theta,
                    const Params& p) {
   const int max_level = t.num_levels() - 1;
-  int level = s2 > 1 ? std::clamp(static_cast<int>(std::floor(std::log2(s2))), 0, max_level) : 0;
+  int level = s2 > 1 ? static_cast<int>(std::clamp<int64_t>(floor_i64(std::log2(s2)), 0, max_level)) : 0;
   const double c = std::cos(theta), s = std::sin(theta);
   Result r;
   for (;; ++level) {
@@ -34,10 +35,15 @@ Result filter_axes(const tex::Texture& t, double u, double v, double s1, double 
     const double a = std::clamp(s1 * scale, 1.0, lim), b = std::clamp(s2 * scale, 1.0, lim);
     const double hu = std::sqrt(a * a * c * c + b * b * s * s);
     const double hv = std::sqrt(a * a * s * s + b * b * c * c);
-    const double cu = u * scale - 0.5, cv = v * scale - 0.5;  // texel i has its centre at i
-    const auto x0 = static_cast<int64_t>(std::ceil(cu - hu)), x1 = static_cast<int64_t>(std::floor(cu + hu));
-    const auto y0 = static_cast<int64_t>(std::ceil(cv - hv)), y1 = static_cast<int64_t>(std::floor(cv + hv));
-    const int64_t box = (x1 - x0 + 1) * (y1 - y0 + 1);
+    // Texel i has its centre at i. Centres beyond 2^62 texels (never in a validated scene) are
+    // clamped so that the walk's int64 indices below cannot overflow.
+    const double cu = std::clamp(u * scale - 0.5, -0x1p62, 0x1p62);
+    const double cv = std::clamp(v * scale - 0.5, -0x1p62, 0x1p62);
+    // Saturating conversions: u, v beyond int64 (or NaN) give a box the cap below rejects.
+    const int64_t x0 = ceil_i64(cu - hu), x1 = floor_i64(cu + hu);
+    const int64_t y0 = ceil_i64(cv - hv), y1 = floor_i64(cv + hv);
+    // hu, hv <= the level's side (a, b clamped to it): box fits in double without overflow.
+    const double box = (double(x1) - double(x0) + 1) * (double(y1) - double(y0) + 1);
     if (box > p.max_texels && level < max_level) {
       r.capped = true;
       continue;

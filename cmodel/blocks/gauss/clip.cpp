@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include "texunit/convert.hpp"
 
 namespace tu::clip {
 
@@ -25,7 +26,7 @@ Variant horner(std::string name, std::string origin, std::vector<int64_t> c,
   if (v.printed.empty()) v.printed = vals(v.c);
   return v;
 }
-int64_t a_code_of(double a) { return std::llround(std::ldexp(a, fmt::kClipInF)); }
+int64_t a_code_of(double a) { return round_i64(std::ldexp(a, fmt::kClipInF)); }
 
 std::vector<Variant> build() {
   std::vector<Variant> vs;

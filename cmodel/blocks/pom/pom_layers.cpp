@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include "texunit/convert.hpp"
 
 namespace tu::pom {
 
@@ -58,7 +59,7 @@ uint32_t layers_ref(double a, double c, uint32_t nmin, uint32_t nmax, double* ex
   const double f = std::pow(1.0 - a, 0.8);
   const double n = nmin + f * ((nmax / 2.0 - nmin) + (nmax / 2.0) * c);
   if (exact) *exact = n;
-  return clamp_n(static_cast<int64_t>(std::floor(n)), nmin, nmax);
+  return clamp_n(floor_i64(n), nmin, nmax);
 }
 
 }  // namespace tu::pom

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "reciprocal/reciprocal.hpp"
+#include "texunit/convert.hpp"
 
 namespace tu::pom {
 
@@ -35,7 +36,7 @@ uint8_t tex_nearest(const img::Gray8& d, int64_t u, int64_t v) {
 
 uint8_t tex_nearest_f(const img::Gray8& d, double u, double v) {
   auto wrap = [](double t, int n) {
-    const int64_t i = static_cast<int64_t>(std::floor(t * n));
+    const int64_t i = floor_i64(t * n);
     return static_cast<int>(((i % n) + n) % n);
   };
   return d.at(wrap(u, d.width), wrap(v, d.height));

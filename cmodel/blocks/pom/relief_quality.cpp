@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <stdexcept>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
@@ -89,12 +91,27 @@ double albedo(double u, double v) {
   return std::round(127.5 + 127.0 * std::sin(2 * M_PI * 8 * u) * std::cos(2 * M_PI * 8 * v));
 }
 
+img::Gray8 depth_from_height(const std::string& path) {
+  img::Gray8 h = img::read_png_channel0(path);
+  if (h.width != h.height || h.width < 16 || h.width > kMaxHeightSide || (h.width & (h.width - 1)))
+    throw std::invalid_argument(path + ": a height map for relief-quality is square, a power of two from 16 to " +
+                                std::to_string(kMaxHeightSide) + " texels per side (this one is " +
+                                std::to_string(h.width) + "x" + std::to_string(h.height) + ")");
+  for (auto& x : h.px) x = static_cast<uint8_t>(255 - x);  // height 255 = top -> depth 0
+  return h;
+}
+
 std::vector<QualityRow> quality(const QualityParams& p) {
   std::vector<QualityRow> rows;
-  const int G = p.side;
   const double uvs = std::ldexp(1.0, -fmt::kPomUvF);
-  struct M { const char* name; img::Gray8 d; };
-  const M maps[3] = {{"smooth", map_smooth(G)}, {"bricks", map_bricks(G)}, {"noisy", map_noisy(G)}};
+  struct M { std::string name; img::Gray8 d; };
+  std::vector<M> maps;
+  if (!p.height_png.empty()) {
+    maps.push_back({std::filesystem::path(p.height_png).stem().string(), depth_from_height(p.height_png)});
+  } else {
+    maps = {{"smooth", map_smooth(p.side)}, {"bricks", map_bricks(p.side)}, {"noisy", map_noisy(p.side)}};
+  }
+  const int G = maps[0].d.width;
   for (const auto& mp : maps) {
     const img::Gray8 cmap = complexity::complexity_map(mp.d);
     for (double ang : p.angles) {
@@ -157,7 +174,7 @@ std::vector<QualityRow> quality(const QualityParams& p) {
       }
       if (!p.debug_dir.empty()) {
         char name[256];
-        std::snprintf(name, sizeof name, "%s/layers_%s_%02d.png", p.debug_dir.c_str(), mp.name, int(ang));
+        std::snprintf(name, sizeof name, "%s/layers_%s_%02d.png", p.debug_dir.c_str(), mp.name.c_str(), int(ang));
         img::write_png_gray(name, dbg);
       }
     }

@@ -23,7 +23,14 @@ struct QualityParams {
   double azimuth = 30;   // degrees
   std::vector<double> angles = {0, 45, 60, 80, 85};
   std::string debug_dir; // if set: layer-count debug PNGs (N per pixel) are written here
+  // If set: this height map (first channel, 255 = top; square, power of two, 16..kMaxHeightSide)
+  // instead of the three procedural maps; its side is the texture and image side.
+  std::string height_png;
 };
+inline constexpr int kMaxHeightSide = 512;
+// A height map PNG as a depth map (depth = 255 - height); throws std::invalid_argument naming the
+// file when it is not square or not a power of two in [16, kMaxHeightSide].
+img::Gray8 depth_from_height(const std::string& path);
 
 struct QualityRow {
   std::string map, method;

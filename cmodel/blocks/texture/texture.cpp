@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include "texunit/convert.hpp"
 
 namespace tu::tex {
 
@@ -142,7 +143,7 @@ RgbaF bilinear_ref(const Texture& t, int level, double u, double v) {
   const double su = std::ldexp(u, -level) - 0.5, sv = std::ldexp(v, -level) - 0.5;
   const double fx0 = std::floor(su), fy0 = std::floor(sv);
   const double fx = su - fx0, fy = sv - fy0;
-  const auto x0 = static_cast<int64_t>(fx0), y0 = static_cast<int64_t>(fy0);
+  const int64_t x0 = sat_cast<int64_t>(fx0), y0 = sat_cast<int64_t>(fy0);
   const Rgba8 c00 = t.fetch(level, x0, y0), c10 = t.fetch(level, x0 + 1, y0);
   const Rgba8 c01 = t.fetch(level, x0, y0 + 1), c11 = t.fetch(level, x0 + 1, y0 + 1);
   double o[4];
@@ -155,7 +156,7 @@ RgbaF bilinear_ref(const Texture& t, int level, double u, double v) {
 RgbaF trilinear_ref(const Texture& t, double lod, double u, double v) {
   const int max_level = t.num_levels() - 1;
   lod = std::max(lod, 0.0);
-  const int l = static_cast<int>(std::floor(lod));
+  const int l = static_cast<int>(std::min<int64_t>(floor_i64(lod), max_level));
   if (l >= max_level) return bilinear_ref(t, max_level, u, v);
   const double f = lod - l;
   const RgbaF a = bilinear_ref(t, l, u, v), b = bilinear_ref(t, l + 1, u, v);

@@ -136,7 +136,36 @@
   X(EwaCountW, 17, "texel counters (box, inside) and the max_texels cap: unsigned integers") \
   X(EwaWsumW, 33, "weight sum: unsigned, GaussSqF fraction bits (exact)")                      \
   X(EwaAccW, 41, "per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)")       \
-  X(EwaNrmW, 23, "weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1")
+  X(EwaNrmW, 23, "weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1") \
+  /* BRDF specular models (docs/blocks/brdf.md) */                                           \
+  X(BrdfCW, 22, "c = N.H input: signed, BrdfCF fraction bits; clamped to [0, 1] (c > 1 flags)") \
+  X(BrdfCF, 20, "")                                                                            \
+  X(BrdfClW, 21, "clamped c and t = 1 - c (exact): unsigned, BrdfCF fraction bits")             \
+  X(BrdfNW, 10, "specular exponent n: unsigned integer, clamped to [1, BrdfNMax] (flag)")      \
+  X(BrdfNMax, 1000, "largest n")                                                               \
+  X(BrdfUW, 30, "u = n (1 - c) (exact): unsigned, BrdfCF fraction bits, [0, 1000]")            \
+  X(BrdfDW, 32, "divisors n(1-c) + k c (Schlick k=1, MSH 1.25, SCOS2 2) in [1, 1000]: unsigned")       \
+  X(BrdfDF, 22, "  BrdfDF fraction bits, exact (monotone in c); 1/D by the reciprocal core")            \
+  X(BrdfWF, 24, "internal values (squares, 1/D^2, base, G): BrdfWF fraction bits, half up")    \
+  X(BrdfKF, 24, "constants 1.6, 0.1, 0.786: unsigned, BrdfKF fraction bits, round to nearest") \
+  X(BrdfK16, 26843546, "1.6 * 2^BrdfKF rounded (F_MSH 2/1.25; 1.6 * 2^24 = 26843545.6)")      \
+  X(BrdfK01, 1677722, "0.1 * 2^BrdfKF rounded (F_dsh c + 0.1, F_SCOS2 0.1 u)")                \
+  X(BrdfK786, 13186892, "0.786 * 2^BrdfKF rounded (F_QR; 13186891.776)")                       \
+  X(BrdfBlinnF, 28, "Blinn square-and-multiply: unsigned, BrdfBlinnF fraction bits, half up") \
+  X(BrdfEF, 30, "F_dsh divisor E = 1.953125 w^2 + 1.5 (exact from w^2): BrdfEF fraction bits") \
+  X(BrdfEW, 51, "  E word length (E < 2^21)")                                                  \
+  X(BrdfOutW, 9, "specular F: unsigned, BrdfOutF fraction bits, half up (F_MSH peaks at 1.024)") \
+  X(BrdfOutF, 8, "")                                                                           \
+  X(BrdfCutQ, 9, "cut-off 2^-q: c below the model's c_cut(n) gives F = 0 (q = OutF+1: lossless)") \
+  X(BrdfSchlickLatency, 6, "front + D, reciprocal (4), c R scaled; II = 1")                    \
+  X(BrdfMshLatency, 7, "front + D + 1.6c, reciprocal (4), R^2, 1.6c R^2 scaled; II = 1")        \
+  X(BrdfMshSeqLatency, 9, "F_MSH on one shared multiplier (FSM) + the reciprocal core")        \
+  X(BrdfMshSeqIi, 9, "initiation interval of the shared-multiplier F_MSH")                     \
+  X(BrdfScos2Latency, 7, "front + D + numerator, reciprocal (4), base, base^2; II = 1")        \
+  X(BrdfSt16Latency, 5, "front + base, four squarings; II = 1")                                 \
+  X(BrdfQrLatency, 2, "front + 1 - 0.786u, c w; II = 1")                                       \
+  X(BrdfBlinnLatency, 11, "front, 10 square-and-multiply stages; II = 1")                      \
+  X(BrdfDshLatency, 11, "front, c^8 / (c+0.1)^8 squarings, w^2, E, two reciprocals; II = 1")
 
 namespace tu::fmt {
 #define TU_X_DECLARE(name, value, desc) inline constexpr int k##name = (value);

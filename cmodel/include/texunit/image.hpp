@@ -36,6 +36,12 @@ struct Rgba8Image {
   const Rgba8& at(int x, int y) const { return px[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)]; }
 };
 
+// Largest side read_png_* accept (checked from the file's header before decoding): the largest
+// texture a scene can declare (builtin size 4096); an RGBA image of that size takes 64 MB.
+inline constexpr int kMaxSide = 4096;
+
+// The readers take every format stb_image reads (PNG, JPEG, BMP, TGA, GIF (first frame), PSD,
+// HDR, PIC, PNM), despite their names.
 // Reads any 8/16-bit PNG as RGBA8 (grey and grey+alpha are expanded, missing alpha is 255).
 // Throws std::runtime_error naming the file on a missing or malformed file.
 Rgba8Image read_png_rgba(const std::string& path);

@@ -47,6 +47,12 @@ size_t covered(const std::vector<Cover>& cov);  // pixels with an object
 // Each object's material (resolved once per render instead of per pixel by name).
 std::vector<const scene::Material*> object_materials(const scene::Scene& s);
 
+// Set-up of an object's triangles (uv in level-0 texels of a tex_w x tex_h texture): the float
+// coefficients, and the same quantised to B1's formats. A persp::SetupError names the file and
+// the object as scene::object_where does, then the triangle.
+std::vector<persp::Coef9> setup_ref(const scene::Scene& s, size_t object, int tex_w, int tex_h);
+std::vector<persp::Unit::Coefs> setup_fx(const scene::Scene& s, size_t object, int tex_w, int tex_h);
+
 // Float reference render. `filter`, when given, overrides every material's filter.
 Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter = {});
 

@@ -16,7 +16,7 @@
 namespace tu::scene {
 
 struct SceneError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit SceneError(const std::string& what);  // control bytes quoted from the file escaped
 };
 
 enum class Filter { Nearest, Bilinear, Trilinear, Ewa };
@@ -69,11 +69,17 @@ struct Scene {
   std::map<std::string, Material> materials;
   std::vector<Object> objects;
   Budget budget;
+  std::vector<std::string> warnings;  // e.g. zero-area triangles dropped (load() prints them)
 };
+
+// How messages name an object: "FILE: object 'NAME' (/objects/I)"; every set-up error (float
+// reference, C model, RTL engine) starts with it.
+std::string object_where(const Scene& s, size_t index);
+std::string object_where(const Scene& s, const std::string& name, size_t index);
 
 // Parse and validate; `source` names the file in messages, `base_dir` resolves relative PNG paths.
 Scene parse(const std::string& json_text, const std::string& source, const std::string& base_dir);
-Scene load(const std::string& path);
+Scene load(const std::string& path);  // also prints the scene's warnings to stderr
 // The embedded default scene: a checkerboard ground plane receding to the horizon and a tilted
 // brick wall with relief (grazing angles and strong anisotropy on purpose).
 const std::string& default_scene_json();

@@ -1,0 +1,155 @@
+#!/usr/bin/env bash
+# Bad input through the CLI (docs/robustness.md): each case exits with the documented code, says
+# what is wrong (file and line or field), and leaves no partial output. One ctest case each.
+# Usage: bad_input_test.sh TEXUNIT SOURCE_DIR CASE
+set -euo pipefail
+tu=$1; src=$2; case=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$src"
+fail() { echo "FAIL ($case): $*" >&2; exit 1; }
+# expect RC PATTERN CMD...: runs CMD, checks its exit code and that stderr matches PATTERN.
+expect() {
+  local want=$1 pat=$2; shift 2
+  set +e
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  local rc=$?
+  set -e
+  [ "$rc" = "$want" ] || fail "exit $rc, expected $want: $* ($(head -c 400 "$tmp/err"))"
+  grep -q -- "$pat" "$tmp/err" || fail "message of '$*' does not match '$pat': $(head -c 400 "$tmp/err")"
+  ! grep -q "filesystem error" "$tmp/err" || fail "raw filesystem_error text: $(cat "$tmp/err")"
+}
+no_tmp_left() { ! find "$1" -name '*.tmp' | grep -q . || fail "leftover temporary files: $(find "$1" -name '*.tmp')"; }
+header='# texunit-vectors 1
+# block: reciprocal
+# set: golden
+# seed: 1
+# fields: q:in:s24.16 mant:out:u25.24 shift:out:u5.0 flag:out:u1.0 ref:ref:f64'
+case $case in
+  usage_exit_2)
+    # One exit code, 2, for every usage error (CLI11's own codes are 105, 106, ...).
+    expect 2 "dilate" "$tu" complexity in.png out.png --dilate abc
+    expect 2 "dilate" "$tu" complexity in.png out.png --dilate 4
+    expect 2 "out" "$tu" vectors --block reciprocal
+    expect 2 "vectors" "$tu" cosim --block reciprocal --vectors "$tmp/none.vec"
+    expect 2 "cord-unroll" "$tu" sysmodel default --cord-unroll 0
+    expect 2 "cord-unroll" "$tu" sysmodel default --cord-unroll abc
+    expect 2 "unknown" "$tu" render default --out "$tmp/o" --filter cubic
+    expect 2 "gamma" "$tu" complexity in.png out.png --gamma nan
+    "$tu" --help >/dev/null || fail "--help must succeed"
+    ;;
+  stall_nan)
+    "$tu" vectors --block reciprocal --set golden --out "$tmp/r.vec" 2>/dev/null
+    expect 2 "stall-prob" "$tu" cosim --block reciprocal --vectors "$tmp/r.vec" --stall-prob nan
+    expect 2 "stall-prob" "$tu" cosim --block reciprocal --vectors "$tmp/r.vec" --stall-prob inf
+    ;;
+  negative_seed)
+    expect 2 "seed" "$tu" vectors --block reciprocal --set random --count 5 --seed -3 --out "$tmp/r.vec"
+    [ ! -e "$tmp/r.vec" ] || fail "wrote a file"
+    expect 2 "seed" "$tu" cosim --block reciprocal --vectors vectors/golden/reciprocal.vec --seed -1
+    printf '%s\n' "$header" | sed 's/# seed: 1/# seed: -3/' >"$tmp/neg.vec"
+    echo "0000a3 0155555 05 0 3fd5555555555555" >>"$tmp/neg.vec"
+    expect 2 "neg.vec:4: seed '-3' is not an unsigned integer" "$tu" cosim --block reciprocal --vectors "$tmp/neg.vec"
+    ;;
+  count_bound)
+    expect 2 "count" "$tu" vectors --block reciprocal --set random --count 4294967296 --out "$tmp/r.vec"
+    expect 2 "count" "$tu" vectors --block reciprocal --set random --count 4194305 --out "$tmp/r.vec"
+    expect 2 "count" "$tu" demo --count 0
+    [ ! -e "$tmp/r.vec" ] || fail "wrote a file"
+    ;;
+  header_only_vectors)
+    printf '%s\n' "$header" >"$tmp/h.vec"
+    expect 2 "h.vec: no vectors" "$tu" cosim --block reciprocal --vectors "$tmp/h.vec"
+    ;;
+  fst_missing_dir)
+    expect 2 "$tmp/missing/w.fst: cannot write the file (directory '$tmp/missing' does not exist)" \
+      "$tu" cosim --block reciprocal --vectors vectors/golden/reciprocal.vec --fst "$tmp/missing/w.fst"
+    # A writable place gets the waveform, under its own name, and no temporary.
+    "$tu" cosim --block reciprocal --vectors vectors/golden/reciprocal.vec --fst "$tmp/w.fst" >/dev/null
+    [ -s "$tmp/w.fst" ] || fail "no waveform"
+    no_tmp_left "$tmp"
+    ;;
+  partial_output)
+    # --dump into a missing directory: nothing written (no ref.png), the --out directory not left.
+    expect 2 "$tmp/missing/d.csv: cannot write the file (directory '$tmp/missing' does not exist)" \
+      "$tu" render default --engine ref --out "$tmp/o" --dump "$tmp/missing/d.csv"
+    [ ! -e "$tmp/o" ] || fail "left $(ls -R "$tmp/o")"
+    # An unwritable layers.png (a directory of that name): no ref.png.
+    mkdir -p "$tmp/o2/layers.png"
+    expect 2 "layers.png: cannot write the file (it is a directory)" "$tu" render default --engine ref --out "$tmp/o2"
+    [ ! -e "$tmp/o2/ref.png" ] || fail "left ref.png"
+    # --out / --dump that is a directory: a worded error, no X.tmp.
+    mkdir -p "$tmp/o3/ref.png"
+    expect 2 "ref.png: cannot write the file (it is a directory)" "$tu" render default --engine ref --out "$tmp/o3"
+    expect 2 "cannot write the file (it is a directory)" "$tu" render default --engine ref --out "$tmp/o4" --dump "$tmp"
+    [ ! -e "$tmp/o4" ] || fail "left the --out directory"
+    expect 2 "cannot write the file (it is a directory)" "$tu" vectors --block reciprocal --set golden --out "$tmp"
+    # plan: a failing --out-full leaves no --out file.
+    expect 2 "does not exist" "$tu" plan default --out "$tmp/a.sv" --out-full "$tmp/missing/b.sv"
+    [ ! -e "$tmp/a.sv" ] || fail "plan left --out"
+    expect 2 "does not exist" "$tu" complexity docs/blocks/relief/layers_default.png "$tmp/missing/c.png"
+    no_tmp_left "$tmp"
+    ;;
+  scene_errors)
+    # A number outside double's range: file and line.
+    sed 's/"fovy_deg": 60/"fovy_deg": 1e400/' docs/scenes/ui_quad.json >"$tmp/big.json"
+    grep -q 1e400 "$tmp/big.json" || fail "edit"
+    expect 2 "big.json:[0-9]*: number 1e400 is outside double's range" "$tu" render "$tmp/big.json" --out "$tmp/o"
+    # Camera up along the view: rejected at load by both engines, naming the field.
+    python3 - "$tmp" <<'PY'
+import json, sys
+d = json.load(open("docs/scenes/ui_quad.json"))
+c = d["camera"]
+c["up"] = [l - p for l, p in zip(c["look_at"], c["position"])]
+json.dump(d, open(sys.argv[1] + "/up.json", "w"))
+d["camera"]["up"] = [0, 0, 0]
+json.dump(d, open(sys.argv[1] + "/up0.json", "w"))
+PY
+    for e in ref cmodel; do
+      expect 2 "up.json: /camera/up: is parallel to the view direction" "$tu" render "$tmp/up.json" --engine $e --out "$tmp/o"
+      expect 2 "up0.json: /camera/up: is the zero vector" "$tu" render "$tmp/up0.json" --engine $e --out "$tmp/o"
+    done
+    # Duplicate keys; a NUL byte (\u0000 in a key) shown escaped, the message not cut.
+    sed 's/"fovy_deg": 60/"fovy_deg": 60, "fovy_deg": 61/' docs/scenes/ui_quad.json >"$tmp/dup.json"
+    expect 2 "dup.json: /camera/fovy_deg: duplicate key" "$tu" render "$tmp/dup.json" --out "$tmp/o"
+    sed 's/"fovy_deg": 60/"fovy_deg": 60, "a\\u0000b": 1/' docs/scenes/ui_quad.json >"$tmp/nul.json"
+    expect 2 'nul.json: /camera/a\\x00b: unknown field' "$tu" render "$tmp/nul.json" --out "$tmp/o"
+    # Huge uv: a range error naming the field.
+    python3 - "$tmp" <<'PY'
+import json, sys
+d = json.load(open("docs/scenes/ui_quad.json"))
+d["objects"][0]["uv"][1] = [1e18, 0]
+json.dump(d, open(sys.argv[1] + "/uv.json", "w"))
+PY
+    expect 2 "uv.json: /objects/0/uv/1/0: value 1e+18 is out of range" "$tu" render "$tmp/uv.json" --out "$tmp/o"
+    [ ! -e "$tmp/o" ] || fail "left output"
+    ;;
+  degenerate_triangle)
+    # A zero-area triangle is dropped with a warning naming the object; the render goes on.
+    python3 - "$tmp" <<'PY'
+import json, sys
+d = json.load(open("docs/scenes/ui_quad.json"))
+o = dict(d["objects"][0]); o["name"] = "sliver"; o["type"] = "triangle"
+v = o["vertices"]; o["vertices"] = [v[0], v[1], v[1]]; o["uv"] = o["uv"][:3]
+d["objects"].append(o)
+json.dump(d, open(sys.argv[1] + "/deg.json", "w"))
+PY
+    for e in ref cmodel; do
+      expect 0 "warning: .*deg.json: object 'sliver' (/objects/1): triangle 'sliver' has zero area" \
+        "$tu" render "$tmp/deg.json" --engine $e --out "$tmp/o"
+      [ -s "$tmp/o/$e.png" ] || fail "no image"
+    done
+    ;;
+  plan_any_directory)
+    # The report table is built in: plan works from any directory.
+    (cd "$tmp" && "$tu" plan default --json >"$tmp/p.json") || fail "plan failed outside the repository"
+    python3 -c "import json; d=json.load(open('$tmp/p.json')); assert d['report_table'] == 'docs/report/report.json'" || fail "report_table"
+    expect 2 "x.json: cannot read the report table" "$tu" plan default --report "$tmp/x.json"
+    ;;
+  progress_not_in_logs)
+    "$tu" render docs/scenes/ui_quad.json --engine cmodel --out "$tmp/o" 2>"$tmp/err" >/dev/null
+    ! grep -q $'\r' "$tmp/err" || fail "progress bar in a log: $(cat -A "$tmp/err" | head -3)"
+    ;;
+  *) fail "unknown case" ;;
+esac
+echo "ok ($case)"
