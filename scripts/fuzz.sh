@@ -4,7 +4,7 @@
 # AddressSanitizer + UBSan (preset `fuzz`, clang). A finding is a crash, a sanitizer report or a
 # broken invariant; its input is saved as build/fuzz/artifacts/TARGET-*.
 #   scripts/fuzz.sh          CI: replay every committed corpus (fuzz/corpus/TARGET), then run each
-#                            target for a short time (parsers 10 s, blocks 3 s; nproc at a time)
+#                            target for a short time (parsers 10 s, blocks 5 s; nproc at a time)
 #   scripts/fuzz.sh --long   >= 10,000,000 runs per parser and 1,000,000 per block
 # New inputs go to build/fuzz/corpus/TARGET (not committed); run counts to build/fuzz/logs/.
 set -euo pipefail
@@ -12,11 +12,14 @@ cd "$(dirname "$0")/.."
 mode=${1:-ci}
 case $mode in ci|--long) ;; *) echo "usage: scripts/fuzz.sh [--long]" >&2; exit 2 ;; esac
 t0=$(date +%s)
-cmake --preset fuzz >/dev/null
+# ccache, where installed, makes a rebuild of an unchanged tree cheap (the build is most of the cost).
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake --preset fuzz "${launcher[@]}" >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" --target fuzz_all
 bin=build/fuzz/fuzz
 mkdir -p build/fuzz/logs build/fuzz/artifacts
-targets=$(cd $bin && ls fuzz_scene fuzz_vectors fuzz_block_*)
+targets="fuzz_scene fuzz_vectors $(cd $bin && ls -d fuzz_block_*)"  # parsers first
 run_one() {
   local t=$1 mode=$2 bin=build/fuzz/fuzz
   local corpus=fuzz/corpus/${t#fuzz_block_}
@@ -28,7 +31,7 @@ run_one() {
   if [ "$mode" = --long ]; then
     case $t in fuzz_scene|fuzz_vectors) limit=-runs=10000000 ;; *) limit=-runs=1000000 ;; esac
   else
-    case $t in fuzz_scene|fuzz_vectors) limit=-max_total_time=10 ;; *) limit=-max_total_time=3 ;; esac
+    case $t in fuzz_scene|fuzz_vectors) limit=-max_total_time=10 ;; *) limit=-max_total_time=5 ;; esac
   fi
   # -runs=0: replay the committed corpus (every input must pass), then fuzz from it.
   if ! "$bin/$t" -runs=0 "$corpus" >"build/fuzz/logs/$t.replay.log" 2>&1; then

@@ -7,6 +7,7 @@
 #        --netlist: simulate a gate-level netlist (osu018 cells, scripts/stdcell_flow.sh) instead of
 #        the RTL. Prints the testbench's PASS line and "items/s"; exit 1 on a mismatch or error.
 #        TU_TEXUNIT=path/to/texunit (for `texunit rtl-files`; default build/default/...)
+#        TU_ICARUS_PLUSARGS=+progress: a testbench line every 1000 cycles
 set -euo pipefail
 cd "$(dirname "$0")/.."
 block=${1:?usage: icarus_cosim.sh BLOCK VECTORS.vec [--netlist NET.v] [--stall P] [--seed N]}
@@ -65,10 +66,10 @@ else
   tu=${TU_TEXUNIT:-build/default/tools/texunit/texunit}
   mapfile -t design < <("$tu" rtl-files "$top" --root .)
 fi
-iverilog -g2012 -o "$dir/sim.vvp" -s tu_vec_top testbench/icarus/tu_vec_tb.sv "$dir/tu_vec_dut.sv" \
+iverilog -g2012 -Irtl/common -Irtl/generated -o "$dir/sim.vvp" -s tu_vec_top testbench/icarus/tu_vec_tb.sv "$dir/tu_vec_dut.sv" \
   "${design[@]}" 2>"$dir/err" || { cat "$dir/err" >&2; echo "icarus_cosim.sh: iverilog failed on $top" >&2; exit 2; }
 t0=$(date +%s.%N)
-vvp -n "$dir/sim.vvp" "+vectors=$vec" "+stall=$stall" "+seed=$seed" >"$dir/out" 2>&1 || true
+vvp -n "$dir/sim.vvp" "+vectors=$vec" "+stall=$stall" "+seed=$seed" ${TU_ICARUS_PLUSARGS:-} >"$dir/out" 2>&1 || true
 t1=$(date +%s.%N)
 cat "$dir/out"
 grep -q '^tu_vec_tb: PASS' "$dir/out" || exit 1

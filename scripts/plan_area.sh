@@ -22,6 +22,7 @@ dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 "$tu" plan "$scene" --out "$dir/plan.sv" --out-full "$dir/full.sv" >/dev/null 2>"$dir/err" || { cat "$dir/err" >&2; exit 2; }
 files=$("$tu" rtl-files "$top" --root . | tr '\n' ' ')
+inc=$("$tu" rtl-files --list include-dirs --root . | sed 's/^/-I/' | tr '\n' ' ')
 top_file=$(grep -lE "^\s*module\s+$top\b" $files)
 declared=$(grep -oE "^\s*parameter\s+(int\s+unsigned\s+|int\s+|bit\s+)?[A-Z][A-Za-z0-9]*" "$top_file" | awk '{print $NF}')
 
@@ -33,7 +34,7 @@ cells() {
   while read -r name value; do
     if grep -qx "$name" <<<"$declared"; then chp+="chparam -set $name $value $top; "; set+="$name=$value "; fi
   done < <(params "$1")
-  yosys -q -l "$dir/log" -p "read_verilog -sv $files; $chp hierarchy -top $top; proc; flatten; opt; $flow; tee -o $dir/stat stat" >/dev/null 2>"$dir/err" ||
+  yosys -q -l "$dir/log" -p "read_verilog -sv $inc $files; $chp hierarchy -top $top; proc; flatten; opt; $flow; tee -o $dir/stat stat" >/dev/null 2>"$dir/err" ||
     { cat "$dir/err" >&2; exit 2; }
   echo "$(grep -E 'Number of cells' "$dir/stat" | tail -1 | awk '{print $NF}') ${set:-(no parameter of $top set)}"
 }

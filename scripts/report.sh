@@ -2,7 +2,8 @@
 # Regenerates docs/report.md, docs/report/report.json and the per-block Pareto plots
 # (docs/report/*.png) with one command: every block and variant, error / cycles / area / speed.
 # Yosys results are cached in docs/report/yosys_cache.json by the RTL files' hash, so a re-run
-# only synthesises the tops whose RTL changed.
+# only synthesises the tops whose RTL changed. Standard-cell area / timing come from
+# docs/report/stdcell_cache.json (read only; scripts/stdcell.sh fills it).
 # Usage: scripts/report.sh [COUNT]     (random vectors per registry block; default 200000)
 #        TU_TEXUNIT=path/to/texunit to use another build
 set -euo pipefail
@@ -12,6 +13,7 @@ tu=${TU_TEXUNIT:-build/default/tools/texunit/texunit}
 [ -n "${TU_TEXUNIT:-}" ] || [ -x "$tu" ] || { cmake --preset default >/dev/null && cmake --build --preset default --target texunit; }
 start=$(date +%s)
 "$tu" report --count "$count" --root . --yosys-cache docs/report/yosys_cache.json \
+  --stdcell-cache docs/report/stdcell_cache.json \
   --json docs/report/report.json --plots docs/report --markdown docs/report.md
 rm -f docs/report/*.dat docs/report/*.gp  # plot inputs; the PNGs and the JSON are the result
 echo "scripts/report.sh: $(( $(date +%s) - start )) s" >&2

@@ -1,25 +1,27 @@
 #!/usr/bin/env bash
 # Every RTL file parses in the three tools the project supports (docs/architecture.md, "RTL
-# tools"): Verilator (`--lint-only -Wall` over the whole tree, one run), Icarus Verilog 11
-# (`iverilog -g2012` elaboration of every module as top) and Yosys 0.23 (`read_verilog -sv` +
-# `hierarchy -top` of every module but the big tops). A tool that is not installed is skipped
-# with a message; any error (or, for Icarus, any warning other than its "sorry" notes on
-# always_comb sensitivity and unique case) fails.
+# manifest and tools"), over the lists of rtl/manifest.json (`texunit rtl-files`):
+#   Verilator  `--lint-only -Wall --assert` over the whole tree, one run (the lint test);
+#   Icarus 11  `iverilog -g2012` elaboration of every top, on its block's sources;
+#   Yosys 0.23 `read_verilog -sv` + `hierarchy -check -top` of every top.
+# A tool that is not installed is skipped with a message; any error (for Icarus also any warning
+# other than its "sorry" notes on always_comb sensitivity and unique case) fails.
 # Usage: scripts/rtl_tools.sh [verilator|iverilog|yosys]...   (default: all three)
+#        TU_TEXUNIT=path/to/texunit to use another build (default build/default)
 set -uo pipefail
 cd "$(dirname "$0")/.."
+tu=${TU_TEXUNIT:-build/default/tools/texunit/texunit}
 tools=("$@")
 [ ${#tools[@]} -gt 0 ] || tools=(verilator iverilog yosys)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+list() { "$tu" rtl-files --root . "$@" || { echo "FAIL texunit rtl-files $*"; exit 1; }; }
 
-# Packages first, then every other file in sorted order.
-mapfile -t files < <(ls rtl/0_pkg/*_pkg.sv; find rtl -name '*.sv' ! -path 'rtl/0_pkg/*' | sort)
-mapfile -t tops < <(sed -nE 's/^\s*module\s+(\w+).*/\1/p' "${files[@]}")
-inc=(-Irtl/generated)
-# Yosys tops left out: minutes of elaboration each (the texture-unit tops and the EWA engine);
-# their sub-blocks are all checked.
-big='^(tu_texture_unit|tu_texture_unit_sim|tu_ewa|tu_ewa_sim)$'
+mapfile -t all < <(list --list all)
+mapfile -t tops < <(list --list tops)
+mapfile -t lint_only < <(list --list lint-only)
+inc=()
+for d in $(list --list include-dirs); do inc+=("-I$d"); done
 fail=0
 
 for tool in "${tools[@]}"; do
@@ -29,31 +31,30 @@ for tool in "${tools[@]}"; do
   fi
   case $tool in
     verilator)
-      if verilator --lint-only -Wall "${inc[@]}" rtl/0_pkg/tu_lint_waivers.sv "${files[@]}" >"$tmp/log" 2>&1; then
-        echo "PASS verilator --lint-only -Wall: ${#files[@]} files"
+      if verilator --lint-only -Wall --assert "${inc[@]}" "${lint_only[@]}" "${all[@]}" >"$tmp/log" 2>&1; then
+        echo "PASS verilator --lint-only -Wall --assert: ${#all[@]} files"
       else
-        cat "$tmp/log"; echo "FAIL verilator --lint-only -Wall"; fail=1
+        cat "$tmp/log"; echo "FAIL verilator --lint-only -Wall --assert"; fail=1
       fi ;;
     iverilog)
-      n=0 bad=0
+      bad=0
       for top in "${tops[@]}"; do
-        if ! iverilog -g2012 "${inc[@]}" -s "$top" -o "$tmp/a.vvp" "${files[@]}" >"$tmp/log" 2>&1 ||
+        mapfile -t src < <(list "$top")
+        if ! iverilog -g2012 "${inc[@]}" -s "$top" -o "$tmp/a.vvp" "${src[@]}" >"$tmp/log" 2>&1 ||
            grep -v -e 'sorry: constant selects in always_\* processes' -e 'sorry: Case unique/unique0' "$tmp/log" | grep -q .; then
           cat "$tmp/log"; echo "FAIL iverilog -g2012 -s $top"; bad=1
         fi
-        n=$((n + 1))
       done
-      if [ $bad = 0 ]; then echo "PASS iverilog -g2012: $n tops"; else fail=1; fi ;;
+      if [ $bad = 0 ]; then echo "PASS iverilog -g2012: ${#tops[@]} tops"; else fail=1; fi ;;
     yosys)
-      script="read_verilog -sv ${inc[*]} ${files[*]}; design -save all;"
-      n=0
+      script="" n=0
       for top in "${tops[@]}"; do
-        [[ $top =~ $big ]] && continue
-        script+=" design -load all; hierarchy -check -top $top;"
+        mapfile -t src < <(list "$top")
+        script+="design -reset; read_verilog -sv ${inc[*]} ${src[*]}; hierarchy -check -top $top; "
         n=$((n + 1))
       done
       if yosys -q -p "$script" >"$tmp/log" 2>&1; then
-        echo "PASS yosys read_verilog -sv + hierarchy -top: $n tops"
+        echo "PASS yosys read_verilog -sv + hierarchy -check -top: $n tops"
       else
         cat "$tmp/log"; echo "FAIL yosys"; fail=1
       fi ;;

@@ -3,7 +3,7 @@
 set -euo pipefail
 PKGS=(cmake ninja-build g++ python3 pkg-config zlib1g-dev verilator libsystemc-dev libglm-dev
       googletest libgtest-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libstb-dev
-      yosys sollya gnuplot clang libfuzzer-14-dev)
+      yosys sollya gnuplot clang libfuzzer-14-dev opensta qflow-tech-osu018 iverilog)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

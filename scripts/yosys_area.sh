@@ -5,9 +5,11 @@
 set -euo pipefail
 top=${1:?usage: yosys_area.sh TOP FILES...}; shift
 command -v yosys >/dev/null || { echo '{"error": "yosys not installed"}'; exit 3; }
+rtl=$(cd "$(dirname "$0")/../rtl" && pwd)
+inc="-I$rtl/common -I$rtl/generated"  # `include files (rtl/manifest.json include_dirs)
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-yosys -q -l "$log" -p "read_verilog -sv $*; hierarchy -top $top; proc; flatten; opt; wreduce; opt_clean; tee -o /dev/stdout stat; synth -flatten -top $top; tee -o /dev/stdout stat" >/dev/null
+yosys -q -l "$log" -p "read_verilog -sv $inc $*; hierarchy -top $top; proc; flatten; opt; wreduce; opt_clean; tee -o /dev/stdout stat; synth -flatten -top $top; tee -o /dev/stdout stat" >/dev/null
 python3 - "$log" "$top" <<'PY'
 import json, re, sys
 text = open(sys.argv[1]).read()

@@ -9,6 +9,7 @@
 #include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
 #include "pom/relief.hpp"
+#include "texture/trilinear_lod.hpp"
 #include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
 
@@ -42,6 +43,7 @@ void shift_relief_fx(const scene::Scene& s, const persp::RayCaster& rays, const 
   *v = r.v;
   rec->relief_n = static_cast<int>(r.n);
   rec->relief_steps = static_cast<int>(r.steps);
+  rec->relief_flags = r.flags;
 }
 }  // namespace
 
@@ -138,11 +140,11 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           rec.texels = 4;
           break;
         case scene::Filter::Trilinear: {
-          // B2's lod is lmin (log2 of the clamped minor axis) floored to EllLodF = TexLodF bits
-          // and clamped to [0, top]: the blend position between levels floor(lod) and + 1.
-          static_assert(fmt::kEllLodF == fmt::kTexLodF);
-          rec.lod = ellipse::fx::lod_value(in.b2);
-          rec.color = tex::trilinear(tx, in.b2.lod, in.u, in.v);
+          // The GL rule on B2's log2 rho: the blend position between levels floor(lod) and + 1.
+          const auto tl = tex::trilinear_lod(in.b2.lrho, tex::lod_params(m.lod_bias, m.min_lod, m.max_lod), top);
+          rec.lod = std::ldexp(double(tl.lod), -fmt::kTexLodF);
+          rec.tri_flags = tl.flags;
+          rec.color = tex::trilinear(tx, tl.lod, in.u, in.v);
           rec.texels = 8;
           break;
         }

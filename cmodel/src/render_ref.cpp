@@ -6,9 +6,12 @@
 #include <limits>
 #include <stdexcept>
 
+#include "ellipse/ellipse_fx.hpp"
+#include "ewa/ewa_fx.hpp"
 #include "ewa/ewa_ref.hpp"
 #include "pom/pom_layers.hpp"
 #include "pom/relief.hpp"
+#include "texture/trilinear_lod.hpp"
 #include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
 #include "texunit/convert.hpp"
@@ -142,7 +145,8 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
           rec.texels = 4;
           break;
         case scene::Filter::Trilinear:
-          rec.lod = foot.lod;
+          rec.lod = tex::trilinear_lod_ref(j.ux, j.vx, j.uy, j.vy, m.lod_bias, m.min_lod, m.max_lod,
+                                           tx.num_levels() - 1, &rec.tri_flags);
           rec.color = to8(tex::trilinear_ref(tx, rec.lod, u, v));
           rec.texels = 8;
           break;
@@ -190,17 +194,53 @@ img::Rgba8Image error_heatmap(const img::Rgba8Image& a, const img::Rgba8Image& b
   return out;
 }
 
+const std::vector<PixelFlag>& pixel_flags() {
+  using R = PixelRecord;
+  static const std::vector<PixelFlag> flags = {
+      {"b1_guard", &R::b2_flags, ellipse::fx::kHorizon},
+      {"b2_degenerate", &R::b2_flags, ellipse::fx::kDegenerate},
+      {"b2_aniso_clamp", &R::b2_flags, ellipse::fx::kAnisoClamp},
+      {"b2_lod_sat", &R::b2_flags, ellipse::fx::kLodSat},
+      {"b2_magnify", &R::b2_flags, ellipse::fx::kMagnify},
+      {"tri_magnify", &R::tri_flags, tex::kTriMagnify},
+      {"tri_lod_clamp", &R::tri_flags, tex::kTriLodClamp},
+      {"tri_lod_sat", &R::tri_flags, tex::kTriLodSat},
+      {"ewa_unit_disc", &R::ewa_flags, ewa::fx::kUnitDisc},
+      {"ewa_axis_clamp", &R::ewa_flags, ewa::fx::kAxisClamp},
+      {"ewa_lod_sat", &R::ewa_flags, ewa::fx::kLodSat},
+      {"ewa_texel_cap", &R::ewa_flags, ewa::fx::kCapped},
+      {"ewa_no_weight", &R::ewa_flags, ewa::fx::kNoWeight},
+      {"relief_vz_guard", &R::relief_flags, relief::kReliefVzGuard},
+      {"relief_nonconv", &R::relief_flags, relief::kReliefNonConv},
+      {"relief_back", &R::relief_flags, relief::kReliefBack},
+  };
+  return flags;
+}
+
+std::vector<size_t> flag_counts(const Frame& f) {
+  const auto& flags = pixel_flags();
+  std::vector<size_t> n(flags.size(), 0);
+  for (const auto& p : f.pixels)
+    for (size_t i = 0; i < flags.size(); ++i) n[i] += flags[i].on(p);
+  return n;
+}
+
 void write_dump_csv(const std::string& path, const Frame& f) {
   const std::string tmp = path + ".tmp";
+  const auto& flags = pixel_flags();
   {
     std::ofstream out(tmp, std::ios::trunc);
     if (!out) throw std::runtime_error(path + ": cannot write");
-    out << "x,y,u,v,lod,texels,r,g,b,a\n";
+    out << "x,y,u,v,lod,texels,r,g,b,a,relief_n,relief_steps";
+    for (const auto& fl : flags) out << ',' << fl.name;
+    out << '\n';
     char buf[160];
     for (const auto& p : f.pixels) {
-      std::snprintf(buf, sizeof buf, "%d,%d,%.6f,%.6f,%.4f,%d,%d,%d,%d,%d\n", p.x, p.y, p.u, p.v,
-                    p.lod, p.texels, p.color.r, p.color.g, p.color.b, p.color.a);
+      std::snprintf(buf, sizeof buf, "%d,%d,%.6f,%.6f,%.4f,%d,%d,%d,%d,%d,%d,%d", p.x, p.y, p.u, p.v,
+                    p.lod, p.texels, p.color.r, p.color.g, p.color.b, p.color.a, p.relief_n, p.relief_steps);
       out << buf;
+      for (const auto& fl : flags) out << (fl.on(p) ? ",1" : ",0");
+      out << '\n';
     }
     if (!out) {
       std::filesystem::remove(tmp);

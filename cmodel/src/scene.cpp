@@ -250,6 +250,10 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
   m.weights = w == "table1d" ? WeightSource::Table1d : w == "table2d" ? WeightSource::Table2d
                                                                       : WeightSource::Formula;
   m.max_aniso = n.num("max_aniso", 1, 64, 16.0);
+  m.lod_bias = n.num("lod_bias", -16, 16, 0.0);
+  m.min_lod = n.num("min_lod", 0, 12, 0.0);
+  m.max_lod = n.num("max_lod", 0, 12, 12.0);
+  if (m.min_lod > m.max_lod) n.fail_at("max_lod", "below min_lod");
   if (n.has("relief")) {
     Node r = n.obj("relief");
     Relief rel;

@@ -102,6 +102,8 @@ package tu_formats_pkg;
   localparam int EllLodW = 12;  // lod: unsigned, EllLodF fraction bits, floor, clamped to [0, max_lod]
   localparam int EllLodF = 8;
   localparam int EllMaxLodW = 4;  // max_lod (log2 of the texture size): unsigned integer
+  localparam int EllRhoW = 96;  // GL LOD sums Px' = nUx^2 + nVx^2, Py' = nUy^2 + nVy^2 (by screen axis): exact, unsigned, 2 EllNumF frac
+  localparam int TexLodBiasW = 14;  // trilinear lod bias: signed, TexLodF fraction bits (|bias| <= 16 levels)
   localparam int EllLatency = 5;  // analytic ellipse/LOD pipeline latency in cycles, II = 1
   localparam int EwaCordW = 24;  // CORDIC x, y datapath: signed; d = Ae'-Ce', b = Be' block-normalised to W-3 bits
   localparam int EwaCordIter = 16;  // CORDIC iterations (vectoring and rotation)

@@ -6,6 +6,9 @@
 //   S2: r = isqrt(d^2 + Be'^2), lam = s + r
 //   S3: log2(lam) -> 2 log2 major
 //   S4: f = det3 * R (R = 1/q mantissa from the core), log2|f| -> 2 log2 minor, clamp, LOD, flags
+// Trilinear's GL LOD (texture/trilinear_lod.hpp): Px' = nUx^2 + nVx^2, Py' = nUy^2 + nVy^2 from the
+// S0 products, log2 max(Px', Py') in S1 -> lrho (log2 rho); S4 adds the material's bias and clamps
+// to [min lod, max lod] and to the pyramid (tex::trilinear_lod) -> tlod, tflags.
 module tu_ellipse (
   input  logic                                   clk_i,
   input  logic                                   rst_ni,
@@ -20,6 +23,9 @@ module tu_ellipse (
   input  logic [tu_formats_pkg::EllDetExpW-1:0]  dexp_i,
   input  logic [tu_formats_pkg::EllAnisoW-1:0]   laniso_i,
   input  logic [tu_formats_pkg::EllMaxLodW-1:0]  maxlod_i,
+  input  logic [tu_formats_pkg::TexLodBiasW-1:0] lbias_i,   // trilinear: lod bias, min / max lod
+  input  logic [tu_formats_pkg::EllLodW-1:0]     lminlod_i,
+  input  logic [tu_formats_pkg::EllLodW-1:0]     lmaxlod_i,
   output logic                                   out_valid_o,
   input  logic                                   out_ready_i,
   output logic [tu_formats_pkg::EllCoefW-1:0]    ae_o,
@@ -31,7 +37,10 @@ module tu_ellipse (
   output logic [tu_formats_pkg::EllLogW-1:0]     lmaj_o,
   output logic [tu_formats_pkg::EllLogW-1:0]     lmin_o,
   output logic [tu_formats_pkg::EllLodW-1:0]     lod_o,
-  output logic [4:0]                             flags_o
+  output logic [4:0]                             flags_o,
+  output logic [tu_formats_pkg::EllLogW-1:0]     lrho_o,    // GL log2 rho (s18.10)
+  output logic [tu_formats_pkg::EllLodW-1:0]     tlod_o,    // trilinear lod (u12.8)
+  output logic [2:0]                             tflags_o   // tex::TriFlag
 );
   localparam int NW  = tu_formats_pkg::EllNumW;
   localparam int NF  = tu_formats_pkg::EllNumF;
@@ -51,6 +60,9 @@ module tu_ellipse (
   localparam logic [QW-1:0] GuardVal = QW'(1) << (tu_formats_pkg::PerspF - tu_formats_pkg::PerspGuardLog2);
   localparam logic signed [31:0] LogMax = 32'((1 << (LW - 1)) - 1);
   localparam logic signed [31:0] LogMin = -32'(1 << (LW - 1));
+  localparam int RhW = tu_formats_pkg::EllRhoW;
+  localparam int BW  = tu_formats_pkg::TexLodBiasW;
+  localparam int LDW = tu_formats_pkg::EllLodW;
 
   // ---------------- helpers ----------------
   // log2 fraction of a mantissa 1.(LMW-1): L1 truncating squarings.
@@ -106,6 +118,10 @@ module tu_ellipse (
     c0 = XW'(uxx) + XW'(uyy);
     b0 = -((XW'(uvx) + XW'(uvy)) <<< 1);
   end
+  // GL LOD sums by screen axis (exact: |n| < 2^47, so each sum < 2^95)
+  logic [RhW-1:0] px0, py0;
+  assign px0 = RhW'(uxx) + RhW'(pxx);
+  assign py0 = RhW'(uyy) + RhW'(pyy);
   logic [RW-1:0] r_core;  // 1/q mantissa, valid with stage 4
   tu_recip_core u_core (.clk_i, .en_i(en), .m_i(mq0), .r_o(r_core));
 
@@ -118,8 +134,20 @@ module tu_ellipse (
   logic [3:0]           ml_q [4];
   logic                 g_q [4];
   logic [5:0]           e_q [4];
+  logic [RhW-1:0]       pm_q1;
+  logic [BW-1:0]        lb_q [4];
+  logic [LDW-1:0]       ln_q [4], lx_q [4];
   always_ff @(posedge clk_i) begin
     if (en) begin
+      pm_q1  <= px0 > py0 ? px0 : py0;
+      lb_q[0] <= lbias_i;
+      ln_q[0] <= lminlod_i;
+      lx_q[0] <= lmaxlod_i;
+      for (int i = 1; i < 4; i++) begin
+        lb_q[i] <= lb_q[i-1];
+        ln_q[i] <= ln_q[i-1];
+        lx_q[i] <= lx_q[i-1];
+      end
       e_q1   <= e0;
       lqf_q1 <= log_frac(mq0);
       a_q1   <= a0;
@@ -159,6 +187,28 @@ module tu_ellipse (
     kout1 = (!sz1 && ms1 > 7'(CW - 3)) ? ms1 - 7'(CW - 3) : 7'd0;
     k1    = (!sz1 && ms1 > 7'(NrW - 1)) ? ms1 - 7'(NrW - 1) : 7'd0;
     lq1   = ((32'(e_q1) - 32'(tu_formats_pkg::PerspF)) <<< L1) + 32'(lqf_q1);
+  end
+  logic [6:0]         mr1;
+  logic [RhW-1:0]     pmn1;
+  logic signed [31:0] lp1, lr1;
+  always_comb begin
+    mr1 = '0;
+    for (int i = 0; i < RhW; i++) begin
+      if (pm_q1[i]) mr1 = 7'(i);
+    end
+    pmn1 = pm_q1 << (RhW - 1 - 32'(mr1));
+    // 2 log2 rho = log2 max(Px', Py') - 2 NumF - 4 log2 q (L1 fraction bits); halved, floored
+    lp1 = ((32'(mr1) - 32'(2 * NF)) <<< L1) + 32'(log_frac(pmn1[RhW-1 -: LMW]));
+    lp1 = lp1 - (lq1 <<< 2);
+    lr1 = (pm_q1 == '0) ? LogMin : sat_log(lp1 >>> 2);
+  end
+  logic signed [31:0] lr_q [3];
+  always_ff @(posedge clk_i) begin
+    if (en) begin
+      lr_q[0] <= lr1;
+      lr_q[1] <= lr_q[0];
+      lr_q[2] <= lr_q[1];
+    end
   end
   logic [CW-1:0]         ae_q2, be_q2, ce_q2;
   logic [5:0]            eexp_q2;
@@ -254,6 +304,10 @@ module tu_ellipse (
   logic                 fz4;
   logic signed [31:0]   off4, lf4, fexp4, lmaj4, cap4, lmin4, lod4, top4;
   logic [4:0]           flags4;
+  logic signed [31:0]   lam4, lmin4s, lmax4s;
+  logic [2:0]           tflags4;
+  assign lmin4s = $signed(32'(ln_q[3]));
+  assign lmax4s = $signed(32'(lx_q[3]));
   always_comb begin
     p4  = $signed(dm_q[3]) * $signed({1'b0, r_core});
     ap4 = p4[PW-1] ? PW'(-p4) : PW'(p4);
@@ -292,6 +346,19 @@ module tu_ellipse (
       flags4[3] = 1'b1;
       lod4 = top4;
     end
+    // tex::trilinear_lod: bias, [min, max] lod, magnification at lambda <= 0, pyramid clamp
+    tflags4 = '0;
+    lam4 = (lr_q[2] >>> (tu_formats_pkg::EllLogF - tu_formats_pkg::TexLodF)) + 32'($signed(lb_q[3]));
+    // the clamp flag: min lod > 0 raised lambda, or max lod lowered it (as the C model)
+    tflags4[1] = (lam4 < lmin4s && lmin4s > 0) || lam4 > lmax4s;
+    if (lam4 < lmin4s || lam4 > lmax4s) lam4 = (lam4 < lmin4s || lmin4s > lmax4s) ? lmin4s : lmax4s;
+    if (lam4 <= 0) begin
+      tflags4[0] = 1'b1;
+      lam4 = 0;
+    end else if (lam4 >= top4) begin
+      tflags4[2] = 1'b1;
+      lam4 = top4;
+    end
     if (sz_q4) begin  // point footprint
       flags4 = 5'b10010;
       lmaj4 = LogMin;
@@ -304,6 +371,7 @@ module tu_ellipse (
       if (g_q[3]) begin
         ae_o <= '0; be_o <= '0; ce_o <= '0; eexp_o <= '0; fm_o <= '0; fexp_o <= '0;
         lmaj_o <= '0; lmin_o <= '0; lod_o <= '0; flags_o <= 5'b00001;
+        lrho_o <= '0; tlod_o <= '0; tflags_o <= '0;
       end else begin
         ae_o    <= ae_q4;
         be_o    <= be_q4;
@@ -315,10 +383,13 @@ module tu_ellipse (
         lmin_o  <= LW'(lmin4);
         lod_o   <= tu_formats_pkg::EllLodW'(lod4);
         flags_o <= flags4;
+        lrho_o  <= LW'(lr_q[2]);
+        tlod_o  <= LDW'(lam4);
+        tflags_o <= tflags4;
       end
     end
   end
 
   logic unused;
-  assign unused = ^{stage_valid, qn0[QW-MW-1:0], apn4[PW-tu_formats_pkg::EllFmW-1:0]};
+  assign unused = ^{stage_valid, qn0[QW-MW-1:0], apn4[PW-tu_formats_pkg::EllFmW-1:0], pmn1[RhW-LMW-1:0]};
 endmodule

@@ -51,6 +51,10 @@ module tu_texture_unit #(
   input  logic [tu_formats_pkg::EllDetExpW-1:0] dexp_i,
   input  logic [tu_formats_pkg::EllAnisoW-1:0]  laniso_i,
   input  logic [tu_formats_pkg::EllMaxLodW-1:0] maxlod_i,
+  // material trilinear LOD rule: bias, min / max lod (TexLodF fraction bits)
+  input  logic [tu_formats_pkg::TexLodBiasW-1:0] lbias_i,
+  input  logic [tu_formats_pkg::EllLodW-1:0]    lminlod_i,
+  input  logic [tu_formats_pkg::EllLodW-1:0]    lmaxlod_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]   tbase_i,
   input  logic [3:0]                            tlw_i,
   input  logic [3:0]                            tlh_i,
@@ -106,7 +110,8 @@ module tu_texture_unit #(
   localparam int MatW  = AW + 4 + 4 + 1 + 2 + tu_formats_pkg::EwaCountW + 2;
   // per-triangle B2 fields
   localparam int TriW  = tu_formats_pkg::EllDetW + tu_formats_pkg::EllDetExpW +
-                                  tu_formats_pkg::EllAnisoW + tu_formats_pkg::EllMaxLodW;
+                         tu_formats_pkg::EllAnisoW + tu_formats_pkg::EllMaxLodW +
+                         tu_formats_pkg::TexLodBiasW + 2 * tu_formats_pkg::EllLodW;
   // material relief fields, used up by the relief stage
   localparam int RelW  = 2 + tu_formats_pkg::PomNW + tu_formats_pkg::PomSW + AW + 8;
   localparam int SpanW = 2 * PW + QW + 3 * XW + TriW + MatW + RelW;
@@ -120,7 +125,7 @@ module tu_texture_unit #(
   logic          ps_ovf;
   logic [NW-1:0] ns_nux, ns_nvx, ns_nuy, ns_nvy, ns_m, ns_nn;
   logic [SpanW-1:0] span_side, ns_side;
-  assign span_side = {a_i, d_i, g_i, x0_i, x1_i, y_i, dm_i, dexp_i, laniso_i, maxlod_i,
+  assign span_side = {a_i, d_i, g_i, x0_i, x1_i, y_i, dm_i, dexp_i, laniso_i, maxlod_i, lbias_i, lminlod_i, lmaxlod_i,
                       tbase_i, tlw_i, tlh_i, tclamp_i, wsrc_i, cap_i, filt_i,
                       rel_i, radapt_i, rlayers_i, rscale_i, hbase_i, hlw_i, hlh_i};
   assign in_ready_o = ps_in_ready && ns_in_ready;
@@ -175,7 +180,9 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::EllDetExpW-1:0] t_dexp;
   logic [tu_formats_pkg::EllAnisoW-1:0]  t_laniso;
   logic [tu_formats_pkg::EllMaxLodW-1:0] t_maxlod;
-  assign {t_dm, t_dexp, t_laniso, t_maxlod} = ex_tri;
+  logic [tu_formats_pkg::TexLodBiasW-1:0] t_lbias;
+  logic [tu_formats_pkg::EllLodW-1:0]    t_lminlod, t_lmaxlod;
+  assign {t_dm, t_dexp, t_laniso, t_maxlod, t_lbias, t_lminlod, t_lmaxlod} = ex_tri;
 
   // ---------------- pixel fork: B1, B2 and the sideband FIFO; join ----------------
   logic b1_in_ready, b2_in_ready, sb_in_ready, b1_valid, b2_valid, sb_valid, pj_valid, pj_ready;
@@ -187,7 +194,9 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::EllFmW-1:0]   b2_fm;
   logic [tu_formats_pkg::EllFexpW-1:0] b2_fexp;
   logic [tu_formats_pkg::EllLogW-1:0]  b2_lmaj, b2_lmin;
-  logic [tu_formats_pkg::EllLodW-1:0]  b2_lod;
+  logic [tu_formats_pkg::EllLodW-1:0]  b2_lod, b2_tlod;  // EWA's lod; trilinear's (GL rule)
+  logic [tu_formats_pkg::EllLogW-1:0]  b2_lrho;
+  logic [2:0]                          b2_tflags;
   logic [4:0]                          b2_flags;
   assign ex_ready = b1_in_ready && b2_in_ready && sb_in_ready;
   assign pj_valid = b1_valid && b2_valid && sb_valid;
@@ -202,10 +211,14 @@ module tu_texture_unit #(
     .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && sb_in_ready), .in_ready_o(b2_in_ready),
     .nux_i(ex_nux), .nvx_i(ex_nvx), .nuy_i(ex_nuy), .nvy_i(ex_nvy), .q_i(ex_q),
     .dm_i(t_dm), .dexp_i(t_dexp), .laniso_i(t_laniso), .maxlod_i(t_maxlod),
+    .lbias_i(t_lbias), .lminlod_i(t_lminlod), .lmaxlod_i(t_lmaxlod),
     .out_valid_o(b2_valid), .out_ready_i(pj_ready && b1_valid && sb_valid),
     .ae_o(b2_ae), .be_o(b2_be), .ce_o(b2_ce), .eexp_o(b2_eexp), .fm_o(b2_fm), .fexp_o(b2_fexp),
-    .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_lod), .flags_o(b2_flags)
+    .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_lod), .flags_o(b2_flags),
+    .lrho_o(b2_lrho), .tlod_o(b2_tlod), .tflags_o(b2_tflags)
   );
+  logic unused_b2;
+  assign unused_b2 = ^{b2_lrho, b2_tflags};  // reported by the C model's record only
   // Holds the sideband of every pixel inside B1/B2 (at most PerspLatency + 1).
   tu_fifo #(.Width(PixW), .Depth(16)) u_side (
     .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && b2_in_ready), .in_ready_o(sb_in_ready),
@@ -216,7 +229,7 @@ module tu_texture_unit #(
   // ---------------- relief stage ----------------
   // B1's (u, v) shifted by the material's POM relief; everything else rides along in order.
   localparam int RSideW = FPixW + 1 + 3 * tu_formats_pkg::EllCoefW +
-                                   2 * tu_formats_pkg::EllLogW + tu_formats_pkg::EllLodW + 5;
+                          2 * tu_formats_pkg::EllLogW + 2 * tu_formats_pkg::EllLodW + 5;
   logic [FPixW-1:0] pj_fpix;
   logic [RelW-1:0]  pj_rel;
   assign {pj_fpix, pj_rel} = sb_pix;
@@ -229,7 +242,7 @@ module tu_texture_unit #(
   // the colour texture's log2 size inside the material fields (base, lw, lh, clamp, wsrc, cap, filt)
   assign {pj_lw, pj_lh} = pj_fpix[tu_formats_pkg::EwaCountW + 5 +: 8];
   logic [RSideW-1:0] rs_in, rs_out;
-  assign rs_in = {pj_fpix, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_flags};
+  assign rs_in = {pj_fpix, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_tlod, b2_flags};
   logic          rs_valid, rs_ready;
   logic [UW-1:0] rs_u, rs_v;
   logic [tu_formats_pkg::PomNW-1:0] rs_n;
@@ -279,10 +292,10 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::PomNW-1:0] f_rn;
   logic [tu_formats_pkg::EllCoefW-1:0] f_ae, f_ce, f_be;
   logic [tu_formats_pkg::EllLogW-1:0]  f_lmaj, f_lmin;
-  logic [tu_formats_pkg::EllLodW-1:0]  f_lod;
+  logic [tu_formats_pkg::EllLodW-1:0]  f_lod, f_tlod;
   logic [4:0]                          f_eflags;
   assign {f_x, f_y, f_ovf, f_base, f_lw, f_lh, f_clamp, f_wsrc, f_cap, f_filt, f_guard,
-          f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_eflags, f_u, f_v, f_rn} = fq_data;
+          f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_tlod, f_eflags, f_u, f_v, f_rn} = fq_data;
 
   // ---------------- filter ----------------
   // Per-pixel fields the filter does not carry ride in a FIFO popped with its output (it holds
@@ -382,7 +395,7 @@ module tu_texture_unit #(
     assign ewa_inside   = '0;
     assign ewa_flags    = '0;
     logic unused_ewa;
-    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_wsrc, f_cap};
+    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_wsrc, f_cap};
   end
   if (HasBilinear != 0) begin : g_bilinear
     tu_bilinear u_bil (
@@ -401,7 +414,7 @@ module tu_texture_unit #(
   if (HasTriFilter != 0) begin : g_trilinear
     tu_trilinear u_tri (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngTri), .in_ready_o(tri_in_ready),
-      .u_i(f_u), .v_i(f_v), .lod_i(f_lod), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh),
+      .u_i(f_u), .v_i(f_v), .lod_i(f_tlod), .guard_i(f_guard), .base_i(f_base), .lw_i(f_lw), .lh_i(f_lh),
       .clamp_i(f_clamp), .tex_req_o(tri_req), .tex_addr_o(tri_addr), .tex_data_i,
       .out_valid_o(tri_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngTri), .rgba_o(tri_rgba),
       .level_o(tri_level)
@@ -414,7 +427,7 @@ module tu_texture_unit #(
     assign tri_rgba     = '0;
     assign tri_level    = '0;
     logic unused_tri;
-    assign unused_tri = ^f_lod;  // the LOD feeds tu_ewa and tu_trilinear only
+    assign unused_tri = ^f_tlod;  // the GL LOD feeds tu_trilinear only
   end
   if (HasNearest != 0) begin : g_nearest
     tu_nearest u_nst (

@@ -11,7 +11,7 @@ module tu_trilinear (
   output logic                                in_ready_o,
   input  logic [tu_formats_pkg::PerspUvW-1:0] u_i,
   input  logic [tu_formats_pkg::PerspUvW-1:0] v_i,
-  input  logic [tu_formats_pkg::EllLodW-1:0]  lod_i,    // B2's lod: TexLodF fraction bits, clamped to [0, top]
+  input  logic [tu_formats_pkg::EllLodW-1:0]  lod_i,    // GL rule (tu_ellipse tlod_o): TexLodF fraction bits, in [0, top]
   input  logic                                guard_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0] base_i,
   input  logic [3:0]                          lw_i,

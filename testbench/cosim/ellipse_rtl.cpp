@@ -17,7 +17,7 @@ RtlBlock rtl_ellipse() {
     d.maxlod_i = static_cast<uint8_t>(in[8]);
   };
   auto sample = [](Vtu_ellipse& d) {
-    return Row{d.ae_o, d.be_o, d.ce_o, d.eexp_o, d.fm_o, d.fexp_o, d.lmaj_o, d.lmin_o, d.lod_o, d.flags_o};
+    return Row{d.ae_o, d.be_o, d.ce_o, d.eexp_o, d.fm_o, d.fexp_o, d.lmaj_o, d.lmin_o, d.lod_o, d.flags_o, d.lrho_o};
   };
   RtlBlock b;
   b.name = "ellipse";

@@ -139,17 +139,24 @@ TEST(TextureUnitRtl, MixedFiltersPerSpan) {
 // One engine on every span (30% stalls, then stall-free: cycles = ewa::stream_cycles), then the
 // ground and the wall on two engines taking turns (stall-free, cycles = ewa::stream_cycles); every
 // pixel == the C model.
-void check_engine(scene::Filter every, scene::Filter ground, scene::Filter wall) {
-  auto s = small_scene();
-  cosim::RtlRenderOptions o;
-  o.filter = every;
+// Renders s with 30 % stalls (every pixel == the C model) and without (also cycles = predicted);
+// returns the stall-free render.
+cosim::RtlRender render_checked(const scene::Scene& s, cosim::RtlRenderOptions o) {
   o.stall_prob = 0.3;
   const auto r = cosim::render_rtl(s, o);
   EXPECT_TRUE(r.ok()) << r.first_mismatch;
   o.stall_prob = 0;
-  const auto q = cosim::render_rtl(s, o);
+  auto q = cosim::render_rtl(s, o);
   EXPECT_TRUE(q.ok()) << q.first_mismatch;
   EXPECT_EQ(q.cycles, q.predicted_cycles);
+  return q;
+}
+
+void check_engine(scene::Filter every, scene::Filter ground, scene::Filter wall) {
+  auto s = small_scene();
+  cosim::RtlRenderOptions o;
+  o.filter = every;
+  const auto q = render_checked(s, o);
   s.materials.at("ground").filter = ground;
   s.materials.at("wall").filter = wall;
   o.filter.reset();
@@ -166,6 +173,26 @@ void check_engine(scene::Filter every, scene::Filter ground, scene::Filter wall)
 // tex::trilinear; with EWA taking turns.
 TEST(TextureUnitRtl, TrilinearEqualsCModel) {
   check_engine(scene::Filter::Trilinear, scene::Filter::Trilinear, scene::Filter::Ewa);
+}
+
+// Trilinear's GL LOD rule with a material's bias and [min lod, max lod] (tu_ellipse tlod) ==
+// tex::trilinear_lod: bias 1.25 / [0.5, 3] on the ground, -0.75 / [0, 12] on the wall.
+TEST(TextureUnitRtl, TrilinearLodBiasAndClampEqualCModel) {
+  auto s = small_scene();
+  s.materials.at("ground").lod_bias = 1.25;
+  s.materials.at("ground").min_lod = 0.5;
+  s.materials.at("ground").max_lod = 3;
+  s.materials.at("wall").lod_bias = -0.75;
+  cosim::RtlRenderOptions o;
+  o.filter = scene::Filter::Trilinear;
+  const auto q = render_checked(s, o);
+  // The bias and clamps change the picture.
+  const auto plain = cosim::render_rtl(small_scene(), o);
+  size_t differ = 0;
+  for (size_t i = 0; i < q.frame.pixels.size(); ++i) differ += !(q.frame.pixels[i].color == plain.frame.pixels[i].color);
+  EXPECT_GT(differ, 500u);
+  std::printf("biased trilinear: %zu px, %zu differ from the default rule, %llu cycles = predicted %llu\n",
+              q.frame.pixels.size(), differ, (unsigned long long)q.cycles, (unsigned long long)q.predicted_cycles);
 }
 
 // tu_nearest == tex::nearest; with trilinear taking turns (two short engines).

@@ -13,6 +13,7 @@
 #include "harness.hpp"
 #include "pom/relief.hpp"
 #include "texel_ram.hpp"
+#include "texture/trilinear_lod.hpp"
 
 namespace tu::cosim {
 
@@ -27,7 +28,8 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 // Row layout of one span (two words for each 112-bit numerator constant).
 enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kClamp,
-  kWsrc, kCap, kFilt, kRel, kRadapt, kRlayers, kRscale, kHbase, kHlw, kHlh, kRowSize
+  kWsrc, kCap, kFilt, kRel, kRadapt, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
+  kRowSize
 };
 
 template <class V>
@@ -62,6 +64,9 @@ void drive(V& d, const Row& r) {
   d.dexp_i = static_cast<uint8_t>(r[kDexp]);
   d.laniso_i = static_cast<uint16_t>(r[kLaniso]);
   d.maxlod_i = static_cast<uint8_t>(r[kMaxlod]);
+  d.lbias_i = static_cast<uint16_t>(r[kLbias]);
+  d.lminlod_i = static_cast<uint16_t>(r[kLminlod]);
+  d.lmaxlod_i = static_cast<uint16_t>(r[kLmaxlod]);
   d.tbase_i = static_cast<uint32_t>(r[kBase]);
   d.tlw_i = static_cast<uint8_t>(r[kLw]);
   d.tlh_i = static_cast<uint8_t>(r[kLh]);
@@ -179,6 +184,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       r[kDexp] = code(dexp, fmt::kEllDetExpW);
       r[kLaniso] = render::laniso_code(m.max_aniso);
       r[kMaxlod] = static_cast<uint64_t>(top);
+      const tex::LodParams lp = tex::lod_params(m.lod_bias, m.min_lod, m.max_lod);
+      r[kLbias] = code(lp.bias, fmt::kTexLodBiasW);
+      r[kLminlod] = lp.min_lod;
+      r[kLmaxlod] = lp.max_lod;
       r[kBase] = ob.base;
       r[kLw] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].width));
       r[kLh] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].height));
@@ -225,8 +234,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         }
         pc.engine = eng;
         pc.guard = guard;
-        // Trilinear: one bilinear pass for a guard pixel or a lod at the top level.
-        pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(in.b2.lod >> fmt::kTexLodF), top);
+        // Trilinear: one bilinear pass for a guard pixel or a lod (GL rule) at the top level.
+        const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;
+        pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(tlod >> fmt::kTexLodF), top);
         costs.push_back(pc);
       }
       x = x1 + 1;

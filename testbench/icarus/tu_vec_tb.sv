@@ -5,7 +5,8 @@
 // without an input, none during a 64-cycle drain) and compares every output bit for bit with the
 // file's expected fields. Prints "tu_vec_tb: PASS ..." or "tu_vec_tb: FAIL ..." and ends with
 // $finish (PASS) or $fatal (anything else); scripts/icarus_cosim.sh checks both.
-// Plusargs: +vectors=FILE, +stall=PERCENT (default 30), +seed=N (default 1).
+// Plusargs: +vectors=FILE, +stall=PERCENT (default 30), +seed=N (default 1), +progress (a line
+// every 1000 cycles).
 module tu_vec_tb;
   parameter integer NumIn = 1;        // fields of role in / out, in file order
   parameter integer NumOut = 1;
@@ -204,6 +205,8 @@ module tu_vec_tb;
 
   // Inputs and outputs change just after the clock edge (#1), the block samples on the edge.
   reg taken;
+  reg progress;
+  initial progress = $test$plusargs("progress");
   always @(posedge clk) if (rst_n) begin
     taken = 1'b0;
     cycles = cycles + 1;
@@ -233,6 +236,7 @@ module tu_vec_tb;
       got = got + 1;
     end
     if (idle > HangCycles) fail("hung: no handshake for 200000 cycles");
+    if (progress && cycles % 1000 == 0) $display("tu_vec_tb: cycle %0d, %0d in, %0d out", cycles, sent, got);
     if (!have && rd == wr && !done) begin
       done = 1'b1;
       drain = 0;

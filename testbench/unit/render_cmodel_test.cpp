@@ -105,3 +105,36 @@ TEST(RenderCmodel, ReliefFollowsTheMaterial) {
   EXPECT_GT(moved, relief_pixels / 2);
   EXPECT_GT(tex::psnr(with.image, render::render_ref(s, scene::Filter::Ewa).image), 35);
 }
+
+// The guard flags and relief counts the --dump columns and `render` show (issue 13, item 4).
+namespace {
+TEST(RenderCmodel, FlagCountsAndReliefColumns) {
+  using namespace tu;
+  const auto s = scene::default_scene();
+  const auto f = render::render_cmodel(s, scene::Filter::Ewa);
+  const auto& flags = render::pixel_flags();
+  const auto n = render::flag_counts(f);
+  auto count = [&](const std::string& name) {
+    for (size_t i = 0; i < flags.size(); ++i)
+      if (name == flags[i].name) return n[i];
+    ADD_FAILURE() << name;
+    return size_t(0);
+  };
+  size_t relief = 0, steps = 0;
+  for (const auto& p : f.pixels) relief += p.relief_n > 0, steps += static_cast<size_t>(p.relief_steps);
+  std::printf("%zu pixels: b1_guard %zu, b2_aniso_clamp %zu, b2_magnify %zu, ewa_texel_cap %zu, relief %zu px, "
+              "%.2f steps / relief px\n", f.pixels.size(), count("b1_guard"), count("b2_aniso_clamp"),
+              count("b2_magnify"), count("ewa_texel_cap"), relief, double(steps) / double(std::max<size_t>(1, relief)));
+  EXPECT_GT(count("b1_guard"), 0u);        // the horizon rows
+  EXPECT_GT(count("b2_aniso_clamp"), 0u);  // grazing ground and wall
+  EXPECT_GT(count("b2_magnify"), 0u);      // the near ground
+  EXPECT_GT(relief, 1000u);
+  EXPECT_GT(steps, relief);
+  const auto tri = render::render_cmodel(s, scene::Filter::Trilinear);
+  const auto nt = render::flag_counts(tri);
+  size_t mag = 0;
+  for (size_t i = 0; i < flags.size(); ++i)
+    if (std::string(flags[i].name) == "tri_magnify") mag = nt[i];
+  EXPECT_GT(mag, 0u);
+}
+}  // namespace

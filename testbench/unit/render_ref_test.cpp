@@ -113,7 +113,12 @@ TEST(RenderRef, DumpAndHeatmap) {
   std::ifstream in(path);
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header, "x,y,u,v,lod,texels,r,g,b,a");
+  std::string want = "x,y,u,v,lod,texels,r,g,b,a,relief_n,relief_steps";
+  for (const auto& fl : render::pixel_flags()) want += std::string(",") + fl.name;
+  EXPECT_EQ(header, want);
+  EXPECT_NE(header.find(",b1_guard,"), std::string::npos);
+  EXPECT_NE(header.find(",ewa_texel_cap,"), std::string::npos);
+  EXPECT_NE(header.find(",relief_nonconv"), std::string::npos);
   size_t rows = 0;
   for (std::string l; std::getline(in, l);) ++rows;
   EXPECT_EQ(rows, f.pixels.size());

@@ -163,4 +163,14 @@ TEST(Robust, ReliefQualityOfAUsersHeightMap) {
   EXPECT_THROW(pom::depth_from_height(path), std::invalid_argument);
   std::filesystem::remove_all(dir);
 }
+TEST(Robust, NulByteInAVectorFileIsShownEscaped) {
+  const std::string text = std::string("# texunit-vectors 1\n# block: reciprocal\n# set: golden\n# seed: 1\n"
+                                       "# fields: q:in:s24.16\n0a") + '\0' + "b\n";
+  try {
+    (void)vec::parse(text, "n.vec");
+    ADD_FAILURE() << "accepted a NUL byte";
+  } catch (const vec::FormatError& e) {
+    EXPECT_EQ(std::string(e.what()), "n.vec:6: field 'q': '0a\\x00b' is not hexadecimal");
+  }
+}
 }  // namespace

@@ -34,7 +34,7 @@ case $case in
     expect 2 "vectors" "$tu" cosim --block reciprocal --vectors "$tmp/none.vec"
     expect 2 "cord-unroll" "$tu" sysmodel default --cord-unroll 0
     expect 2 "cord-unroll" "$tu" sysmodel default --cord-unroll abc
-    expect 2 "unknown" "$tu" render default --out "$tmp/o" --filter cubic
+    expect 2 "filter: cubic not in" "$tu" render default --out "$tmp/o" --filter cubic
     expect 2 "gamma" "$tu" complexity in.png out.png --gamma nan
     "$tu" --help >/dev/null || fail "--help must succeed"
     ;;

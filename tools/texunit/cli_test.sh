@@ -18,6 +18,17 @@ case $case in
     [ "$(val "$tmp/r.json" "all(r['cycles_source'].startswith('measured') for r in d)")" = True ] || fail "cycles source"
     [ "$(val "$tmp/r.json" "[r['max_abs_err'] for r in d if r['variant'] == 'incremental'][0] < 1/16")" = True ] || fail "persp error"
     ;;
+  report_stdcell)
+    # Standard-cell columns from the committed cache: numbers where the cache is current, with
+    # latency_ns = latency x period and ns_per_item = II x period; a missing cache says why.
+    "$tu" report --blocks reciprocal --count 2000 --no-yosys --stdcell-cache docs/report/stdcell_cache.json \
+      --json "$tmp/r.json" >/dev/null
+    [ "$(val "$tmp/r.json" "all(isinstance(r[k], (int, float)) and r[k] > 0 for r in d for k in ('area_um2', 'period_ns', 'fmax_mhz'))")" = True ] ||
+      fail "stdcell fields: $(val "$tmp/r.json" "d[0]['stdcell_source']")"
+    [ "$(val "$tmp/r.json" "all(abs(r['latency_ns'] - r['latency_cycles'] * r['period_ns']) < 1e-6 * r['latency_ns'] and abs(r['ns_per_item'] - r['ii_cycles'] * r['period_ns']) < 1e-6 * r['ns_per_item'] for r in d)")" = True ] || fail "ns columns"
+    "$tu" report --blocks reciprocal --count 2000 --no-yosys --stdcell-cache "$tmp/none.json" --json "$tmp/r2.json" >/dev/null
+    [ "$(val "$tmp/r2.json" "d[0]['area_um2'].startswith('not measured: tu_reciprocal not in')")" = True ] || fail "missing-cache reason"
+    ;;
   report_bad_block)
     if "$tu" report --blocks recip --no-yosys --json "$tmp/r.json" 2>"$tmp/err"; then fail "accepted an unknown block"; fi
     grep -q "unknown block 'recip' (known: reciprocal, persp" "$tmp/err" || fail "message: $(cat "$tmp/err")"

@@ -19,6 +19,7 @@
 #include "report.hpp"
 #include "texunit/parallel.hpp"
 #include "texunit/rtl_gen.hpp"
+#include "texunit/rtl_manifest.hpp"
 #include "vector_file.hpp"
 
 namespace fs = std::filesystem;
@@ -178,6 +179,23 @@ int cmd_demo(uint64_t count, const std::string& out_dir, int threads) {
   return ok ? 0 : 1;
 }
 
+// `texunit rtl-files`: the manifest's lists, one path a line.
+int cmd_rtl_files(const std::string& root, const std::string& top, const std::string& list) {
+  if (top.empty() == list.empty()) {
+    std::cerr << "texunit rtl-files: give a TOP or --list (not both)\n";
+    return 2;
+  }
+  const auto m = tu::rtl::Manifest::load(root);
+  std::vector<std::string> out;
+  if (!top.empty()) out = m.top_sources(top);
+  else if (list == "tops") out = m.tops();
+  else if (list == "all") out = m.all_sources();
+  else
+    for (const auto& f : list == "include-dirs" ? m.include_dirs : m.lint_only) out.push_back(m.rtl_dir + "/" + f);
+  for (const auto& f : out) std::cout << f << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -252,12 +270,26 @@ int main(int argc, char** argv) {
       ->check(tu::cli::non_negative_integer() & CLI::Range(1ull, 1ull << 26));
   rep->add_option("--yosys-cache", ro.yosys_cache, "JSON cache of Yosys results (keyed by the RTL files' hash)");
   rep->add_flag("--no-yosys", no_yosys, "do not synthesise (cells: not measured)");
+  rep->add_option("--stdcell-cache", ro.stdcell_cache, "standard-cell results (texunit stdcell); read only");
   rep->add_option("--root", ro.root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
 
   std::string rtl_top;
-  auto* rtf = app.add_subcommand("rtl-files", "list the RTL files a top needs (package first), for Yosys / Verilator scripts");
-  rtf->add_option("TOP", rtl_top, "module name, e.g. tu_persp")->required();
+  std::string rtl_list;
+  auto* rtf = app.add_subcommand("rtl-files", "list the RTL files a top needs (package first), from rtl/manifest.json");
+  rtf->add_option("TOP", rtl_top, "module name, e.g. tu_persp");
+  rtf->add_option("--list", rtl_list, "instead: every top, every file (packages first), the include dirs or the lint-only files")
+      ->check(CLI::IsMember({"tops", "all", "include-dirs", "lint-only"}));
   rtf->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+
+  std::vector<std::string> sc_tops;
+  std::string sc_cache = "docs/report/stdcell_cache.json", sc_netlists = "build/stdcell";
+  bool sc_force = false;
+  auto* stc = app.add_subcommand("stdcell", "OSU 0.18 um area and timing of RTL tops (scripts/stdcell_flow.sh), cached");
+  stc->add_option("TOPS", sc_tops, "RTL tops, e.g. tu_reciprocal")->required();
+  stc->add_option("--cache", sc_cache, "JSON cache keyed by the hash of the RTL files and the flow script");
+  stc->add_option("--netlists", sc_netlists, "directory for the gate-level netlists (TOP.v)");
+  stc->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+  stc->add_flag("--force", sc_force, "re-synthesise even when the cache is current");
 
   tu::plan::Options po;
   auto* pln = app.add_subcommand("plan", "specialise the unit to a scene: blocks, variants, RTL configuration");
@@ -289,10 +321,8 @@ int main(int argc, char** argv) {
       return tu::report::run(ro);
     }
     if (*pln) return tu::plan::run(po);
-    if (*rtf) {
-      for (const auto& f : tu::report::rtl_files(root, rtl_top)) std::cout << f << "\n";
-      return 0;
-    }
+    if (*stc) return tu::report::stdcell(sc_tops, root, sc_cache, sc_netlists, sc_force);
+    if (*rtf) return cmd_rtl_files(root, rtl_top, rtl_list);
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*rqc) return cmd_relief_quality(rq);
     if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000, demo_out, threads);

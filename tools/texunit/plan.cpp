@@ -41,11 +41,18 @@ constexpr double kQuantile = 0.99;  // the gates use the 99th percentile (1% of 
 struct TRow {
   std::string block, variant, scheme, rtl_top;
   double max_abs = 0, rms = 0, ii = 0, cells = -1;  // cells -1: not measured
+  double area_um2 = -1, fmax_mhz = -1;               // osu018 standard cells; -1: not measured
   int64_t latency = 0, mul = 0;
   std::string name() const { return block + "/" + variant + (scheme == variant ? "" : " (" + scheme + ")"); }
-  // Cheapest = fewest Yosys cells; without Yosys numbers, fewest multipliers.
-  double cost() const { return cells >= 0 ? cells : 1e12 + static_cast<double>(mul); }
 };
+
+// Cheapest = least osu018 area when every candidate has one; else fewest Yosys cells, else fewest
+// multipliers (the basis is recorded in g_cost_basis and printed).
+std::string g_cost_basis = "osu018 area (um2)";
+double cost(const TRow& r, bool by_area) {
+  if (by_area) return r.area_um2;
+  return r.cells >= 0 ? r.cells : 1e12 + static_cast<double>(r.mul);
+}
 
 constexpr const char* kBuiltInReport = "docs/report/report.json";
 
@@ -91,6 +98,8 @@ std::vector<TRow> load_table(const std::string& file) {
     t.latency = static_cast<int64_t>(num("latency_cycles", true));
     t.cells = num("cells", true);
     t.mul = static_cast<int64_t>(num("multipliers", true));
+    // A table written before the standard-cell columns existed: area not measured.
+    if (r.contains("area_um2")) t.area_um2 = num("area_um2", true), t.fmax_mhz = num("fmax_mhz", true);
     rows.push_back(t);
   }
   return rows;
@@ -102,23 +111,9 @@ double quantile(std::vector<double> v, double q) {
   return v[static_cast<size_t>(q * static_cast<double>(v.size() - 1))];
 }
 
-// PSNR (RGB, 8-bit peak) over the pixels both frames cover: the background would inflate it.
-// PSNR over a's covered pixels (those of objects `keep` accepts, all by default).
-double psnr_covered(const render::Frame& a, const render::Frame& b,
-                    const std::function<bool(int object)>& keep = {}) {
-  double se = 0;
-  size_t n = 0;
-  for (const auto& p : a.pixels) {
-    if (keep && !keep(p.object)) continue;
-    const auto& c = a.image.at(p.x, p.y);
-    const auto& d = b.image.at(p.x, p.y);
-    for (int k = 0; k < 3; ++k) {
-      const double e = (k == 0 ? c.r - d.r : k == 1 ? c.g - d.g : c.b - d.b);
-      se += e * e;
-    }
-    n += 3;
-  }
-  return se == 0 ? INFINITY : 10 * std::log10(255.0 * 255.0 * static_cast<double>(n) / se);
+// PSNR over a's covered pixels of the objects `keep` accepts (render::psnr_covered).
+double psnr_objects(const render::Frame& a, const render::Frame& b, const std::function<bool(int object)>& keep) {
+  return render::psnr_covered(a, b, [&](const render::PixelRecord& p) { return keep(p.object); });
 }
 
 double texels_per_pixel(const render::Frame& f) {
@@ -153,9 +148,13 @@ const TRow* cheapest(const std::vector<const TRow*>& cands, const std::function<
                      const std::string& what, const char* unit) {
   const TRow* best = nullptr;
   const TRow* closest = nullptr;
+  const TRow* no_area = nullptr;
+  for (const TRow* r : cands)
+    if (ok(*r) && r->area_um2 < 0) no_area = r;
+  if (no_area) g_cost_basis = "Yosys cells (" + no_area->name() + " has no osu018 area: run scripts/stdcell.sh)";
   for (const TRow* r : cands) {
     if (!closest || score(*r) > score(*closest)) closest = r;
-    if (ok(*r) && (!best || r->cost() < best->cost())) best = r;
+    if (ok(*r) && (!best || cost(*r, !no_area) < cost(*best, !no_area))) best = r;
   }
   if (!closest) throw std::runtime_error("report table has no " + what + " row with an RTL (run scripts/report.sh)");
   if (!best)
@@ -197,6 +196,21 @@ struct Unit {
     for (const TRow* r : all()) c += r->cells < 0 ? 0 : r->cells;
     return c;
   }
+  double area_um2() const {
+    double a = 0;
+    for (const TRow* r : all()) a += r->area_um2 < 0 ? 0 : r->area_um2;
+    return a;
+  }
+  bool area_measured() const {
+    const auto v = all();
+    return std::all_of(v.begin(), v.end(), [](const TRow* r) { return r->area_um2 >= 0; });
+  }
+  // The unit's clock: its slowest block's fmax (blocks synthesised alone; the slowest one sets it).
+  double fmax_mhz() const {
+    double f = INFINITY;
+    for (const TRow* r : all()) f = r->fmax_mhz < 0 ? f : std::min(f, r->fmax_mhz);
+    return area_measured() ? f : -1;
+  }
   bool cells_measured() const {
     return std::all_of(area_only.begin(), area_only.end(), [](const TRow* r) { return r->cells >= 0; }) &&
            std::all_of(stages.begin(), stages.end(), [](const auto& s) {
@@ -207,6 +221,8 @@ struct Unit {
   }
 };
 
+const char* const kNoArea = "not measured: a block has no osu018 result in the report (scripts/stdcell.sh)";
+
 json unit_json(const Unit& u) {
   json b = json::array();
   for (const TRow* r : u.all()) b.push_back(r->name());
@@ -214,7 +230,9 @@ json unit_json(const Unit& u) {
           {"pixel_latency_cycles", u.latency()},
           {"ii_cycles", u.ii()},
           {"texels_per_pixel", u.texels_per_pixel},
-          {"cells_sum_of_blocks", u.cells_measured() ? json(u.cells()) : json("not measured: yosys not installed")}};
+          {"cells_sum_of_blocks", u.cells_measured() ? json(u.cells()) : json("not measured: yosys not installed")},
+          {"area_um2_sum_of_blocks", u.area_measured() ? json(u.area_um2()) : json(kNoArea)},
+          {"fmax_mhz_slowest_block", u.area_measured() ? json(u.fmax_mhz()) : json(kNoArea)}};
 }
 
 // The RTL configuration: tu_unit_cfg_pkg, read by the RTL top.
@@ -317,7 +335,7 @@ int run(const Options& opt) {
     const double qa = quantile(ma, kQuantile), ql = quantile(ml, kQuantile);
     std::string f = "ewa", why = name + ": ";
     if (ql <= kMinifyLod && qa <= kIsoAniso) {
-      const double p = psnr_covered(bil, ewa, mine);
+      const double p = psnr_objects(bil, ewa, mine);
       why += "bilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
       if (p >= s.budget.min_psnr_db) f = "bilinear";
       else why += "; ";
@@ -327,7 +345,7 @@ int run(const Options& opt) {
     if (f == "ewa") {
       if (qa <= kIsoAniso) {
         if (!tri) tri = render::render_ref(s, scene::Filter::Trilinear);
-        const double p = psnr_covered(*tri, ewa, mine);
+        const double p = psnr_objects(*tri, ewa, mine);
         why += "trilinear: footprint gate passes, PSNR " + fmt("%.2f", p) + " dB";
         if (p >= s.budget.min_psnr_db) f = "trilinear";
       } else {
@@ -348,7 +366,7 @@ int run(const Options& opt) {
     const std::string& f = mat_filter.at(s.objects[static_cast<size_t>(p.object)].material);
     if (f != "ewa") planned_frame.image.at(p.x, p.y) = (f == "bilinear" ? bil : *tri).image.at(p.x, p.y);
   }
-  const double filter_psnr = psnr_covered(planned_frame, ewa);
+  const double filter_psnr = render::psnr_covered(planned_frame, ewa);
   const render::Frame* chosen_frame = filter == "ewa" ? &ewa : filter == "trilinear" ? &*tri : &bil;
 
   // 3. Blocks and variants from the measured table.
@@ -386,7 +404,7 @@ int run(const Options& opt) {
       if (const auto src = engine_source(*r)) {
         render::CmodelOptions o = render::texture_path_only();
         o.weights = src;
-        render_db[r] = psnr_covered(render::render_cmodel(flat, scene::Filter::Ewa, o), ref_flat);
+        render_db[r] = render::psnr_covered(render::render_cmodel(flat, scene::Filter::Ewa, o), ref_flat);
       }
   }
   auto weight_render_db = [&](const TRow& r) {
@@ -409,7 +427,7 @@ int run(const Options& opt) {
   full.stages.push_back({{pom_layers, pom_unit}, {ipx}});
   full.stages.push_back({{one("ellipse", "analytic")}});
   const auto clips = rows_of("clip_volume");
-  const TRow* full_clip = clip ? clip : *std::min_element(clips.begin(), clips.end(), [](auto* a, auto* b) { return a->cost() < b->cost(); });
+  const TRow* full_clip = clip ? clip : *std::min_element(clips.begin(), clips.end(), [](auto* a, auto* b) { return cost(*a, false) < cost(*b, false); });
   full.stages.push_back({{full_clip}});
   std::vector<std::vector<const TRow*>> all_weights;
   for (const TRow* r : weight_cands) all_weights.push_back({r});
@@ -494,6 +512,9 @@ int run(const Options& opt) {
               {"full", unit_json(full)},
               {"scene_cycles", {{"specialised", spec_cycles}, {"full", full_cycles}, {"full_as_authored", authored_cycles},
                                 {"model", "ewa::stream_cycles on the C-model render (texture path): equal to the RTL"}}},
+              {"scene_us", {{"specialised", spec.area_measured() ? json(double(spec_cycles) / spec.fmax_mhz()) : json(kNoArea)},
+                            {"full", full.area_measured() ? json(double(full_cycles) / full.fmax_mhz()) : json(kNoArea)}}},
+              {"cheapest_by", g_cost_basis},
               {"area_note", "cells are the sum of the blocks' Yosys cells (each block synthesised alone)"}};
   // Everything is decided before anything is written, and every file is written or none.
   cli::Outputs outs;
@@ -524,17 +545,25 @@ int run(const Options& opt) {
   auto cyc = [&](uint64_t c) {
     return fmt("%.0f", double(c)) + " (" + fmt("%.2f", double(c) / double(std::max<size_t>(1, px))) + "/px)";
   };
-  std::printf("\n%-12s %10s %6s %13s %22s %12s\n", "unit", "latency", "II", "texels/pixel", "scene cycles", "cells (sum)");
+  std::printf("\n%-12s %10s %6s %13s %22s %12s %14s %9s %10s\n", "unit", "latency", "II", "texels/pixel", "scene cycles",
+              "cells (sum)", "area um2 (sum)", "fmax MHz", "scene us");
   for (const auto& [name, u, c] : {std::tuple<const char*, const Unit*, const uint64_t*>{"specialised", &spec, &spec_cycles},
-                                   {"full", &full, &full_cycles}})
-    std::printf("%-12s %10lld %6.2f %13.2f %22s %12s\n", name, static_cast<long long>(u->latency()), u->ii(),
-                u->texels_per_pixel, cyc(*c).c_str(), u->cells_measured() ? fmt("%.0f", u->cells()).c_str() : "not measured");
+                                   {"full", &full, &full_cycles}}) {
+    const bool a = u->area_measured();
+    std::printf("%-12s %10lld %6.2f %13.2f %22s %12s %14s %9s %10s\n", name, static_cast<long long>(u->latency()), u->ii(),
+                u->texels_per_pixel, cyc(*c).c_str(), u->cells_measured() ? fmt("%.0f", u->cells()).c_str() : "not measured",
+                a ? fmt("%.0f", u->area_um2()).c_str() : "not measured", a ? fmt("%.1f", u->fmax_mhz()).c_str() : "-",
+                a ? fmt("%.1f", double(*c) / u->fmax_mhz()).c_str() : "-");
+  }
   std::printf("%-12s %10s %6s %13s %22s  (each material's own filter)\n", "full, authored", "", "", "",
               cyc(authored_cycles).c_str());
   std::printf("scene cycles: the RTL texture unit on the scene's texture path, exact cycle model (ewa::stream_cycles\n"
               "  on the C-model render's per-pixel work; = Verilator); specialised and full with the plan's\n"
               "  filter per material (the same picture, bit for bit)\n"
-              "cells: sum of the blocks' Yosys cells (each block synthesised alone; texel fetch not included)\n");
+              "cells: sum of the blocks' Yosys cells (each block synthesised alone; texel fetch not included)\n"
+              "area: sum of the blocks' osu018 standard-cell area; fmax: the slowest block's (each block alone,\n"
+              "  docs/area-timing.md); scene us = scene cycles / fmax; cheapest variant by %s\n",
+              g_cost_basis.c_str());
   return 0;
 }
 

@@ -20,11 +20,19 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
   auto* r = app.add_subcommand("render", "render a scene to PNG images (docs/scene-format.md)");
   r->add_option("SCENE", a.scene, "scene JSON file, or 'default' for the embedded scene")->required();
   r->add_option("--out", a.out_dir, "output directory (created if missing)")->required();
-  r->add_option("--dump", a.dump, "CSV: one row per covered pixel (x,y,u,v,lod,texels,r,g,b,a)");
+  r->add_option("--dump", a.dump,
+                "CSV: one row per covered pixel (x,y,u,v,lod,texels,r,g,b,a, relief_n, relief_steps, "
+                "one 0/1 column per guard flag)");
   r->add_option("--engine", a.engine,
                  "rendering engine: float reference, bit-accurate C model, or the Verilated "
-                 "texture-unit RTL (compared with the C model pixel by pixel)")
-      ->check(CLI::IsMember({"ref", "cmodel", "rtl"}));
+                 "texture-unit RTL (compared with the C model pixel by pixel), or the ground truth "
+                 "(--ss x --ss point samples per pixel at the exact u,v and relief intersection)")
+      ->check(CLI::IsMember({"ref", "cmodel", "rtl", "truth"}));
+  r->add_option("--ss", a.ss, "--engine truth: stratified samples per pixel side (N x N)")
+      ->check(CLI::Range(1, 256));
+  r->add_option("--truth-kernel", a.truth_kernel,
+                "--engine truth: box over the pixel square, or gauss (the EWA's pixel model over the unit disc)")
+      ->check(CLI::IsMember({"box", "gauss"}));
   r->add_option("--rtl-unit", a.rtl_unit,
                  "--engine rtl: the full unit (EWA, trilinear, bilinear and nearest engines, each material's filter per span) "
                  "or the bilinear-only unit (HasEwa = 0)")
@@ -90,8 +98,22 @@ int run_render(const RenderArgs& a) {
       std::printf("cycles measured %llu (%.2f/pixel), not predicted (relief pixels in the stream)",
                   (unsigned long long)r.cycles, double(r.cycles) / n);
     std::printf("; simulated %.0f RTL pixels/s (%.2f s)\n", n / r.sim_wall_s, r.sim_wall_s);
+  } else if (a.engine == "truth") {
+    render::TruthOptions to;
+    to.ss = a.ss;
+    to.kernel = a.truth_kernel == "gauss" ? render::TruthKernel::Gaussian : render::TruthKernel::Box;
+    to.relief = !a.no_relief;
+    to.progress = opt.progress;
+    frame = render::render_truth(s, to);
   } else {
     frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt) : render::render_ref(s, f);
+  }
+  {
+    const auto& flags = render::pixel_flags();
+    const auto counts = render::flag_counts(frame);
+    std::printf("guard flags, pixels of %zu:", frame.pixels.size());
+    for (size_t i = 0; i < flags.size(); ++i) std::printf(" %s %zu", flags[i].name, counts[i]);
+    std::printf("\n");
   }
   img::write_png_rgba(png_tmp, frame.image);
   const auto layers = render::layers_image(s, frame);
@@ -106,14 +128,26 @@ int run_render(const RenderArgs& a) {
 }
 
 namespace {
+// The references every demo row is measured against (PSNR over covered pixels): the float EWA and
+// the ground truth (render_truth, 16 x 16 samples, box), each of the same path (texture path, or
+// with relief: the 256-layer march / the exact intersection).
+struct Refs {
+  const render::Frame& ewa;
+  const render::Frame& truth;
+};
+std::string db(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, std::isinf(v) ? "reference" : "%.2f dB", v);
+  return b;
+}
 // The demo's C-model rows: every filter (EWA with each weight source) against the float EWA frame.
-void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir, int threads);
-void demo_render_relief(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir, int threads);
+void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
+void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
 // The demo's RTL rows: the texture-unit top == the C-model engine on every pixel.
 // `relief`, `relief_ref`: the scene with its relief and the float EWA + 256-layer relief frame
 // (the relief row); `s`, `ewa_ref`: the texture path.
-bool demo_render_rtl(const scene::Scene& relief, const render::Frame& relief_ref, const scene::Scene& s,
-                     const render::Frame& ewa_ref, const std::string& out_dir, int threads);
+bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
+                     const std::string& out_dir, int threads);
 }  // namespace
 
 bool demo_render(const std::string& out_dir, int threads) {
@@ -129,10 +163,17 @@ bool demo_render(const std::string& out_dir, int threads) {
   }
   std::filesystem::create_directories(out_dir);
   const auto& ewa = frames.back();
-  std::printf("\ndefault scene (%dx%d, %zu covered pixels), float reference engine:\n",
-              s.camera.width, s.camera.height, ewa.pixels.size());
-  std::printf("%-10s %14s %14s %10s  %s\n", "filter", "PSNR vs EWA", "texels/pixel", "seconds",
-              "image");
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto truth = render::render_truth(s);
+  const double truth_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  img::write_png_rgba((std::filesystem::path(out_dir) / "truth.png").string(), truth.image);
+  const auto rel = render::relief_pixels(s);
+  std::printf("\ndefault scene (%dx%d, %zu covered pixels), float reference engine; PSNR over covered pixels "
+              "against the float EWA and the ground truth (16 x 16 samples per pixel, box, exact relief "
+              "intersection; %.1f s), the wall's relief pixels alone in the last column:\n",
+              s.camera.width, s.camera.height, ewa.pixels.size(), truth_s);
+  std::printf("%-10s %14s %14s %14s %14s %10s  %s\n", "filter", "PSNR vs EWA", "vs truth", "relief vs truth",
+              "texels/pixel", "seconds", "image");
   for (size_t i = 0; i < frames.size(); ++i) {
     const auto name = std::string(scene::to_string(filters[i]));
     const auto png = (std::filesystem::path(out_dir) / ("ref_" + name + ".png")).string();
@@ -142,10 +183,9 @@ bool demo_render(const std::string& out_dir, int threads) {
                           render::error_heatmap(frames[i].image, ewa.image, 64));
     double texels = 0;
     for (const auto& p : frames[i].pixels) texels += p.texels;
-    const double ps = tex::psnr(frames[i].image, ewa.image);
-    char psnr_txt[32];
-    std::snprintf(psnr_txt, sizeof psnr_txt, std::isinf(ps) ? "reference" : "%.2f dB", ps);
-    std::printf("%-10s %14s %14.2f %10.3f  %s\n", name.c_str(), psnr_txt,
+    std::printf("%-10s %14s %14s %14s %14.2f %10.3f  %s\n", name.c_str(),
+                db(render::psnr_covered(frames[i], ewa)).c_str(), db(render::psnr_covered(frames[i], truth)).c_str(),
+                db(render::psnr_covered(frames[i], truth, rel)).c_str(),
                 texels / static_cast<double>(std::max<size_t>(1, frames[i].pixels.size())),
                 seconds[i], png.c_str());
   }
@@ -153,13 +193,16 @@ bool demo_render(const std::string& out_dir, int threads) {
   // measured on its own rows (C model and RTL) against the float reference's 256-layer march.
   const scene::Scene flat = scene::without_relief(s);
   const auto ewa_flat = render::render_ref(flat, scene::Filter::Ewa);
-  demo_render_cmodel(flat, ewa_flat, out_dir, threads);
-  demo_render_relief(s, ewa, out_dir, threads);
-  return demo_render_rtl(s, ewa, flat, ewa_flat, out_dir, threads);
+  const auto truth_flat = render::render_truth(flat);
+  const Refs flat_refs{ewa_flat, truth_flat}, relief_refs{ewa, truth};
+  demo_render_cmodel(flat, flat_refs, out_dir, threads);
+  demo_render_relief(s, relief_refs, out_dir, threads);
+  return demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
 }
 
 namespace {
-void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir, int threads) {
+void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads) {
+  const auto& ewa_ref = refs.ewa;
   struct Row {
     const char* name;
     scene::Filter filter;
@@ -173,7 +216,7 @@ void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, con
                       {"ewa_table2d", scene::Filter::Ewa, scene::WeightSource::Table2d}};
   std::printf("\ndefault scene, bit-accurate C-model engine (B1 persp -> B2 ellipse -> filter), "
               "against the float EWA reference, texture path (relief off on both):\n");
-  std::printf("%-12s %12s %13s %13s %12s  %s\n", "filter", "PSNR vs EWA", "texels/pixel",
+  std::printf("%-12s %12s %12s %13s %13s %12s  %s\n", "filter", "PSNR vs EWA", "vs truth", "texels/pixel",
               "inside/pixel", "pixels/s", "image");
   for (const auto& r : rows) {
     render::CmodelOptions opt;
@@ -192,12 +235,13 @@ void demo_render_cmodel(const scene::Scene& s, const render::Frame& ewa_ref, con
     const double n = static_cast<double>(std::max<size_t>(1, fr.pixels.size()));
     char inside_txt[32] = "-";
     if (r.filter == scene::Filter::Ewa) std::snprintf(inside_txt, sizeof inside_txt, "%.2f", inside / n);
-    std::printf("%-12s %9.2f dB %13.2f %13s %12.0f  %s\n", r.name, tex::psnr(fr.image, ewa_ref.image),
-                texels / n, inside_txt, n / sec, png.c_str());
+    std::printf("%-12s %12s %12s %13.2f %13s %12.0f  %s\n", r.name, db(render::psnr_covered(fr, ewa_ref)).c_str(),
+                db(render::psnr_covered(fr, refs.truth)).c_str(), texels / n, inside_txt, n / sec, png.c_str());
   }
 }
 
-void demo_render_relief(const scene::Scene& s, const render::Frame& ewa_ref, const std::string& out_dir, int threads) {
+void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads) {
+  const auto& ewa_ref = refs.ewa;
   const auto t0 = std::chrono::steady_clock::now();
   render::CmodelOptions opt;
   opt.threads = threads;
@@ -207,14 +251,17 @@ void demo_render_relief(const scene::Scene& s, const render::Frame& ewa_ref, con
   img::write_png_rgba(png, fr.image);
   img::write_png_rgba((std::filesystem::path(out_dir) / "heat_cmodel_ewa_relief_vs_ewa.png").string(),
                       render::error_heatmap(fr.image, ewa_ref.image, 64));
+  const auto rel = render::relief_pixels(s);
   std::printf("\nwith relief (each material's method, fixed point) against the float EWA with the 256-layer "
-              "relief march:\n%-12s %9.2f dB %13s %13s %12.0f  %s\n",
-              "ewa+relief", tex::psnr(fr.image, ewa_ref.image), "", "", double(fr.pixels.size()) / sec,
-              png.c_str());
+              "relief march and the truth (exact intersection), over covered pixels / the relief pixels alone:\n"
+              "%-12s %12s %12s   relief pixels: %s vs EWA, %s vs truth %12.0f px/s  %s\n",
+              "ewa+relief", db(render::psnr_covered(fr, ewa_ref)).c_str(), db(render::psnr_covered(fr, refs.truth)).c_str(),
+              db(render::psnr_covered(fr, ewa_ref, rel)).c_str(), db(render::psnr_covered(fr, refs.truth, rel)).c_str(),
+              double(fr.pixels.size()) / sec, png.c_str());
 }
 
-bool demo_render_rtl(const scene::Scene& relief, const render::Frame& relief_ref, const scene::Scene& s,
-                     const render::Frame& ewa_ref, const std::string& out_dir, int threads) {
+bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
+                     const std::string& out_dir, int threads) {
   struct Row {
     const char* name;
     bool has_ewa;  // false: the bilinear-only unit
@@ -236,8 +283,8 @@ bool demo_render_rtl(const scene::Scene& relief, const render::Frame& relief_ref
   mixed.materials.at("ground").filter = scene::Filter::Bilinear;
   std::printf("\ndefault scene through the Verilated texture unit (rtl/top/tu_texture_unit.sv: spans ->"
               " B1 -> B2 -> relief -> filter), every pixel compared with the C-model engine, no stalls:\n");
-  std::printf("%-12s %8s %10s %11s %13s %13s %9s %12s  %s\n", "filter", "pixels", "mismatch",
-              "PSNR vs EWA", "cycles/pixel", "predicted", "error", "RTL pixel/s", "image");
+  std::printf("%-12s %8s %10s %11s %11s %13s %13s %9s %12s  %s\n", "filter", "pixels", "mismatch",
+              "PSNR vs EWA", "vs truth", "cycles/pixel", "predicted", "error", "RTL pixel/s", "image");
   // The rows on every thread (each simulation has its own Verilator context), printed in order.
   constexpr int kRows = sizeof rows / sizeof rows[0];
   std::vector<cosim::RtlRender> results(kRows);
@@ -265,10 +312,17 @@ bool demo_render_rtl(const scene::Scene& relief, const render::Frame& relief_ref
       std::snprintf(err, sizeof err, "%+.3f %%",
                     100.0 * (double(res.predicted_cycles) / double(std::max<uint64_t>(1, res.cycles)) - 1));
     }
-    // PSNR against the float EWA of the same path (the relief row: with the 256-layer march).
-    std::printf("%-12s %8zu %10llu %8.2f dB %13.3f %13s %9s %12.0f  %s\n", r.name, res.frame.pixels.size(),
-                (unsigned long long)res.mismatches, tex::psnr(res.frame.image, (r.relief ? relief_ref : ewa_ref).image),
-                double(res.cycles) / n, pred, err, n / res.sim_wall_s, png.c_str());
+    // PSNR against the float EWA and the truth of the same path (the relief row: with relief).
+    const Refs& rf = r.relief ? relief_refs : refs;
+    std::printf("%-12s %8zu %10llu %11s %11s %13.3f %13s %9s %12.0f  %s\n", r.name, res.frame.pixels.size(),
+                (unsigned long long)res.mismatches, db(render::psnr_covered(res.frame, rf.ewa)).c_str(),
+                db(render::psnr_covered(res.frame, rf.truth)).c_str(), double(res.cycles) / n, pred, err,
+                n / res.sim_wall_s, png.c_str());
+    if (r.relief) {
+      const auto rel = render::relief_pixels(relief);
+      std::printf("%-12s relief pixels alone: %s vs EWA, %s vs truth\n", "", db(render::psnr_covered(res.frame, rf.ewa, rel)).c_str(),
+                  db(render::psnr_covered(res.frame, rf.truth, rel)).c_str());
+    }
     if (!res.ok()) std::printf("  first mismatch: %s\n", res.first_mismatch.c_str());
   }
   std::printf("%s\n", ok ? "RTL texture unit == C model on every pixel"

@@ -8,7 +8,9 @@ namespace tu::cli {
 struct RenderArgs {
   std::string scene, out_dir, dump, engine = "ref", filter, weights, rtl_unit = "full";
   bool no_relief = false;
-  int threads = 0;  // C-model render and visibility (<= 0: every core)
+  int ss = 16;                      // --engine truth: samples per pixel side
+  std::string truth_kernel = "box";  // --engine truth: box | gauss
+  int threads = 0;                   // C-model render and visibility (<= 0: every core)
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);

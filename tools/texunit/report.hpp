@@ -19,6 +19,12 @@ struct Row {
   double rtl_sim_items_per_s = -1;  // -1: not measured (rtl_sim_source says why)
   std::string rtl_sim_source = "not measured: no RTL";
   std::string err_unit;             // what max_abs_err is measured in
+  // Standard cells (scripts/stdcell_flow.sh, OSU 0.18 um): -1 = not measured, stdcell_source says why.
+  double area_um2 = -1, period_ns = -1, fmax_mhz = -1;
+  int64_t stdcell_cells = -1;
+  std::string stdcell_source = "not measured: no RTL", critical_path;
+  double latency_ns() const { return period_ns < 0 || latency_cycles < 0 ? -1 : static_cast<double>(latency_cycles) * period_ns; }
+  double ns_per_item() const { return period_ns < 0 || latency_cycles < 0 ? -1 : ii_cycles * period_ns; }
   std::string json() const;
 };
 
@@ -29,12 +35,21 @@ struct Options {
   std::string yosys_cache;          // JSON cache of Yosys results keyed by the RTL files' hash
   bool yosys = true;                // false: area "not measured: " + no_yosys_why
   std::string no_yosys_why = "--no-yosys";
+  std::string stdcell_cache;        // JSON cache of scripts/stdcell_flow.sh results (read only)
   uint64_t count = 20000;           // random vectors per registry block (plus its stiff set)
 };
 
-// The files an RTL top needs, in Yosys/Verilator order: packages first, then every module file
-// reachable from the top (found by name under ROOT/rtl).
+// The files an RTL top needs, in Yosys/Verilator order: the sources of the rtl/manifest.json block
+// that lists the top (packages first).
 std::vector<std::string> rtl_files(const std::string& root, const std::string& top);
+
+// Content hash of a top's RTL files and the flow script that measures it (the caches' key).
+std::string rtl_hash(const std::string& root, const std::string& top, const std::string& script);
+
+// `texunit stdcell`: runs scripts/stdcell_flow.sh on every listed top whose cache entry is
+// missing or stale and stores the result in CACHE (netlists under NETLISTS/TOP.v).
+int stdcell(const std::vector<std::string>& tops, const std::string& root, const std::string& cache,
+            const std::string& netlists, bool force);
 
 // Report groups in output order (block names of the rows).
 std::vector<std::string> groups();

@@ -16,50 +16,9 @@
 namespace tu::report {
 
 namespace {
-// RTL files of each top, in dependency order (package first), relative to rtl/.
-const std::map<std::string, std::vector<std::string>>& rtl_files() {
-  static const std::map<std::string, std::vector<std::string>> f = {
-      {"tu_pom_layers", {"generated/tu_pom_f_rom.sv", "pom/tu_pom_layers.sv"}},
-      {"tu_pom_march", {"pom/tu_pom_march.sv"}},
-      {"tu_iter_parallax", {"pom/tu_iter_parallax.sv"}},
-      {"tu_pom_setup", {"generated/tu_recip_rom.sv", "reciprocal/tu_recip_core.sv",
-                        "reciprocal/tu_recip_norm.sv", "pom/tu_pom_setup.sv"}},
-      {"tu_pom_refine", {"generated/tu_recip_rom.sv", "reciprocal/tu_recip_core.sv",
-                         "reciprocal/tu_recip_norm.sv", "pom/tu_pom_refine.sv"}},
-      {"tu_pom_unit", {"generated/tu_recip_rom.sv", "reciprocal/tu_recip_core.sv",
-                       "reciprocal/tu_recip_norm.sv", "pom/tu_pom_setup.sv", "pom/tu_pom_march.sv",
-                       "pom/tu_pom_refine.sv", "pom/tu_pom_unit.sv"}}};
-  return f;
-}
-
-// Yosys area of one top (cached per top: several rows share it).
-void yosys_area(Row& r, const std::string& root) {
-  static std::map<std::string, std::string> cache;
-  auto& out = cache[r.rtl_top];
-  if (out.empty()) {
-    std::string cmd = root + "/scripts/yosys_area.sh " + r.rtl_top + " " + root +
-                      "/rtl/0_pkg/tu_formats_pkg.sv " + root + "/rtl/common/tu_pipe_valid.sv";
-    for (const auto& f : rtl_files().at(r.rtl_top)) cmd += " " + root + "/rtl/" + f;
-    if (FILE* p = popen((cmd + " 2>/dev/null").c_str(), "r")) {
-      char buf[512];
-      while (fgets(buf, sizeof buf, p)) out += buf;
-      if (pclose(p) != 0) out = "{}";
-    }
-  }
-  auto num = [&](const char* key) -> int64_t {
-    const auto k = out.find(std::string("\"") + key + "\": ");
-    return k == std::string::npos ? -1 : std::atoll(out.c_str() + k + std::string(key).size() + 4);
-  };
-  r.cells = num("cells");
-  r.flip_flops = num("flip_flops");
-  r.multipliers = num("multipliers");
-  r.area_source = r.cells < 0 ? "yosys failed" : "yosys synth";
-}
-
 // One row from a Verilator run of vf (no stalls): errors vs the block's float reference, cycles,
 // RTL simulation speed, C-model speed.
-Row measured_row(const std::string& variant, const vec::VectorFile& vf, bool per_pixel_cycles,
-                 const std::string& root, bool yosys) {
+Row measured_row(const std::string& variant, const vec::VectorFile& vf, bool per_pixel_cycles) {
   const auto& b = blocks::find(vf.block);
   cosim::Options opt;
   opt.run.stall_prob = 0;
@@ -90,7 +49,6 @@ Row measured_row(const std::string& variant, const vec::VectorFile& vf, bool per
   r.cmodel_ns_per_item =
       std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / double(items);
   if (sink == 0xdeadbeef) std::fputs("", stderr);  // keep the work
-  if (yosys) yosys_area(r, root);
   return r;
 }
 
@@ -108,15 +66,15 @@ bool is_relief_block(const std::string& b) {
   return b == "pom_layers" || b == "pom_march" || b == "iter_parallax" || b == "pom_unit";
 }
 
-std::vector<Row> relief_rows(const std::vector<std::string>& blocks_, const std::string& root, bool yosys) {
+std::vector<Row> relief_rows(const std::vector<std::string>& blocks_) {
   std::vector<Row> rows;
   auto fixed = [&](const std::string& block, const std::string& variant) {
-    rows.push_back(measured_row(variant, blocks::generate(blocks::find(block), "random", 20000, 3), false, root, yosys));
+    rows.push_back(measured_row(variant, blocks::generate(blocks::find(block), "random", 20000, 3), false));
     rows.back().notes = "20,000 random vectors";
   };
   auto scene = [&](const std::string& block, const std::string& variant, double deg, int n, int steps_col) {
     const auto vf = blocks::pomvec::scene_vectors(block, deg, n);
-    rows.push_back(measured_row(variant, vf, true, root, yosys));
+    rows.push_back(measured_row(variant, vf, true));
     rows.back().notes = mean_steps(vf, steps_col);
   };
   for (const auto& b : blocks_) {

@@ -3,7 +3,8 @@
 //        dm (s40) and exponent dexp (s8), log2(max anisotropy) laniso (u14.10), max_lod (u4)
 //   out: Ae', Be', Ce' codes with shared exponent eexp, |f| = fm 2^(fexp-31) (Fe' = f^2),
 //        log2 major / minor_clamped (s18.10), lod (u12.8), flags (horizon, degenerate,
-//        aniso-clamped, lod-saturated, magnified)
+//        aniso-clamped, lod-saturated, magnified), lrho = log2 rho of trilinear's GL LOD rule
+//        (s18.10, texture/trilinear_lod.hpp)
 //   ref: float footprint (ellipse_ref.hpp) of the analytic Jacobian J = n / q^2 of the same codes:
 //        lod, log2 major, log2 minor_clamped (NaN at the horizon).
 // Error unit: mip levels (|lod - lod_ref|); ulp = LOD LSBs (2^-EllLodF).
@@ -176,6 +177,7 @@ Block make_ellipse() {
               F("lmin", Role::Out, sf(fmt::kEllLogW, fmt::kEllLogF)),
               F("lod", Role::Out, uf(fmt::kEllLodW, fmt::kEllLodF)),
               F("flags", Role::Out, uf(5, 0)),
+              F("lrho", Role::Out, sf(fmt::kEllLogW, fmt::kEllLogF)),
               F("lod_ref", Role::Ref, "f64"),
               F("lmaj_ref", Role::Ref, "f64"),
               F("lmin_ref", Role::Ref, "f64")};
@@ -196,7 +198,8 @@ Block make_ellipse() {
                bits(o.lmaj, fmt::kEllLogW),
                bits(o.lmin, fmt::kEllLogW),
                o.lod,
-               o.flags};
+               o.flags,
+               bits(o.lrho, fmt::kEllLogW)};
   };
   b.ref = ref_of;
   b.error = [](const Row& in, const Row& out, const Row& ref) {

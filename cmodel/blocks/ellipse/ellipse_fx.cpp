@@ -42,11 +42,14 @@ uint64_t recip_of(u128 x, int* e) {
 struct Ell {
   i128 a, b, c;  // exact
   u128 s;        // a + c
+  u128 px, py;   // GL LOD: sums by screen axis, nUx^2 + nVx^2 and nUy^2 + nVy^2 (exact)
 };
 Ell ellipse_of(int64_t ux, int64_t vx, int64_t uy, int64_t vy) {
-  const i128 a = i128(vx) * vx + i128(vy) * vy, c = i128(ux) * ux + i128(uy) * uy;
+  const i128 uxx = i128(ux) * ux, vxx = i128(vx) * vx, uyy = i128(uy) * uy, vyy = i128(vy) * vy;
+  const i128 a = vxx + vyy, c = uxx + uyy;
   const i128 b = -2 * (i128(ux) * vx + i128(uy) * vy);
-  return {a, b, c, static_cast<u128>(a) + static_cast<u128>(c)};
+  return {a, b, c, static_cast<u128>(a) + static_cast<u128>(c), static_cast<u128>(uxx + vxx),
+          static_cast<u128>(uyy + vyy)};
 }
 void set_ellipse(const Ell& el, Out* o) {
   const int k = el.s == 0 ? 0 : std::max(0, msb(el.s) - (fmt::kEllCoefW - 3));
@@ -60,6 +63,12 @@ void set_ellipse(const Ell& el, Out* o) {
 // forward difference, whose ellipse is not scaled).
 void lod_unit(const In& in, const Ell& el, bool f_zero, int64_t lf, int64_t lq, Out* o) {
   const u128 s = el.s;
+  {  // GL LOD: log2 rho = (log2 max(Px', Py') - 4 log2 q) / 2 (Px' = Py' = 0 iff s = 0)
+    const u128 pm = std::max(el.px, el.py);
+    o->lrho = pm == 0 ? kLogNegInf
+                      : static_cast<int32_t>(sat((log2_fx(pm) - int64_t(2 * kNF) * (1 << kL1) - 4 * lq) >> 2,
+                                                 fmt::kEllLogW));
+  }
   if (s == 0) {
     o->flags |= kDegenerate | kMagnify;
     o->lmaj = o->lmin = kLogNegInf;

@@ -28,6 +28,11 @@
 //          logs kept with EllLogF+1 fraction bits, halved (floor) to s(EllLogW).EllLogF;
 //          minor_c = max(minor, major - log2(max_aniso)); lod = clamp(floor(minor_c), 0, max_lod)
 //          as u(EllLodW).EllLodF.
+//   GL LOD (trilinear's rho, the OpenGL / Vulkan rule): Px' = nUx^2 + nVx^2, Py' = nUy^2 + nVy^2
+//          (exact, u(EllRhoW) at 2 EllNumF fraction bits: the squared length of the pixel's x and
+//          y steps in texels, times q^4), lrho = log2 rho = (L(max(Px', Py')) - 2 EllNumF
+//          - 4 log2(q)) / 2 floored to s(EllLogW).EllLogF (kLogNegInf when both are 0). No square
+//          root, no anisotropy clamp; the sampler (tex::trilinear_lod) adds bias and clamps.
 #pragma once
 
 #include <cstdint>
@@ -76,6 +81,7 @@ struct Out {
   uint32_t fm = 0;          // u32 (1.31)
   int32_t fexp = 0;         // s8
   int32_t lmaj = 0, lmin = 0;  // log2 major, log2 minor_clamped, s18.10 (kLogNegInf if none)
+  int32_t lrho = 0;         // GL LOD log2 rho, s18.10 (kLogNegInf if none; 0 at the horizon)
   uint32_t lod = 0;         // u12.8
   uint32_t flags = 0;
   friend bool operator==(const Out&, const Out&) = default;

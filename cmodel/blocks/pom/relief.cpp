@@ -126,6 +126,7 @@ FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, 
     o.steps = r.iters;
     o.n = n;
     o.nonconv = r.nonconv;
+    o.vz_guard = pom::parallax(view).clamped;
     return o;
   }
   o.n = layers_at(m, u, v, view, method, layers);
@@ -134,6 +135,8 @@ FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, 
   o.v = iv + r.v;
   o.steps = r.steps;
   o.discard = r.discard;
+  o.vz_guard = r.clamped;
+  o.back = r.back;
   return o;
 }
 
@@ -143,7 +146,8 @@ TexelShift shift_texel_uv_fx(const Maps& m, int64_t u, int64_t v, int lw, int lh
                              const pom::View& view, Method method, int layers) {
   const int du = fmt::kPomUvF - fmt::kTexUvF;
   const auto r = shift_uv_fx(m, shift_code(u, du - lw), shift_code(v, du - lh), view, method, layers);
-  return {shift_code(r.u, lw - du), shift_code(r.v, lh - du), r.n, r.steps};
+  const uint32_t flags = (r.vz_guard ? kReliefVzGuard : 0) | (r.nonconv ? kReliefNonConv : 0) | (r.back ? kReliefBack : 0);
+  return {shift_code(r.u, lw - du), shift_code(r.v, lh - du), r.n, r.steps, flags};
 }
 
 uint64_t stage_cycles(const std::vector<StagePixel>& px, int fifo_depth) {

@@ -78,6 +78,14 @@ struct FxShift {
   int64_t u = 0, v = 0;
   uint32_t steps = 0, n = 0;
   bool discard = false, nonconv = false;
+  bool vz_guard = false;  // POM: |Vz| < PomVzMin was raised (pom::Parallax::clamped)
+  bool back = false;      // POM: Vz < 0 (mirrored)
+};
+// Guard flags of a pixel's relief step (render::PixelRecord::relief_flags, --dump).
+enum ReliefFlag : uint32_t {
+  kReliefVzGuard = 1,  // POM: |Vz| raised to PomVzMin (grazing view)
+  kReliefNonConv = 2,  // iterative: the iteration cap was reached with |d| >= eps
+  kReliefBack = 4,     // POM: Vz < 0, the view mirrored into the front half-space
 };
 FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, Method method,
                     int layers, bool wrap = true);
@@ -91,6 +99,7 @@ FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, 
 struct TexelShift {
   int64_t u = 0, v = 0;
   uint32_t n = 0, steps = 0;
+  uint32_t flags = 0;  // ReliefFlag
 };
 TexelShift shift_texel_uv_fx(const Maps& m, int64_t u, int64_t v, int lw, int lh,
                              const pom::View& view, Method method, int layers);

@@ -143,7 +143,9 @@ RgbaF bilinear_ref(const Texture& t, int level, double u, double v) {
   const double su = std::ldexp(u, -level) - 0.5, sv = std::ldexp(v, -level) - 0.5;
   const double fx0 = std::floor(su), fy0 = std::floor(sv);
   const double fx = su - fx0, fy = sv - fy0;
-  const int64_t x0 = sat_cast<int64_t>(fx0), y0 = sat_cast<int64_t>(fy0);
+  // Clamped to +-2^62 so that x0 + 1 below cannot overflow (a far texel wraps or clamps anyway).
+  const int64_t x0 = sat_cast<int64_t>(std::clamp(fx0, -0x1p62, 0x1p62));
+  const int64_t y0 = sat_cast<int64_t>(std::clamp(fy0, -0x1p62, 0x1p62));
   const Rgba8 c00 = t.fetch(level, x0, y0), c10 = t.fetch(level, x0 + 1, y0);
   const Rgba8 c01 = t.fetch(level, x0, y0 + 1), c11 = t.fetch(level, x0 + 1, y0 + 1);
   double o[4];

@@ -114,6 +114,8 @@
   X(EllLodW, 12, "lod: unsigned, EllLodF fraction bits, floor, clamped to [0, max_lod]")        \
   X(EllLodF, 8, "")                                                                             \
   X(EllMaxLodW, 4, "max_lod (log2 of the texture size): unsigned integer")                      \
+  X(EllRhoW, 96, "GL LOD sums Px' = nUx^2 + nVx^2, Py' = nUy^2 + nVy^2 (by screen axis): exact, unsigned, 2 EllNumF frac") \
+  X(TexLodBiasW, 14, "trilinear lod bias: signed, TexLodF fraction bits (|bias| <= 16 levels)")  \
   X(EllLatency, 5, "analytic ellipse/LOD pipeline latency in cycles, II = 1")               \
   /* EWA filter, bit-accurate (docs/blocks/ewa.md) */                                          \
   X(EwaCordW, 24, "CORDIC x, y datapath: signed; d = Ae'-Ce', b = Be' block-normalised to W-3 bits") \

@@ -19,12 +19,14 @@ struct PixelRecord {
   int x = 0, y = 0;
   int object = -1;
   double u = 0, v = 0;  // level-0 texels
-  double lod = 0;       // mip level used (EWA: the walk's level; trilinear: the blend position)
+  double lod = 0;       // mip level used (EWA: the walk's level; trilinear: GL lambda, the blend position)
   int texels = 0;       // texels read
   int texels_inside = 0;  // EWA: texels with a non-zero weight (cycle-independent count)
   uint32_t b2_flags = 0;   // C-model engine: B2 flags (ellipse_fx.hpp; kHorizon = B1 guard)
   uint32_t ewa_flags = 0;  // C-model engine, EWA: ewa::fx flags (ewa_fx.hpp)
   int levels = 0;          // C-model engine, EWA: mip levels the set-up tried (ewa::pixel_cost)
+  uint32_t tri_flags = 0;  // trilinear: tex::TriFlag (magnify, min/max lod clamp, pyramid clamp)
+  uint32_t relief_flags = 0;  // relief materials: relief::ReliefFlag (Vz guard, non-convergence)
   double aniso = 1;          // footprint anisotropy major / minor (after the material's clamp)
   double footprint_lod = 0;  // log2 of the clamped minor axis, in [0, coarsest level] (`texunit plan`)
   img::Rgba8 color;
@@ -58,8 +60,8 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter = {}
 
 // Bit-accurate C-model render (docs/blocks/ewa.md): per covered pixel (same visibility as the
 // reference) B1 persp::Unit on the quantised coefficients, B2 ellipse::fx::analytic, then the
-// fixed nearest / bilinear / trilinear (lod = B2's lod: lmin floored to TexLodF bits, clamped to
-// the top level) or EWA fx with the material's weight source and a 1024-texel cap.
+// fixed nearest / bilinear / trilinear (the GL LOD rule on B2's lrho, tex::trilinear_lod, with the
+// material's bias and min / max lod) or EWA fx with the material's weight source and a 1024-texel cap.
 struct CmodelOptions {
   // Per-pixel uv-shift step between B1 and the filter (relief mapping hooks in here): pixel,
   // object, and the B1 u, v codes (s(PerspUvW).TexUvF) to modify in place.
@@ -89,6 +91,28 @@ ewa::Engine engine_of(scene::Filter f);
 Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter = {},
                     const CmodelOptions& opt = {});
 
+// Ground truth (docs/blocks/texture.md "Ground truth"): per covered pixel, ss x ss stratified
+// jittered samples (deterministic) of the surface seen at the pixel centre, each the level-0 texel
+// at the exact perspective (u, v) (point sampled, REPEAT / CLAMP as the texture), on relief
+// materials after the exact ray / height-field intersection (relief::exact_hit); box-weighted over
+// the pixel square, or Gaussian-weighted over the unit disc like the EWA's pixel model. Samples
+// beyond the horizon (q <= 0) are dropped. Records: u, v at the centre, texels = ss^2.
+enum class TruthKernel { Box, Gaussian };
+struct TruthOptions {
+  int ss = 16;
+  TruthKernel kernel = TruthKernel::Box;
+  bool relief = true;     // false: the texture path alone (relief materials as flat)
+  bool progress = false;  // a progress bar on stderr
+};
+Frame render_truth(const scene::Scene& s, const TruthOptions& opt = {});
+
+// PSNR (RGB, 8-bit peak) over a's covered pixels that `keep` accepts (all by default), against the
+// same pixels of b: the background, equal in every render, would inflate a whole-image PSNR.
+// +inf when equal, NaN when no pixel is kept.
+double psnr_covered(const Frame& a, const Frame& b, const std::function<bool(const PixelRecord&)>& keep = {});
+// The pixels of objects whose material has relief (the relief PSNR of issue 13 item 3).
+std::function<bool(const PixelRecord&)> relief_pixels(const scene::Scene& s);
+
 // |a - b| per pixel (max over RGB) mapped to a blue-red heat map, `full_scale` levels = red.
 img::Rgba8Image error_heatmap(const img::Rgba8Image& a, const img::Rgba8Image& b, int full_scale);
 
@@ -96,7 +120,19 @@ img::Rgba8Image error_heatmap(const img::Rgba8Image& a, const img::Rgba8Image& b
 // (N - 4) / (Nmax - 4) on that material's pixels, black elsewhere; nullopt otherwise.
 std::optional<img::Gray8> layers_image(const scene::Scene& s, const Frame& f);
 
-// One CSV row per covered pixel: x,y,u,v,lod,texels,r,g,b,a (atomic write).
+// The per-pixel guard flags the C model raises (B1, B2, trilinear, EWA, relief), one description
+// for the --dump columns and the per-flag counts `render` prints.
+struct PixelFlag {
+  const char* name;
+  uint32_t PixelRecord::*field;
+  uint32_t mask;
+  bool on(const PixelRecord& p) const { return (p.*field & mask) != 0; }
+};
+const std::vector<PixelFlag>& pixel_flags();
+std::vector<size_t> flag_counts(const Frame& f);  // pixels with each flag, pixel_flags() order
+
+// One CSV row per covered pixel (atomic write): x,y,u,v,lod,texels,r,g,b,a, relief_n (layers N),
+// relief_steps (march steps or iterations), then one 0/1 column per pixel_flags() entry.
 void write_dump_csv(const std::string& path, const Frame& f);
 
 }  // namespace tu::render

@@ -36,6 +36,9 @@ struct Material {
   Filter filter = Filter::Ewa;
   WeightSource weights = WeightSource::Formula;
   double max_aniso = 16;
+  // Trilinear's GL LOD rule (texture/trilinear_lod.hpp): lambda + lod_bias clamped to
+  // [min_lod, max_lod] (levels), then to the pyramid.
+  double lod_bias = 0, min_lod = 0, max_lod = 12;
   std::optional<Relief> relief;
 };
 

