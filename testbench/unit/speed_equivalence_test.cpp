@@ -93,6 +93,7 @@ void expect_same_frame(const render::Frame& a, const render::Frame& b) {
                 p.lod == q.lod && p.texels == q.texels && p.texels_inside == q.texels_inside &&
                 p.b2_flags == q.b2_flags && p.ewa_flags == q.ewa_flags && p.levels == q.levels &&
                 p.relief_n == q.relief_n && p.relief_steps == q.relief_steps &&
+                p.tri_flags == q.tri_flags && p.relief_flags == q.relief_flags &&
                 p.color.r == q.color.r && p.color.g == q.color.g && p.color.b == q.color.b &&
                 p.color.a == q.color.a)
         << "record " << i;
