@@ -59,7 +59,8 @@ module tu_ellipse (
   localparam int PW  = DW + RW + 1;                   // det3 mantissa * R (signed)
   localparam logic [QW-1:0] GuardVal = QW'(1) << (tu_formats_pkg::PerspF - tu_formats_pkg::PerspGuardLog2);
   localparam logic signed [31:0] LogMax = 32'((1 << (LW - 1)) - 1);
-  localparam logic signed [31:0] LogMin = -32'(1 << (LW - 1));
+  // -2^(LW-1) as ~(2^(LW-1) - 1): Yosys 0.23 drops the minus of -32'(...) in a localparam.
+  localparam logic signed [31:0] LogMin = ~32'((1 << (LW - 1)) - 1);
   localparam int RhW = tu_formats_pkg::EllRhoW;
   localparam int BW  = tu_formats_pkg::TexLodBiasW;
   localparam int LDW = tu_formats_pkg::EllLodW;

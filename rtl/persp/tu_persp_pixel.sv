@@ -21,7 +21,8 @@ module tu_persp_pixel (
   localparam int CoreLat = 4;
   localparam logic [QW-1:0] GuardVal = QW'(1) << (tu_formats_pkg::PerspF - tu_formats_pkg::PerspGuardLog2);
   localparam logic signed [ProdW-1:0] UMax = ProdW'({1'b0, {(UW-1){1'b1}}});
-  localparam logic signed [ProdW-1:0] UMin = -ProdW'({1'b1, {(UW-1){1'b0}}});
+  // -2^(UW-1) written bit by bit: Yosys 0.23 drops the minus of -ProdW'(...) in a localparam.
+  localparam logic signed [ProdW-1:0] UMin = {{(ProdW-UW+1){1'b1}}, {(UW-1){1'b0}}};
   logic en;
   logic [PW-1:0] pu_q1, pv_q1;
   logic [QW-1:0] q_q1;
