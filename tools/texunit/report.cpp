@@ -6,6 +6,7 @@
 #include "report_relief.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -120,10 +121,49 @@ std::vector<std::string> rtl_files(const std::string& root, const std::string& t
   return rtl::Manifest::load(root).top_sources(top);
 }
 
+namespace {
+// A package (`*_pkg.sv`) enters a top's key with every line but its localparams, and with only
+// the localparams the top's other files name (`pkg::Name`): a constant added for another block
+// does not make every cached synthesis stale, a changed width of this one does.
+std::string package_part(const std::string& pkg, const std::string& users) {
+  std::istringstream in(pkg);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    const auto lp = line.find("localparam");
+    const auto eq = line.find('=');
+    if (lp == std::string::npos || eq == std::string::npos || eq < lp) {
+      out += line + "\n";
+      continue;
+    }
+    auto end = line.find_last_not_of(" \t", eq - 1);
+    auto begin = line.find_last_of(" \t", end);
+    const std::string name = "::" + line.substr(begin + 1, end - begin);
+    for (auto at = users.find(name); at != std::string::npos; at = users.find(name, at + 1)) {
+      const char next = at + name.size() < users.size() ? users[at + name.size()] : ' ';
+      if (!std::isalnum(static_cast<unsigned char>(next)) && next != '_') {
+        out += line + "\n";
+        break;
+      }
+    }
+  }
+  return out;
+}
+bool is_package(const std::string& f) {
+  const std::string name = fs::path(f).filename().string();
+  return name.size() > 7 && name.compare(name.size() - 7, 7, "_pkg.sv") == 0;
+}
+}  // namespace
+
 std::string rtl_hash(const std::string& root, const std::string& top, const std::string& script) {
   uint64_t h = fnv1a(slurp(fs::path(root) / script));
   const auto manifest = rtl::Manifest::load(root);
-  for (const auto& f : manifest.top_sources(top)) h = fnv1a(fs::path(f).filename().string() + slurp(f), h);
+  const auto sources = manifest.top_sources(top);
+  std::string users;
+  for (const auto& f : sources)
+    if (!is_package(f)) users += slurp(f);
+  for (const auto& f : manifest.headers()) users += slurp(f);
+  for (const auto& f : sources)
+    h = fnv1a(fs::path(f).filename().string() + (is_package(f) ? package_part(slurp(f), users) : slurp(f)), h);
   for (const auto& f : manifest.headers()) h = fnv1a(fs::path(f).filename().string() + slurp(f), h);
   char key[17];
   std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(h));
