@@ -1,4 +1,4 @@
-// `texunit plan`: see plan.hpp and README "Reading the report / specialising the unit".
+// `texunit plan`: see plan.hpp and docs/reading-the-report.md.
 #include "plan.hpp"
 
 #include "output.hpp"
