@@ -6,6 +6,7 @@
 //   S2: r = isqrt(d^2 + Be'^2), lam = s + r
 //   S3: log2(lam) -> 2 log2 major
 //   S4: f = det3 * R (R = 1/q mantissa from the core), log2|f| -> 2 log2 minor, clamp, LOD, flags
+`include "tu_assert.svh"
 module tu_ellipse (
   input  logic                                   clk_i,
   input  logic                                   rst_ni,
@@ -321,4 +322,7 @@ module tu_ellipse (
 
   logic unused;
   assign unused = ^{stage_valid, qn0[QW-MW-1:0], apn4[PW-tu_formats_pkg::EllFmW-1:0]};
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {ae_o, be_o, ce_o, eexp_o, fm_o, fexp_o, lmaj_o, lmin_o, lod_o, flags_o})
 endmodule

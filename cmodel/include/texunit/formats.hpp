@@ -52,6 +52,7 @@
   X(GaussXiW, 16, "ellipse-frame coordinates xi, eta (2-D weight table): signed, GaussXiF frac") \
   X(GaussXiF, 14, "")                                                                           \
   X(RecipLatency, 5, "pipeline latency in cycles, II = 1")                        \
+  X(RecipCoreLatency, 4, "tu_recip_core (lookup, c2*dx, s*dx, c0 + t2): 4 stages, II = 1")  \
   /* Adaptive POM layer counter (docs/blocks/relief.md) */                                     \
   X(PomVzW, 16, "view-vector z: signed, PomVzF fraction bits (|Vz| > 1 saturates to 1)")        \
   X(PomVzF, 14, "")                                                                             \
@@ -96,6 +97,7 @@
   X(TexAddrW, 26, "texel RAM word address (RGBA8 words, all levels of several textures)")     \
   X(TexRamLog2Words, 20, "simulation texel RAM of the texture-unit top: 2^N RGBA8 words")      \
   X(PerspLatency, 8, "per-pixel pipeline latency in cycles, II = 1")                          \
+  X(PerspSetupLatency, 2, "per-scanline set-up (tu_persp_setup) latency in cycles, II = 1")   \
   /* Ellipse parameters and LOD (docs/blocks/ellipse.md) */                                    \
   X(EllNumW, 48, "derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac") \
   X(EllNumF, 32, "")                                                                            \
@@ -136,7 +138,9 @@
   X(EwaCountW, 17, "texel counters (box, inside) and the max_texels cap: unsigned integers") \
   X(EwaWsumW, 33, "weight sum: unsigned, GaussSqF fraction bits (exact)")                      \
   X(EwaAccW, 41, "per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)")       \
-  X(EwaNrmW, 23, "weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1")
+  X(EwaNrmW, 23, "weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1") \
+  X(EwaDrainCycles, 5, "tu_ewa_walk: clocks from the last texel to the accumulated sums")        \
+  X(EwaNormCycles, 6, "tu_ewa_walk normalisation: mantissa, 4 reciprocal stages, round")
 
 namespace tu::fmt {
 #define TU_X_DECLARE(name, value, desc) inline constexpr int k##name = (value);
