@@ -1,6 +1,10 @@
 #include "texunit/rtl_gen.hpp"
 
+#include <cctype>
 #include <cstdio>
+#include <ostream>
+#include <regex>
+#include <vector>
 #include <sstream>
 
 #include "ewa/ewa_fx.hpp"
@@ -10,6 +14,7 @@
 #include "gauss/weight.hpp"
 #include "reciprocal/reciprocal.hpp"
 #include "texunit/formats.hpp"
+#include "texunit/schema.hpp"
 
 namespace tu {
 
@@ -24,6 +29,57 @@ std::string hex(uint64_t v, int w) {
   return buf;
 }
 
+std::string lower(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// A schema width expression (C++ over tu::fmt / tu::schema: kTexAddrW) as SystemVerilog over the
+// package (tu_formats_pkg::TexAddrW).
+std::string sv_expr(const std::string& cpp) {
+  static const std::regex name(R"(\bk([A-Z]\w*))");
+  return std::regex_replace(cpp, name, "tu_formats_pkg::$1");
+}
+
+// Enums, flag-bit indices and record widths of schema.hpp, inside the package.
+void schema_decls(std::ostream& os) {
+  struct Item {
+    std::string name;
+    int code;
+    std::string desc;
+  };
+  auto emit_enum = [&](const char* what, int width, const char* prefix, const char* type,
+                       const std::vector<Item>& items) {
+    os << "  // " << what << "\n  typedef enum logic [" << width - 1 << ":0] {\n";
+    for (size_t i = 0; i < items.size(); ++i)
+      os << "    " << prefix << items[i].name << " = " << width << "'d" << items[i].code
+         << (i + 1 < items.size() ? "," : "") << "  // " << items[i].desc << "\n";
+    os << "  } " << type << ";\n";
+  };
+#define TU_X(name, code, desc) {#name, code, desc},
+  emit_enum("filter engine of a span (schema.hpp TU_ENGINE_CODES)", schema::kEngineW, "Eng", "engine_e",
+            {TU_ENGINE_CODES(TU_X)});
+  emit_enum("EWA weight source (schema.hpp TU_WEIGHT_SOURCE_CODES)", schema::kWsrcW, "Wsrc", "wsrc_e",
+            {TU_WEIGHT_SOURCE_CODES(TU_X)});
+#undef TU_X
+  os << "  localparam int EngineW = " << schema::kEngineW << ";\n"
+     << "  localparam int WsrcW = " << schema::kWsrcW << ";\n";
+  os << "  // flag bits (bit indices) of the EWA filter and of the footprint unit\n";
+#define TU_X(name, bit, desc) os << "  localparam int EwaFlag" #name " = " << (bit) << ";  // " << desc << "\n";
+  TU_EWA_FLAG_BITS(TU_X)
+#undef TU_X
+  os << "  localparam int EwaFlagW = " << schema::kEwaFlagW << ";\n";
+#define TU_X(name, bit, desc) os << "  localparam int EllFlag" #name " = " << (bit) << ";  // " << desc << "\n";
+  TU_ELL_FLAG_BITS(TU_X)
+#undef TU_X
+  os << "  localparam int EllFlagW = " << schema::kEllFlagW << ";\n";
+  os << "  // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)\n";
+#define TU_X(name, fields, desc) \
+  os << "  localparam int " #name "W = " << schema::k##name##W << ";  // " << desc << "\n";
+  TU_RECORDS(TU_X)
+#undef TU_X
+}
+
 std::string formats_pkg() {
   std::ostringstream os;
   // Every block uses only its own constants: unused package parameters are expected.
@@ -33,7 +89,41 @@ std::string formats_pkg() {
      << (std::string(desc).empty() ? "" : std::string("  // ") + desc) << "\n";
   TU_FORMAT_PARAMS(TU_X_EMIT)
 #undef TU_X_EMIT
+  schema_decls(os);
   os << "  /* verilator lint_on UNUSEDPARAM */\nendpackage\n";
+  return os.str();
+}
+
+// tu_records.svh: the schema's records as packed structs (see schema.hpp for why not in the package).
+std::string records_svh() {
+  std::ostringstream os;
+  os << kBanner << "// Records of cmodel/include/texunit/schema.hpp (first field = most significant bits),\n"
+     << "// declared once per compilation unit: `include this file before the modules that use it.\n"
+     << "`ifndef TU_RECORDS_SVH\n`define TU_RECORDS_SVH\n";
+  std::vector<std::string> records;
+#define TU_X_NAME(name, fields, desc) records.push_back(#name);
+  TU_RECORDS(TU_X_NAME)
+#undef TU_X_NAME
+  // A field whose width is a record's (kMaterialW) has that record's type.
+  auto field = [&](const char* name, const std::string& width, const char* desc) {
+    std::string type;
+    for (const auto& r : records)
+      if (width == "k" + r + "W") type = "tu_" + lower(r) + "_t";
+    const bool literal = width.find_first_not_of("0123456789") == std::string::npos;
+    if (type.empty())
+      type = width == "1"  ? "logic"
+             : literal     ? "logic [" + std::to_string(std::stoi(width) - 1) + ":0]"
+                           : "logic [" + sv_expr(width) + "-1:0]";
+    os << "  " << type << " " << name << ";  // " << desc << "\n";
+  };
+#define TU_X_FIELD(name, width, desc) field(#name, #width, desc);
+#define TU_X_RECORD(name, fields, desc)                            \
+  os << "// " << desc << "\ntypedef struct packed {\n";           \
+  fields(TU_X_FIELD) os << "} tu_" << lower(#name) << "_t;\n";
+  TU_RECORDS(TU_X_RECORD)
+#undef TU_X_RECORD
+#undef TU_X_FIELD
+  os << "`endif  // TU_RECORDS_SVH\n";
   return os.str();
 }
 
@@ -210,6 +300,7 @@ std::string noise_perm_rom() {
 
 std::map<std::string, std::string> generated_rtl() {
   return {{"rtl/0_pkg/tu_formats_pkg.sv", formats_pkg()},
+          {"rtl/generated/tu_records.svh", records_svh()},
           {"rtl/generated/tu_clip_coef_mm3.sv", clip_roms(false)},
           {"rtl/generated/tu_clip_seg_mm1.sv", clip_roms(true)},
           {"rtl/generated/tu_ewa_atan_rom.sv", ewa_atan_rom()},

@@ -65,6 +65,7 @@ package tu_formats_pkg;
   localparam int GaussXiW = 16;  // ellipse-frame coordinates xi, eta (2-D weight table): signed, GaussXiF frac
   localparam int GaussXiF = 14;
   localparam int RecipLatency = 5;  // pipeline latency in cycles, II = 1
+  localparam int RecipCoreLatency = 4;  // tu_recip_core (lookup, c2*dx, s*dx, c0 + t2): 4 stages, II = 1
   localparam int PomVzW = 16;  // view-vector z: signed, PomVzF fraction bits (|Vz| > 1 saturates to 1)
   localparam int PomVzF = 14;
   localparam int PomIdxF = 11;  // ROM index: round_half_up(min(|Vz|,1) * 2^PomIdxF), unsigned
@@ -106,6 +107,7 @@ package tu_formats_pkg;
   localparam int TexAddrW = 26;  // texel RAM word address (RGBA8 words, all levels of several textures)
   localparam int TexRamLog2Words = 20;  // simulation texel RAM of the texture-unit top: 2^N RGBA8 words
   localparam int PerspLatency = 8;  // per-pixel pipeline latency in cycles, II = 1
+  localparam int PerspSetupLatency = 2;  // per-scanline set-up (tu_persp_setup) latency in cycles, II = 1
   localparam int EllNumW = 48;  // derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac
   localparam int EllNumF = 32;
   localparam int EllNxW = 112;  // exact numerators (span set-up, tu_texture_unit): signed, 2 PerspF frac, |n| < 2^30
@@ -175,5 +177,41 @@ package tu_formats_pkg;
   localparam int BrdfQrLatency = 2;  // front + 1 - 0.786u, c w; II = 1
   localparam int BrdfBlinnLatency = 11;  // front, 10 square-and-multiply stages; II = 1
   localparam int BrdfDshLatency = 11;  // front, c^8 / (c+0.1)^8 squarings, w^2, E, two reciprocals; II = 1
+  localparam int EwaDrainCycles = 5;  // tu_ewa_walk: clocks from the last texel to the accumulated sums
+  localparam int EwaNormCycles = 6;  // tu_ewa_walk normalisation: mantissa, 4 reciprocal stages, round
+  // filter engine of a span (schema.hpp TU_ENGINE_CODES)
+  typedef enum logic [1:0] {
+    EngBilinear = 2'd0,  // bilinear at level 0 (tu_bilinear)
+    EngEwa = 2'd1,  // EWA (tu_ewa)
+    EngTrilinear = 2'd2,  // trilinear between floor(lod) and the next (tu_trilinear)
+    EngNearest = 2'd3  // nearest texel at level 0 (tu_nearest)
+  } engine_e;
+  // EWA weight source (schema.hpp TU_WEIGHT_SOURCE_CODES)
+  typedef enum logic [1:0] {
+    WsrcFormula = 2'd0,  // Gaussian formula (tu_gauss_weight)
+    WsrcTable1d = 2'd1,  // 1-D weight table over Q (tu_weight_table_1d)
+    WsrcTable2d = 2'd2  // 2-D weight table over (xi, eta) (tu_weight_table_2d)
+  } wsrc_e;
+  localparam int EngineW = 2;
+  localparam int WsrcW = 2;
+  // flag bits (bit indices) of the EWA filter and of the footprint unit
+  localparam int EwaFlagUnitDisc = 0;  // B2 horizon or point footprint (no axes): unit disc at level 0
+  localparam int EwaFlagAxisClamp = 1;  // log2 major at level L above min(log2 lim_L, EwaAxisMaxLog2): clamped
+  localparam int EwaFlagLodSat = 2;  // integer lod above the texture's top level: clamped
+  localparam int EwaFlagCapped = 3;  // the box exceeded max_texels: level raised
+  localparam int EwaFlagNoWeight = 4;  // weight sum 0 (unreachable while a, b >= 1; nearest texel at L)
+  localparam int EwaFlagW = 5;
+  localparam int EllFlagHorizon = 0;  // q below the guard: no footprint, every other output 0
+  localparam int EllFlagDegenerate = 1;  // Fe' == 0 (line) or ae == ce == be == 0 (point)
+  localparam int EllFlagAnisoClamp = 2;  // minor axis grown to major / max_aniso
+  localparam int EllFlagLodSat = 3;  // footprint larger than the coarsest level: lod = max_lod
+  localparam int EllFlagMagnify = 4;  // minor_c < 1 texel: lod = 0
+  localparam int EllFlagW = 5;
+  // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
+  localparam int MaterialW = 56;  // material fields of a pixel
+  localparam int ReliefW = 58;  // material relief fields
+  localparam int TriW = 104;  // per-triangle footprint constants
+  localparam int FpixW = 81;  // pixel on its way to the filter
+  localparam int PixW = 139;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

@@ -1,5 +1,7 @@
-// Synchronous FIFO, valid/ready on both sides, Depth entries (power of two), registered storage.
+// Synchronous FIFO, valid/ready on both sides, Depth entries (a power of two >= 2, checked),
+// registered storage.
 // Decouples the fixed-latency B1/B2 pipelines from the data-dependent filter engine.
+`include "tu_assert.svh"
 module tu_fifo #(
   parameter int Width = 8,
   parameter int Depth = 4
@@ -13,6 +15,9 @@ module tu_fifo #(
   input  logic             out_ready_i,
   output logic [Width-1:0] out_data_o
 );
+  // The pointers wrap by overflow and the count compares with Depth: a power of two, at least 2.
+  `TU_ASSERT_PARAM(g_depth_pow2, Depth >= 2 && (Depth & (Depth - 1)) == 0,
+                   "Depth must be a power of two >= 2")
   localparam int PtrW = $clog2(Depth);
   logic [Width-1:0] mem_q [Depth];
   logic [PtrW-1:0]  wr_q, rd_q;
@@ -37,4 +42,7 @@ module tu_fifo #(
   always_ff @(posedge clk_i) begin
     if (push) mem_q[wr_q] <= in_data_i;
   end
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {out_data_o})
 endmodule

@@ -9,6 +9,7 @@
 // Trilinear's GL LOD (texture/trilinear_lod.hpp): Px' = nUx^2 + nVx^2, Py' = nUy^2 + nVy^2 from the
 // S0 products, log2 max(Px', Py') in S1 -> lrho (log2 rho); S4 adds the material's bias and clamps
 // to [min lod, max lod] and to the pyramid (tex::trilinear_lod) -> tlod, tflags.
+`include "tu_assert.svh"
 module tu_ellipse (
   input  logic                                   clk_i,
   input  logic                                   rst_ni,
@@ -393,4 +394,7 @@ module tu_ellipse (
 
   logic unused;
   assign unused = ^{stage_valid, qn0[QW-MW-1:0], apn4[PW-tu_formats_pkg::EllFmW-1:0], pmn1[RhW-LMW-1:0]};
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {ae_o, be_o, ce_o, eexp_o, fm_o, fexp_o, lmaj_o, lmin_o, lod_o, flags_o, lrho_o, tlod_o, tflags_o})
 endmodule

@@ -4,6 +4,7 @@
 // accumulation, normalisation) connected by a one-record hand-over, so the set-up of pixel i+1
 // overlaps the walk of pixel i. Data-dependent cycles; exact count: ewa::stream_cycles
 // (cmodel/blocks/ewa/ewa_cycles.hpp).
+`include "tu_assert.svh"
 module tu_ewa #(
   parameter int CordUnroll = 2,
   parameter int SqrtStep   = 4
@@ -82,4 +83,7 @@ module tu_ewa #(
     .clamp_i(clamp_q), .wsrc_i(wsrc_q), .tex_req_o, .tex_addr_o, .tex_data_i,
     .out_valid_o, .out_ready_i, .rgba_o, .level_o, .visited_o, .inside_o, .flags_o
   );
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {rgba_o, level_o, visited_o, inside_o, flags_o})
 endmodule

@@ -20,6 +20,7 @@
 // Cycles from acceptance to rec_valid_o: 2 + 2 I/U + levels * (6 + RootW/S) + 2; a B1-guard
 // pixel (no texture coordinates: the texture's mean, the top level's single texel, as
 // render::render_cmodel) goes from ACCEPT straight to HAND: 1.
+`include "tu_assert.svh"
 module tu_ewa_setup #(
   parameter int CordUnroll = 2,  // CORDIC iterations per clock (divides EwaCordIter)
   parameter int SqrtStep   = 4   // square-root bits per clock (divides RootW)
@@ -301,7 +302,7 @@ module tu_ewa_setup #(
         lodi_q <= lod_i[tu_formats_pkg::EllLodW-1 -: 4];
         top_q  <= top_i;
         cap_q  <= cap_i;
-        unit_q <= eflags_i[0] || ($signed(lmaj_i) == LogNegInf);
+        unit_q <= eflags_i[tu_formats_pkg::EllFlagHorizon] || ($signed(lmaj_i) == LogNegInf);
         guard_q <= guard_i;
         // B1 guard: the 1x1 top level's texel (0, 0), no walk (render_cmodel)
         lev_q <= top_i;
@@ -313,10 +314,10 @@ module tu_ewa_setup #(
       StPre: begin
         fl_q <= '0;
         if (unit_q) begin
-          fl_q[0] <= 1'b1;
+          fl_q[tu_formats_pkg::EwaFlagUnitDisc] <= 1'b1;
           lev_q   <= '0;
         end else if (lodi_q > top_q) begin
-          fl_q[2] <= 1'b1;
+          fl_q[tu_formats_pkg::EwaFlagLodSat] <= 1'b1;
           lev_q   <= top_q;
         end else begin
           lev_q <= lodi_q;
@@ -357,7 +358,7 @@ module tu_ewa_setup #(
       StAx: begin
         ea_q    <= ea_d;
         eb_q    <= eb_d;
-        fl_q[1] <= axclamp;
+        fl_q[tu_formats_pkg::EwaFlagAxisClamp] <= axclamp;
       end
       StExp: begin
         a_q  <= AxW'(e_pa) << ea_q[ExpF+3:ExpF];
@@ -404,7 +405,7 @@ module tu_ewa_setup #(
       StCap: begin
         if (box > 64'(cap_q) && lev_q < top_q) begin
           lev_q   <= lev_q + 4'd1;
-          fl_q[3] <= 1'b1;
+          fl_q[tu_formats_pkg::EwaFlagCapped] <= 1'b1;
         end
         box_o <= NW'(box);
       end
@@ -439,4 +440,7 @@ module tu_ewa_setup #(
   assign flags_o = fl_q;
   logic unused;
   assign unused = ^{lod_i[tu_formats_pkg::EllLodW-5:0], eflags_i[4:1], atan_unused};
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(RecHandshake, rec_valid_o, rec_ready_i, {level_o, flags_o, guard_o, x0_o, x1_o, y0_o, y1_o, box_o, cu_o, cv_o, xi0_o, eta0_o, dxi_o, deta_o, dxiy_o, detay_o, q0_o, dq0_o, ddq_o, ey0_o, ddqy_o, dqy_o})
 endmodule

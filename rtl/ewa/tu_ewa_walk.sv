@@ -12,6 +12,7 @@
 // at level L (flag kNoWeight).
 // Cycles per pixel from the record hand-over (no back-pressure): 1 + box + 5 + 6, output valid in
 // the last (wsum = 0: 1 + box + 5 + 1 + 2; B1-guard record: 1 + 2, the single texel).
+`include "tu_assert.svh"
 module tu_ewa_walk (
   input  logic                                     clk_i,
   input  logic                                     rst_ni,
@@ -68,8 +69,8 @@ module tu_ewa_walk (
   localparam int RW   = tu_formats_pkg::RecipOutW;
   localparam int NW   = tu_formats_pkg::EwaCountW;
   localparam int AW   = tu_formats_pkg::TexAddrW;
-  localparam int Drain = 5;
-  localparam int NormCycles = 6;
+  localparam int Drain = tu_formats_pkg::EwaDrainCycles;
+  localparam int NormCycles = tu_formats_pkg::EwaNormCycles;
 
   typedef enum logic [2:0] {WIdle, WWalk, WDrain, WNear, WNear2, WNorm, WOut} state_e;
   state_e st_q;
@@ -202,8 +203,8 @@ module tu_ewa_walk (
   logic [WW-1:0] w5;
   always_comb begin
     unique case (wsrc_q)
-      2'd1:    w5 = WW'(w_1_q);
-      2'd2:    w5 = WW'(w_2);
+      tu_formats_pkg::WsrcTable1d: w5 = WW'(w_1_q);
+      tu_formats_pkg::WsrcTable2d: w5 = WW'(w_2);
       default: w5 = w_f_q;
     endcase
     if (!in_q[5]) w5 = '0;
@@ -261,8 +262,11 @@ module tu_ewa_walk (
   assign level_o     = lev_q;
   assign visited_o   = box_q;
   assign inside_o    = ins_q;
-  assign flags_o     = fl_q | {(wsum_q == '0 && !guard_q), 4'b0};
+  assign flags_o     = fl_q | (5'(wsum_q == '0 && !guard_q) << tu_formats_pkg::EwaFlagNoWeight);
 
   logic unused;
   assign unused = ^{hs_unused, x0_q[0]};
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {rgba_o, level_o, visited_o, inside_o, flags_o})
 endmodule

@@ -3,6 +3,7 @@
 //   stage 2: t = floor((c2 + u) * a2), s = c0 + w                      (one multiplier)
 //   stage 3: v = fold(round(s + t))
 // Four multipliers, latency ClipEstrinLatency = 3 (one less than Horner).
+`include "tu_assert.svh"
 module tu_clip_estrin (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -57,4 +58,7 @@ module tu_clip_estrin (
 
   logic unused_stage_valid;
   assign unused_stage_valid = ^stage_valid;
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {v_o})
 endmodule

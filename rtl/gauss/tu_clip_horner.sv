@@ -2,6 +2,7 @@
 //   stage 1: t = floor(c3 * a)          stage 2: t = floor((c2 + t) * a)
 //   stage 3: t = floor((c1 + t) * a)    stage 4: v = fold(round(c0 + t))
 // Three multipliers, latency ClipHornerLatency = 4.
+`include "tu_assert.svh"
 module tu_clip_horner (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -47,4 +48,7 @@ module tu_clip_horner (
 
   logic unused_stage_valid;
   assign unused_stage_valid = ^stage_valid;
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {v_o})
 endmodule

@@ -1,6 +1,7 @@
 // Clip volume, 3-segment piecewise linear (variant mm_p1): comparator + segment table + one
 // multiply-add. Stage 1: |d|, segment select, m = floor(c1 * a). Stage 2: c0 + m, round, fold.
 // Latency ClipP1Latency = 2, II = 1.
+`include "tu_assert.svh"
 module tu_clip_p1 (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -42,4 +43,7 @@ module tu_clip_p1 (
 
   logic unused_stage_valid;
   assign unused_stage_valid = ^stage_valid;
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {v_o})
 endmodule

@@ -3,6 +3,7 @@
 //   done (cycle 4):   out_valid, v = fold(round(acc)); a new input is accepted in the same cycle
 //                     when the output is taken.
 // Bit-identical to the pipelined Horner scheme. Latency ClipSeqLatency = 4, II ClipSeqIi = 4.
+`include "tu_assert.svh"
 module tu_clip_seq (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -60,4 +61,7 @@ module tu_clip_seq (
     end
   end
   tu_clip_fold u_fold (.acc_i(acc_q), .neg_i(neg_q), .v_o(v_o));
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {v_o})
 endmodule

@@ -2,6 +2,7 @@
 //   stage 1: t = 1 - Q/2 (u16.15), s1 = round_half_up(t^2)  (u17.16)
 //   stage 2: s2 = round_half_up(s1^2)     stage 3: w = round_half_up(s2^2), 0 outside
 // Latency GaussLatency = 3.
+`include "tu_assert.svh"
 module tu_gauss_weight (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -49,4 +50,7 @@ module tu_gauss_weight (
 
   logic unused_stage_valid;
   assign unused_stage_valid = ^stage_valid;
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {w_o})
 endmodule

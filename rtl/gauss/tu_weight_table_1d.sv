@@ -5,6 +5,7 @@
 //   stage 2: d = (e1 - e0) * f (signed)                                           (registered)
 //   stage 3: w = e0 + floor((d + 2^(Fb-1)) / 2^Fb), 0 if Q > 1                     (registered)
 // The ROM tu_wtab1d_rom is generated from the C model's table (`texunit gen-rtl`).
+`include "tu_assert.svh"
 module tu_weight_table_1d #(
   parameter int Log2N = 8  // table size N = 2^Log2N (+1 entries); gauss::kWtabRtlLog2N
 ) (
@@ -61,4 +62,7 @@ module tu_weight_table_1d #(
 
   logic unused;
   assign unused = ^{stage_valid, q_i[tu_formats_pkg::GaussQW-1:Fb+IdxW]};
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {w_o})
 endmodule

@@ -7,6 +7,7 @@
 //   stage 3: r0 = e00 + floor((p0 + 2^(Fb-1)) / 2^Fb), r1 likewise; p2 = (r1 - r0) * fy (registered)
 //   stage 4: w = r0 + floor((p2 + 2^(Fb-1)) / 2^Fb), 0 if x > 1 or y > 1            (registered)
 // The ROM tu_wtab2d_rom is generated from the C model's table (`texunit gen-rtl`).
+`include "tu_assert.svh"
 module tu_weight_table_2d #(
   parameter int Log2N = 5  // N = 2^Log2N cells per axis (+1 entries); gauss::kWtab2dRtlLog2N
 ) (
@@ -89,4 +90,7 @@ module tu_weight_table_2d #(
 
   logic unused;
   assign unused = ^{stage_valid, x[XW-1:Fb+AW], y[XW-1:Fb+AW]};
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {w_o})
 endmodule

@@ -8,6 +8,7 @@
 //   S7 multiply   : p_u * R, p_v * R (two signed PW x 25-bit products)
 //   S8 round      : >> (RecipOutF + e - PerspUvF), round half up, saturate to s32.8;
 //                   guarded: u = v = max code, flag = 1
+`include "tu_assert.svh"
 module tu_persp #(
   parameter int Direct = 0  // 1: direct evaluation (three multipliers) instead of accumulators
 ) (
@@ -72,4 +73,7 @@ module tu_persp #(
 
   logic unused;
   assign unused = ^stage_valid;
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, flag_o})
 endmodule

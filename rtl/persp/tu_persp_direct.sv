@@ -1,5 +1,6 @@
 // Direct-evaluation variant of the perspective divide unit (area comparison and co-simulation):
 // p = seed + n * increment per pixel (three multipliers) instead of the accumulators.
+`include "tu_assert.svh"
 module tu_persp_direct (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -19,4 +20,7 @@ module tu_persp_direct (
   output logic                                 flag_o
 );
   tu_persp #(.Direct(1)) u_persp (.*);
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, flag_o})
 endmodule

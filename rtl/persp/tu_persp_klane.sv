@@ -3,6 +3,7 @@
 //   S1 lanes : n == 0 ? lane_j = seed + j * inc (adder chain) : lane_j += K * inc (shift)
 //   S2..S8   : K copies of tu_persp_pixel (K reciprocal cores)
 // Bit-identical to the C model's Model::span_klane<K> (and to every other traversal).
+`include "tu_assert.svh"
 module tu_persp_klane #(
   parameter int K = 4  // lanes, a power of two
 ) (
@@ -73,4 +74,7 @@ module tu_persp_klane #(
 
   logic unused;
   assign unused = ^stage_valid;
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, flag_o})
 endmodule

@@ -18,7 +18,7 @@ module tu_persp_pixel (
   localparam int UW = tu_formats_pkg::PerspUvW;
   localparam int EW = 6;                 // msb position of q, 0..QW-2
   localparam int ProdW = PW + RW + 1;    // signed p * unsigned R
-  localparam int CoreLat = 4;
+  localparam int CoreLat = tu_formats_pkg::RecipCoreLatency;  // tu_recip_core
   localparam logic [QW-1:0] GuardVal = QW'(1) << (tu_formats_pkg::PerspF - tu_formats_pkg::PerspGuardLog2);
   localparam logic signed [ProdW-1:0] UMax = ProdW'({1'b0, {(UW-1){1'b1}}});
   // -2^(UW-1) written bit by bit: Yosys 0.23 drops the minus of -ProdW'(...) in a localparam.

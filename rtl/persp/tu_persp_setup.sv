@@ -7,6 +7,7 @@
 //   S2 add      : p(x) = A x + B y + C (exact, PW + XyW + 2 bits) at x0 and x1 for p_u, p_v, q;
 //                 ovf = some value does not fit its accumulator format (s54.40 / s44.40);
 //                 outputs are the values at x0 modulo 2^W (exact whenever ovf = 0)
+`include "tu_assert.svh"
 module tu_persp_setup (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -38,7 +39,7 @@ module tu_persp_setup (
   localparam int QMW = QW + XW + 1;
   localparam int PSW = PMW + 1;      // A x + B y + C: |.| < 2^(PW+XW) + 2^(PW-1)
   localparam int QSW = QMW + 1;
-  localparam int Depth = 2;
+  localparam int Depth = tu_formats_pkg::PerspSetupLatency;
 
   logic             en;
   logic [Depth-1:0] stage_valid;
@@ -105,4 +106,7 @@ module tu_persp_setup (
 
   logic unused;
   assign unused = ^{stage_valid, pu1[PW-2:0], pv1[PW-2:0], q1[QW-2:0]};
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {pu_o, pv_o, q_o, ovf_o})
 endmodule

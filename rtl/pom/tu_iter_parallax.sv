@@ -4,6 +4,7 @@
 // Outputs fract(T) (16 bits each), the update count and the non-convergence flag.
 // Depth: the same synchronous bricks ROM model as tu_pom_march (uv[14:10]).
 // A pixel takes iters + 3 cycles (accept, iters + 1 tests, output), no stalls.
+`include "tu_assert.svh"
 module tu_iter_parallax
 (
   input  logic                                clk_i,
@@ -111,4 +112,7 @@ module tu_iter_parallax
       endcase
     end
   end
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, iters_o, nonconv_o})
 endmodule

@@ -3,6 +3,7 @@
 //   stage 1: y = (f*T >>> (PomFF+1)) + 255*PomBias
 //   stage 2: N = Nmin + ((y*PomDivM) >> PomDivS) - PomBias, clamped to [max(Nmin,1), max(Nmax,lo)]
 // Latency PomLayersLatency (3), II = 1.
+`include "tu_assert.svh"
 module tu_pom_layers
 (
   input  logic                                clk_i,
@@ -111,4 +112,7 @@ module tu_pom_layers
 
   logic unused;
   assign unused = ^{stage_valid, prod[DivS-1:0]};
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {n_o, neg_o})
 endmodule

@@ -15,6 +15,7 @@
 // next pixel is accepted in that same cycle (its first depth address replaces the unused next
 // one), so a stream of pixels takes k + 1 cycles per pixel (k + 1 compares) without stalls;
 // one pixel alone: accepted in cycle 0, output in cycle k + 2.
+`include "tu_assert.svh"
 module tu_pom_march #(
   parameter int SideW = 1,     // carried with the pixel (the unit's dT and flags)
   parameter int DepthPort = 0  // 0: bricks ROM; 1: external depth RAM (d_* ports)
@@ -203,4 +204,7 @@ module tu_pom_march #(
       end
     end
   end
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, steps_o, a_o, den_o, side_o})
 endmodule

@@ -6,6 +6,7 @@
 //   stage 6    : T'' = T_k + round_half_up(w * dT >> PomWF); wrap: fract(T''), else discard =
 //                T'' outside [0, 1]^2
 // side_i (the unit's back / clamped flags) is carried along unchanged.
+`include "tu_assert.svh"
 module tu_pom_refine #(
   parameter int SideW = 1
 ) (
@@ -44,7 +45,7 @@ module tu_pom_refine #(
   localparam int RF  = tu_formats_pkg::RecipOutF;
   localparam int AwW = DW + WF + RW;    // (a << WF) * R, unsigned
   localparam int ShW = UvW + WW + 1;    // w * dT, signed
-  localparam int CoreLat = 4;
+  localparam int CoreLat = tu_formats_pkg::RecipCoreLatency;  // tu_recip_core
 
   logic en;
   logic [Lat-1:0] stage_valid;
@@ -150,4 +151,7 @@ module tu_pom_refine #(
   // |w*dT| <= |dT| < 2^(UvW-1): the top bits of the product are sign copies.
   logic unused_bits;
   assign unused_bits = ^{stage_valid, su[ShW-1:UvW], sv[ShW-1:UvW]};
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, steps_o, w_o, discard_o, side_o})
 endmodule

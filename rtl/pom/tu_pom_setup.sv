@@ -6,6 +6,7 @@
 //   stage 5    : P  = round_half_up(S*Vxy * R_a >> (p_a + RecipOutF))
 //   stage 6    : dT = round_half_up(P * R_n >> (p_n + RecipOutF))
 // side_i is carried along unchanged (the unit passes the pixel's T and wrap through it).
+`include "tu_assert.svh"
 module tu_pom_setup #(
   parameter int SideW = 1
 ) (
@@ -39,7 +40,7 @@ module tu_pom_setup #(
   localparam int RF  = tu_formats_pkg::RecipOutF;
   localparam int XsW = VzW + SW + 1;   // S*Vx: signed
   localparam int PrW = XsW + RW + 1;   // S*Vx * R_a, P * R_n (P fits in XsW)
-  localparam int CoreLat = 4;
+  localparam int CoreLat = tu_formats_pkg::RecipCoreLatency;  // tu_recip_core
 
   logic en;
   logic [Lat-1:0] stage_valid;
@@ -141,4 +142,7 @@ module tu_pom_setup #(
 
   logic unused_stage_valid;
   assign unused_stage_valid = ^stage_valid;
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {du_o, dv_o, n_o, back_o, clamped_o, side_o})
 endmodule

@@ -8,6 +8,7 @@
 // DepthPort = 0: the engine's bricks ROM; 1: the external depth RAM (d_* ports, 1-cycle read
 // latency) with the map's base and log2 sides given with each pixel (tu_pom_march). side_i is
 // carried to side_o with its pixel (unused: tie to 0).
+`include "tu_assert.svh"
 module tu_pom_unit #(
   parameter int DepthPort = 0,
   parameter int SideW = 1
@@ -87,4 +88,7 @@ module tu_pom_unit #(
     .out_valid_o, .out_ready_i,
     .u_o, .v_o, .steps_o, .w_o, .discard_o, .side_o({back_o, clamped_o, side_o})
   );
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, steps_o, w_o, discard_o, back_o, clamped_o, side_o})
 endmodule

@@ -12,6 +12,7 @@
 // joins the FIFO head with the POM result when the head is shifted (head-of-line), so pixels
 // without a shift stream at 1 pixel / clock and wait only for older shifted pixels.
 // Stream cycles without back-pressure: relief::stage_cycles (same structure, cycle by cycle).
+`include "tu_assert.svh"
 module tu_relief_stage #(
   parameter int SideW = 1,
   // Sideband FIFO entries: more than the pixels the POM path holds (3 + 7 + 2 + 7), so a
@@ -160,4 +161,8 @@ module tu_relief_stage #(
   logic unused;
   assign unused = ^{p_u[PUvW-1:PF], p_v[PUvW-1:PF], p_steps, p_w, p_discard, p_back, p_clamped,
                     l_neg, l_ctrl_ready, l_ctrl_valid, l_stage_valid};
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, n_o, side_o})
+  `TU_ASSERT_HANDSHAKE(InHandshake, in_valid_i, in_ready_o, {u_i, v_i, lw_i, lh_i, rel_i, guard_i, adaptive_i, layers_i, scale_i, hbase_i, hlw_i, hlh_i, side_i})
 endmodule

@@ -1,6 +1,7 @@
 // Reciprocal unit with valid/ready: q (signed RecipInW-bit code) -> 1/q = R * 2^(F - p).
 // Stage 0 normalises q (leading-one detect + left shift) to M in [1,2); q <= 0 raises flag and
 // saturates (R = all ones, p = 0). Then tu_recip_core. Latency RecipLatency, II = 1.
+`include "tu_assert.svh"
 module tu_reciprocal
 (
   input  logic                   clk_i,
@@ -14,7 +15,7 @@ module tu_reciprocal
   output logic [tu_formats_pkg::RecipShiftW-1:0] shift_o,
   output logic                   flag_o
 );
-  localparam int CoreLat = 4;
+  localparam int CoreLat = tu_formats_pkg::RecipCoreLatency;  // tu_recip_core
   logic                 en;
   logic [tu_formats_pkg::RecipLatency-1:0] stage_valid;
 
@@ -61,4 +62,7 @@ module tu_reciprocal
 
   logic unused_stage_valid;
   assign unused_stage_valid = ^stage_valid;
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {mant_o, shift_o, flag_o})
 endmodule

@@ -5,6 +5,7 @@
 // top TexWeightF (= TexUvF) bits of its fraction (truncated), per channel
 // round_half_up(((c00 (1-fx) + c10 fx)(1-fy) + (c01 (1-fx) + c11 fx) fy)). Four reads, one per
 // clock (1-cycle read latency): 6 cycles from acceptance to out_valid, then held until taken.
+`include "tu_assert.svh"
 module tu_bilinear (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -99,4 +100,7 @@ module tu_bilinear (
     if (st_q >= 3'd2 && st_q <= 3'd4) c_q[2'(st_q - 3'd2)] <= tex_data_i;
     if (st_q == 3'd5) rgba_o <= blend;
   end
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {rgba_o})
 endmodule

@@ -3,6 +3,7 @@
 // B1-guard pixel: texel (0, 0) of the 1x1 top level (the texture's mean, as render_cmodel).
 // One read (1-cycle latency): accepted at t, output valid at t + 3, accepts again the clock after
 // its output is taken (ewa::stream_cycles).
+`include "tu_assert.svh"
 module tu_nearest (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -59,4 +60,7 @@ module tu_nearest (
     end
     if (st_q == 2'd2) rgba_o <= tex_data_i;
   end
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {rgba_o})
 endmodule

@@ -6,6 +6,7 @@
 //   nux = kux + m y, nvx = kvx + nn y (constant along the row), nuy0 = kuy - m x0, nvy0 = kvy - nn x0.
 // Latency 2 (S1: four products with the 12-bit indices, S2: sums), II = 1, same as
 // tu_persp_setup. side_i is carried along unchanged.
+`include "tu_assert.svh"
 module tu_num_setup #(
   parameter int SideW = 1
 ) (
@@ -77,4 +78,7 @@ module tu_num_setup #(
 
   logic unused;
   assign unused = ^stage_valid;
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {nux_o, nvx_o, nuy_o, nvy_o, m_o, nn_o, side_o})
 endmodule

@@ -3,6 +3,7 @@
 // unit accumulates itself), the B1 accumulator q of the pixel (q0 + n G, exact, for tu_ellipse),
 // and the B2 numerators: nux, nvx constant along the row, nuy -= m, nvy -= nn per pixel (exact),
 // each rounded half up to s(EllNumW).EllNumF and saturated (ellipse::fx::round_num).
+`include "tu_assert.svh"
 module tu_span_expand #(
   parameter int SideW = 1
 ) (
@@ -107,4 +108,7 @@ module tu_span_expand #(
   assign nvx_o = round_num(nvx_q);
   assign nuy_o = round_num(nuy_q);
   assign nvy_o = round_num(nvy_q);
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {pu0_o, pv0_o, q0_o, a_o, d_o, g_o, n_o, x_o, q_o, nux_o, nvx_o, nuy_o, nvy_o, side_o})
 endmodule

@@ -4,6 +4,7 @@
 // tu_bilinear at l and then at l + 1, and per channel round_half_up(a (1 - f) + b f) with TexLodF
 // fraction bits. One pixel in flight: accepted at t, output valid at t + 15 (one pass: t + 8),
 // accepts again the clock after its output is taken (ewa::stream_cycles).
+`include "tu_assert.svh"
 module tu_trilinear (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -104,4 +105,7 @@ module tu_trilinear (
     if (b_out_valid && (state_q == WaitA ? single_q : state_q == WaitB))
       rgba_o <= state_q == WaitA ? b_rgba : blend;
   end
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {rgba_o, level_o})
 endmodule

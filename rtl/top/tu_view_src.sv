@@ -2,6 +2,7 @@
 // a relief span, in pixel order (the texture unit's view port). The testbench writes the words
 // during reset through a 32-bit port (word i: low half at address 2i, high half at 2i + 1); the
 // model then offers them in order on a valid/ready port. Not synthesised for area.
+`include "tu_assert.svh"
 module tu_view_src #(
   parameter int AddrW = tu_formats_pkg::TexAddrW,
   parameter int Words = 1 << 16
@@ -33,4 +34,7 @@ module tu_view_src #(
   end
   assign out_valid_o = rd_q < count_q;
   assign out_data_o  = mem_q[IdxW'(rd_q)];
+
+  // valid/ready protocol checks (rtl/common/tu_assert.svh)
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {out_data_o})
 endmodule

@@ -43,6 +43,7 @@
 #include "persp/persp.hpp"
 #include "texunit/fixed.hpp"
 #include "texunit/formats.hpp"
+#include "texunit/schema.hpp"
 
 namespace tu::ellipse::fx {
 
@@ -66,13 +67,11 @@ struct In {
   uint32_t max_lod = 12;                       // u4.0
 };
 
-enum Flag : uint32_t {
-  kHorizon = 1,      // q below the guard: no footprint, every other output 0
-  kDegenerate = 2,   // Fe' == 0 (line) or ae == ce == be == 0 (point)
-  kAnisoClamp = 4,   // minor axis grown to major / max_aniso
-  kLodSat = 8,       // footprint larger than the coarsest level: lod = max_lod
-  kMagnify = 16,     // minor_c < 1 texel: lod = 0
-};
+// Flag bits: texunit/schema.hpp TU_ELL_FLAG_BITS (kHorizon, kDegenerate, kAnisoClamp, kLodSat,
+// kMagnify), shared with the RTL.
+#define TU_X_FLAG(name, bit, desc) k##name = 1u << (bit),
+enum Flag : uint32_t { TU_ELL_FLAG_BITS(TU_X_FLAG) };
+#undef TU_X_FLAG
 
 struct Out {
   uint64_t ae = 0, ce = 0;  // block floating point, value = code * 2^(eexp - 2 EllNumF)

@@ -23,7 +23,7 @@ int walk_cycles(const PixelCost& c) {
   if (c.guard) return 3;  // hand-over, read, data
   // hand-over clock, one clock per texel, 5 drain clocks (weight pipeline + accumulate), then
   // normalisation (6: mantissa + 4 reciprocal stages + round) or the nearest texel (1 + 2).
-  return 1 + static_cast<int>(c.box) + 5 + (c.no_weight ? 3 : 6);
+  return 1 + static_cast<int>(c.box) + fmt::kEwaDrainCycles + (c.no_weight ? 3 : fmt::kEwaNormCycles);
 }
 
 uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival,

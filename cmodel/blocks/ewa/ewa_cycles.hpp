@@ -24,8 +24,8 @@ struct EngineParams {
   int root_w = 16;  // radicand root bits (tu_ewa_setup RootW)
 };
 
-// The texture unit's filter engines (tu_texture_unit filt_i codes).
-enum class Engine { Bilinear = 0, Ewa = 1, Trilinear = 2, Nearest = 3 };
+// The texture unit's filter engines (tu_texture_unit filt_i codes, texunit/schema.hpp).
+using Engine = schema::Engine;
 
 struct PixelCost {
   int levels = 1;          // levels tried (1 + cap fallbacks)

@@ -35,6 +35,7 @@
 #include "ewa/ewa_ref.hpp"
 #include "texture/texture.hpp"
 #include "texunit/formats.hpp"
+#include "texunit/schema.hpp"
 
 namespace tu::ewa::fx {
 
@@ -50,14 +51,12 @@ struct In {
   ellipse::fx::Out b2;   // ae, be, ce, lmaj, lmin, lod, flags are used
 };
 
-enum Flag : uint32_t {
-  kUnitDisc = 1,   // B2 horizon or point footprint (no axes): unit disc at level 0
-  kAxisClamp = 2,  // log2 major at level L above min(log2 lim_L, EwaAxisMaxLog2): clamped
-  kLodSat = 4,     // integer lod above the texture's top level: clamped
-  kCapped = 8,     // the box exceeded max_texels: level raised
-  kNoWeight = 16,  // weight sum 0 (unreachable while a, b >= 1; nearest texel at L)
-};
-inline constexpr int kFlagW = 5;
+// Flag bits: texunit/schema.hpp TU_EWA_FLAG_BITS (kUnitDisc, kAxisClamp, kLodSat, kCapped,
+// kNoWeight), shared with the RTL.
+#define TU_X_FLAG(name, bit, desc) k##name = 1u << (bit),
+enum Flag : uint32_t { TU_EWA_FLAG_BITS(TU_X_FLAG) };
+#undef TU_X_FLAG
+inline constexpr int kFlagW = schema::kEwaFlagW;
 
 // Per-pixel set-up at the final walk level (intermediate values the RTL compares).
 struct PixelSetup {

@@ -216,7 +216,7 @@ struct Model {
 using Unit = Model<fmt::kPerspF>;
 
 // Latency in cycles of the per-scanline set-up RTL (rtl/persp/tu_persp_setup.sv), II = 1.
-inline constexpr int kSetupLatency = 2;
+inline constexpr int kSetupLatency = fmt::kPerspSetupLatency;
 
 // ---------------- float reference (double, GLM) ----------------
 struct Camera {

@@ -80,6 +80,7 @@
   X(GaussXiW, 16, "ellipse-frame coordinates xi, eta (2-D weight table): signed, GaussXiF frac") \
   X(GaussXiF, 14, "")                                                                           \
   X(RecipLatency, 5, "pipeline latency in cycles, II = 1")                        \
+  X(RecipCoreLatency, 4, "tu_recip_core (lookup, c2*dx, s*dx, c0 + t2): 4 stages, II = 1")  \
   /* Adaptive POM layer counter (docs/blocks/relief.md) */                                     \
   X(PomVzW, 16, "view-vector z: signed, PomVzF fraction bits (|Vz| > 1 saturates to 1)")        \
   X(PomVzF, 14, "")                                                                             \
@@ -124,6 +125,7 @@
   X(TexAddrW, 26, "texel RAM word address (RGBA8 words, all levels of several textures)")     \
   X(TexRamLog2Words, 20, "simulation texel RAM of the texture-unit top: 2^N RGBA8 words")      \
   X(PerspLatency, 8, "per-pixel pipeline latency in cycles, II = 1")                          \
+  X(PerspSetupLatency, 2, "per-scanline set-up (tu_persp_setup) latency in cycles, II = 1")   \
   /* Ellipse parameters and LOD (docs/blocks/ellipse.md) */                                    \
   X(EllNumW, 48, "derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac") \
   X(EllNumF, 32, "")                                                                            \
@@ -195,7 +197,9 @@
   X(BrdfSt16Latency, 5, "front + base, four squarings; II = 1")                                 \
   X(BrdfQrLatency, 2, "front + 1 - 0.786u, c w; II = 1")                                       \
   X(BrdfBlinnLatency, 11, "front, 10 square-and-multiply stages; II = 1")                      \
-  X(BrdfDshLatency, 11, "front, c^8 / (c+0.1)^8 squarings, w^2, E, two reciprocals; II = 1")
+  X(BrdfDshLatency, 11, "front, c^8 / (c+0.1)^8 squarings, w^2, E, two reciprocals; II = 1")       \
+  X(EwaDrainCycles, 5, "tu_ewa_walk: clocks from the last texel to the accumulated sums")        \
+  X(EwaNormCycles, 6, "tu_ewa_walk normalisation: mantissa, 4 reciprocal stages, round")
 
 namespace tu::fmt {
 #define TU_X_DECLARE(name, value, desc) inline constexpr int k##name = (value);

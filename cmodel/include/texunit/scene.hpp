@@ -12,6 +12,7 @@
 
 #include "persp/persp.hpp"
 #include "texture/texture.hpp"
+#include "texunit/schema.hpp"
 
 namespace tu::scene {
 
@@ -20,7 +21,7 @@ struct SceneError : std::runtime_error {
 };
 
 enum class Filter { Nearest, Bilinear, Trilinear, Ewa };
-enum class WeightSource { Formula, Table1d, Table2d };
+using WeightSource = schema::WeightSource;  // EWA weight source: its RTL code is the enum value
 enum class ReliefMethod { PomFixed, PomAdaptive, Iterative };
 
 struct Relief {

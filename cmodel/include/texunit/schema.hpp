@@ -1,0 +1,123 @@
+// texunit schema: the ONE description of the codes, flag bits and records the C model and the RTL
+// exchange (beside formats.hpp, which holds the widths). `texunit gen-rtl` writes them into
+// rtl/0_pkg/tu_formats_pkg.sv (enums, flag-bit indices, record widths) and
+// rtl/generated/tu_records.svh (packed structs); GeneratedRtl.IsFresh checks both.
+//
+// Why records go to an `include file and not into the package: Icarus Verilog 11 aborts on a
+// package-qualified struct type (tu_formats_pkg::rec_t) and Yosys 0.23 parses no `import`, so the
+// structs are declared once at compilation-unit scope (include guard); their fields are plain
+// logic vectors (an enum-typed field inside such a struct breaks Yosys 0.23).
+#pragma once
+
+#include <cstdint>
+
+#include "texunit/formats.hpp"
+
+// ---- codes: X(Name, code, description) ----
+// Filter engine of a span (tu_texture_unit filt_i; SV tu_formats_pkg::EngBilinear ...).
+#define TU_ENGINE_CODES(X)                                                    \
+  X(Bilinear, 0, "bilinear at level 0 (tu_bilinear)")                         \
+  X(Ewa, 1, "EWA (tu_ewa)")                                                   \
+  X(Trilinear, 2, "trilinear between floor(lod) and the next (tu_trilinear)") \
+  X(Nearest, 3, "nearest texel at level 0 (tu_nearest)")
+// EWA weight source (tu_ewa wsrc_i; SV tu_formats_pkg::WsrcFormula ...).
+#define TU_WEIGHT_SOURCE_CODES(X)                               \
+  X(Formula, 0, "Gaussian formula (tu_gauss_weight)")           \
+  X(Table1d, 1, "1-D weight table over Q (tu_weight_table_1d)") \
+  X(Table2d, 2, "2-D weight table over (xi, eta) (tu_weight_table_2d)")
+
+// ---- flag bits: X(Name, bit, description) ----
+// EWA filter output (ewa::fx::Flag, tu_ewa flags_o; SV tu_formats_pkg::EwaFlagUnitDisc ...).
+#define TU_EWA_FLAG_BITS(X)                                                               \
+  X(UnitDisc, 0, "B2 horizon or point footprint (no axes): unit disc at level 0")         \
+  X(AxisClamp, 1, "log2 major at level L above min(log2 lim_L, EwaAxisMaxLog2): clamped") \
+  X(LodSat, 2, "integer lod above the texture's top level: clamped")                      \
+  X(Capped, 3, "the box exceeded max_texels: level raised")                               \
+  X(NoWeight, 4, "weight sum 0 (unreachable while a, b >= 1; nearest texel at L)")
+// Footprint unit (ellipse::fx::Flag, tu_ellipse flags_o; SV tu_formats_pkg::EllFlagHorizon ...).
+#define TU_ELL_FLAG_BITS(X)                                               \
+  X(Horizon, 0, "q below the guard: no footprint, every other output 0")  \
+  X(Degenerate, 1, "Fe' == 0 (line) or ae == ce == be == 0 (point)")      \
+  X(AnisoClamp, 2, "minor axis grown to major / max_aniso")               \
+  X(LodSat, 3, "footprint larger than the coarsest level: lod = max_lod") \
+  X(Magnify, 4, "minor_c < 1 texel: lod = 0")
+
+// ---- records (SV `typedef struct packed tu_<name>_t`, first field most significant) ----
+// X(field, width, description); a width is a C++ constant expression over tu::fmt (kName) and the
+// widths above (kEngineW, kWsrcW, record widths kMaterialW ...); the SV text is the same
+// expression over tu_formats_pkg.
+// Material fields a pixel carries to the filter.
+#define TU_REC_MATERIAL(X)                                             \
+  X(tbase, kTexAddrW, "colour texture: base word address in the texel RAM") \
+  X(tlw, 4, "colour texture: log2 width")                              \
+  X(tlh, 4, "colour texture: log2 height")                             \
+  X(tclamp, 1, "1: clamp, 0: wrap")                                    \
+  X(wsrc, kWsrcW, "EWA weight source (Wsrc* codes)")                   \
+  X(cap, kEwaCountW, "EWA texel cap")                                  \
+  X(filt, kEngineW, "filter engine (Eng* codes)")
+// Material relief fields, used up by the relief stage.
+#define TU_REC_RELIEF(X)                             \
+  X(rel, 1, "POM relief on")                         \
+  X(radapt, 1, "adaptive layer count")               \
+  X(rlayers, kPomNW, "layers (1..63)")               \
+  X(rscale, kPomSW, "height scale S")                \
+  X(hbase, kTexAddrW, "depth map: base word address") \
+  X(hlw, 4, "depth map: log2 width")                 \
+  X(hlh, 4, "depth map: log2 height")
+// Per-triangle footprint constants a pixel carries to tu_ellipse.
+#define TU_REC_TRI(X)                        \
+  X(dm, kEllDetW, "det3 mantissa")           \
+  X(dexp, kEllDetExpW, "det3 exponent")      \
+  X(laniso, kEllAnisoW, "log2(max anisotropy)") \
+  X(maxlod, kEllMaxLodW, "max lod")          \
+  X(lbias, kTexLodBiasW, "trilinear lod bias (s14.8)") \
+  X(lminlod, kEllLodW, "trilinear min lod")  \
+  X(lmaxlod, kEllLodW, "trilinear max lod")
+// A pixel on its way to the filter: position, B1 span set-up overflow, material.
+#define TU_REC_FPIX(X)                       \
+  X(x, kPerspXyW, "pixel x")                 \
+  X(y, kPerspXyW, "pixel y")                 \
+  X(ovf, 1, "B1 span set-up overflow")       \
+  X(mat, kMaterialW, "material (tu_material_t)")
+// A pixel before the relief stage.
+#define TU_REC_PIX(X)                        \
+  X(fpix, kFpixW, "tu_fpix_t")               \
+  X(rel, kReliefW, "relief fields (tu_relief_t)")
+
+// X(Name, fields macro, description); a record's width is kNameW (SV tu_formats_pkg::NameW), its
+// type tu_name_t.
+#define TU_RECORDS(X)                                         \
+  X(Material, TU_REC_MATERIAL, "material fields of a pixel")  \
+  X(Relief, TU_REC_RELIEF, "material relief fields")          \
+  X(Tri, TU_REC_TRI, "per-triangle footprint constants")      \
+  X(Fpix, TU_REC_FPIX, "pixel on its way to the filter")      \
+  X(Pix, TU_REC_PIX, "pixel before the relief stage")
+
+namespace tu::schema {
+using namespace tu::fmt;
+
+#define TU_X_ENUM(name, code, desc) name = (code),
+enum class Engine { TU_ENGINE_CODES(TU_X_ENUM) };
+enum class WeightSource { TU_WEIGHT_SOURCE_CODES(TU_X_ENUM) };
+#undef TU_X_ENUM
+inline constexpr int kEngineW = 2;
+inline constexpr int kWsrcW = 2;
+#define TU_X_COUNT(name, code, desc) +1
+inline constexpr int kEwaFlagW = 0 TU_EWA_FLAG_BITS(TU_X_COUNT);
+inline constexpr int kEllFlagW = 0 TU_ELL_FLAG_BITS(TU_X_COUNT);
+#undef TU_X_COUNT
+#define TU_X_MAX(name, code, desc) && (code) < (1 << W)
+#define W kEngineW
+static_assert(true TU_ENGINE_CODES(TU_X_MAX), "an engine code does not fit kEngineW");
+#undef W
+#define W kWsrcW
+static_assert(true TU_WEIGHT_SOURCE_CODES(TU_X_MAX), "a weight-source code does not fit kWsrcW");
+#undef W
+#undef TU_X_MAX
+
+#define TU_X_FIELD_W(field, width, desc) +(width)
+#define TU_X_RECORD_W(name, fields, desc) inline constexpr int k##name##W = 0 fields(TU_X_FIELD_W);
+TU_RECORDS(TU_X_RECORD_W)
+#undef TU_X_RECORD_W
+#undef TU_X_FIELD_W
+}  // namespace tu::schema
