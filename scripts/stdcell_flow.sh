@@ -19,11 +19,13 @@ target=${TU_ABC_TARGET_PS:-6667}
 command -v yosys >/dev/null || { echo '{"error": "yosys not installed"}'; exit 3; }
 command -v sta >/dev/null || { echo '{"error": "OpenSTA (sta) not installed"}'; exit 3; }
 [ -f "$lib" ] || { echo "{\"error\": \"$lib missing (package qflow-tech-osu018)\"}"; exit 3; }
+rtl=$(cd "$(dirname "$0")/../rtl" && pwd)
+inc="-I$rtl/common -I$rtl/generated"  # `include files (rtl/manifest.json include_dirs)
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 mkdir -p "$(dirname "$net")"
 printf 'strash\ndc2\nmap -D %s\ntopo\nbuffer -p\nupsize -D %s\ndnsize -D %s\n' "$target" "$target" "$target" > "$dir/abc.script"
-yosys -q -l "$dir/ylog" -p "read_verilog -sv $*; hierarchy -top $top; synth -flatten -top $top -run :fine;
+yosys -q -l "$dir/ylog" -p "read_verilog -sv $inc $*; hierarchy -top $top; synth -flatten -top $top -run :fine;
   tee -q -o $dir/mem.il dump t:\$mem_v2; opt -fast -full; memory_map; opt -full; maccmap; techmap; opt -fast;
   dfflibmap -liberty $lib; abc -liberty $lib -D $target -script $dir/abc.script; opt_clean;
   tee -q -o $dir/stat.txt stat -liberty $lib; write_verilog -noattr -noexpr $net" >/dev/null
