@@ -38,6 +38,23 @@ case $case in
     "$tu" plan default --json --out "$tmp/cfg.sv" >"$tmp/p.json"
     [ "$(val "$tmp/p.json" "d['filter'], d['relief'], d['persp'].split('/')[0]")" = "('ewa', True, 'persp')" ] || fail "$(cat "$tmp/p.json")"
     grep -q "localparam bit HasEwa = 1'b1;" "$tmp/cfg.sv" || fail "HasEwa"
+    # No light in the default scene: no shading stage.
+    [ "$(val "$tmp/p.json" "d['shading']")" = False ] || fail "shading $(cat "$tmp/p.json")"
+    grep -q "localparam bit HasShading = 1'b0;" "$tmp/cfg.sv" || fail "HasShading"
+    ;;
+  plan_shaded_sphere)
+    # A light: the shading stage with the cheapest model within max_brdf_mad (0.01: F_QR, MAD
+    # 0.0082, the fewest cells); a tighter budget (0.002) needs F_ST16; a model the material names wins.
+    "$tu" plan docs/scenes/shaded_sphere.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
+    [ "$(val "$tmp/p.json" "d['shading']['model']")" = "brdf/qr" ] || fail "$(cat "$tmp/p.json")"
+    grep -q "localparam bit HasShading = 1'b1;" "$tmp/cfg.sv" || fail "HasShading"
+    grep -q "localparam int ShadeModel = 6;" "$tmp/cfg.sv" || fail "ShadeModel"
+    sed 's/"max_brdf_mad": 0.01/"max_brdf_mad": 0.002/' docs/scenes/shaded_sphere.json >"$tmp/tight.json"
+    "$tu" plan "$tmp/tight.json" --json >"$tmp/p2.json"
+    [ "$(val "$tmp/p2.json" "d['shading']['model']")" = "brdf/st16" ] || fail "$(cat "$tmp/p2.json")"
+    sed 's/"specular": {"n": 40/"specular": {"model": "dsh", "n": 40/' docs/scenes/shaded_sphere.json >"$tmp/pinned.json"
+    "$tu" plan "$tmp/pinned.json" --json >"$tmp/p3.json"
+    [ "$(val "$tmp/p3.json" "d['shading']['model'], d['shading']['why']")" = "('brdf/dsh', 'named by the materials (MAD 0.00251)')" ] || fail "$(cat "$tmp/p3.json")"
     ;;
   plan_ui_quad)
     # Head-on, magnified: bilinear instead of EWA, no relief hardware; fewer cells than the full unit.
@@ -53,15 +70,15 @@ case $case in
     # The package lints (-Wall) as the RTL top would read it.
     cat >"$tmp/tu_cfg_user.sv" <<'SV'
 module tu_cfg_user (
-  output logic [7:0]  has_o,
+  output logic [8:0]  has_o,
   output logic [2:0]  wsrc_o,
   output logic [31:0] sizes_o
 );
   assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasTriFilter, tu_unit_cfg_pkg::HasNearest, tu_unit_cfg_pkg::HasRelief,
-                  tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax};
+                  tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax, tu_unit_cfg_pkg::HasShading};
   assign wsrc_o = tu_unit_cfg_pkg::WeightSources;
   assign sizes_o = tu_unit_cfg_pkg::PomMaxLayers + tu_unit_cfg_pkg::WtabLog2N + tu_unit_cfg_pkg::Wtab2dLog2N +
-                   tu_unit_cfg_pkg::PerspLanes;
+                   tu_unit_cfg_pkg::PerspLanes + tu_unit_cfg_pkg::ShadeModel;
 endmodule
 SV
     verilator --lint-only -Wall "$tmp/tu_unit_cfg_pkg.sv" "$tmp/tu_cfg_user.sv" || fail "package does not lint"

@@ -148,6 +148,7 @@ void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::stri
 // `refs`: the texture path.
 bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
                      const std::string& out_dir, int threads);
+bool demo_render_shaded(const std::string& out_dir, int threads);
 }  // namespace
 
 bool demo_render(const std::string& out_dir, int threads) {
@@ -197,7 +198,8 @@ bool demo_render(const std::string& out_dir, int threads) {
   const Refs flat_refs{ewa_flat, truth_flat}, relief_refs{ewa, truth};
   demo_render_cmodel(flat, flat_refs, out_dir, threads);
   demo_render_relief(s, relief_refs, out_dir, threads);
-  return demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
+  const bool rtl_ok = demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
+  return demo_render_shaded(out_dir, threads) && rtl_ok;
 }
 
 namespace {
@@ -328,6 +330,37 @@ bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const 
   std::printf("%s\n", ok ? "RTL texture unit == C model on every pixel"
                           : "MISMATCH: RTL texture unit and C model disagree (see above)");
   return ok;
+}
+
+// The shaded scene (docs/scenes/shaded_sphere.json: one point light, diffuse + the unit's F_MSH
+// highlight on a checkered sphere with vertex normals) through the three engines.
+bool demo_render_shaded(const std::string& out_dir, int threads) {
+  const char* path = "docs/scenes/shaded_sphere.json";
+  if (!std::filesystem::exists(path)) {
+    std::printf("\nshaded scene: %s not found (run the demo from the repository root): skipped\n", path);
+    return true;
+  }
+  const scene::Scene s = scene::load(path);
+  const auto ref = render::render_ref(s);
+  render::CmodelOptions copt;
+  copt.threads = threads;
+  const auto fx = render::render_cmodel(s, std::nullopt, copt);
+  cosim::RtlRenderOptions o;
+  o.threads = threads;
+  const auto rtl = cosim::render_rtl(s, o);
+  const auto dir = std::filesystem::path(out_dir);
+  img::write_png_rgba((dir / "shaded_ref.png").string(), ref.image);
+  img::write_png_rgba((dir / "shaded_cmodel.png").string(), fx.image);
+  img::write_png_rgba((dir / "shaded_rtl.png").string(), rtl.frame.image);
+  const double n = static_cast<double>(std::max<size_t>(1, rtl.frame.pixels.size()));
+  std::printf("\nshaded scene %s (%zu covered pixels; one light, diffuse + %s highlight after the filter):\n"
+              "  C model %s vs the float reference; RTL: %llu mismatches against the C model, %.3f cycles/pixel, "
+              "predicted %.3f (%+.3f %%); images %s/shaded_{ref,cmodel,rtl}.png\n",
+              path, rtl.frame.pixels.size(), brdf::name(o.shade_model).c_str(), db(render::psnr_covered(fx, ref)).c_str(),
+              (unsigned long long)rtl.mismatches, double(rtl.cycles) / n, double(rtl.predicted_cycles) / n,
+              100.0 * (double(rtl.predicted_cycles) / double(std::max<uint64_t>(1, rtl.cycles)) - 1), out_dir.c_str());
+  if (!rtl.ok()) std::printf("  first mismatch: %s\n", rtl.first_mismatch.c_str());
+  return rtl.ok() && rtl.cycles == rtl.predicted_cycles;
 }
 }  // namespace
 
