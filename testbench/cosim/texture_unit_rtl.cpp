@@ -107,6 +107,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (o.relief && m.relief && m.relief->method == scene::ReliefMethod::Iterative)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/relief/method: iterative parallax is not in "
                                   "the RTL texture unit (its relief stage runs POM); render without relief (--no-relief)");
+  for (const auto& [name, m] : s.materials)
+    if (!m.clip.empty() && o.filter.value_or(m.filter) == scene::Filter::Ewa)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/clip: EWA border weights are not in the RTL "
+                                  "texture unit yet (C model and float reference only); render with --clip off");
   render::CmodelOptions copt;
   copt.weights = o.weights;
   copt.relief = o.relief;
