@@ -157,7 +157,8 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           break;
         }
         case scene::Filter::Ewa: {
-          const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels});
+          const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels,
+                                                  m.clip.empty() ? nullptr : &clip::variant(m.clip)});
           rec.color = r.color;
           rec.lod = r.level;
           rec.texels = static_cast<int>(r.texels_visited);

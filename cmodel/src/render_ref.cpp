@@ -153,7 +153,7 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
           rec.texels = 8;
           break;
         case scene::Filter::Ewa: {
-          const auto r = ewa::filter_ref(tx, u, v, j, {m.max_aniso, ewa::kDefaultMaxTexels});
+          const auto r = ewa::filter_ref(tx, u, v, j, {m.max_aniso, ewa::kDefaultMaxTexels, !m.clip.empty()});
           rec.color = to8(r.color);
           rec.lod = r.level;
           rec.texels = r.texels_visited;

@@ -1,5 +1,7 @@
 #include "texunit/scene.hpp"
 
+#include "gauss/clip.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -249,6 +251,10 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
   const auto w = n.str("weights", std::string("formula"), {"formula", "table1d", "table2d"});
   m.weights = w == "table1d" ? WeightSource::Table1d : w == "table2d" ? WeightSource::Table2d
                                                                       : WeightSource::Formula;
+  std::vector<std::string> clips{"off"};
+  for (const auto& v : clip::variants()) clips.push_back(v.name);
+  m.clip = n.str("clip", std::string("off"), clips);
+  if (m.clip == "off") m.clip.clear();
   m.max_aniso = n.num("max_aniso", 1, 64, 16.0);
   m.lod_bias = n.num("lod_bias", -16, 16, 0.0);
   m.min_lod = n.num("min_lod", 0, 12, 0.0);
@@ -454,6 +460,13 @@ Scene default_scene() { return parse(default_scene_json(), "<default scene>", ".
 
 Scene without_relief(Scene s) {
   for (auto& [name, m] : s.materials) m.relief.reset();
+  return s;
+}
+
+Scene with_clip(Scene s, const std::string& clip) {
+  const std::string c = clip == "off" ? std::string() : clip;
+  if (!c.empty()) clip::variant(c);  // validates the name
+  for (auto& [name, m] : s.materials) m.clip = c;
   return s;
 }
 

@@ -233,6 +233,18 @@ TEST(TextureUnitRtl, ReliefSceneEqualsCModelWithStalls) {
   }
 }
 
+// EWA sub-texel border weights are not in the RTL unit yet (docs/blocks/ewa.md "Border
+// weights"): a message naming the material's field, before any simulation.
+TEST(TextureUnitRtl, BorderWeightsAreRejectedNamingTheField) {
+  const auto s = scene::with_clip(small_scene(), "mm_p1");
+  try {
+    cosim::render_rtl(s, {});
+    ADD_FAILURE() << "border weights accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("/clip: EWA border weights are not in the RTL"), std::string::npos) << e.what();
+  }
+}
+
 // docs/scenes/ui_quad.json (no relief, no minification): `texunit plan` writes a bilinear-only
 // unit without relief hardware (HasEwa = 0, HasRelief = 0; TexunitCli.plan_ui_quad, and the Yosys
 // cells drop: TexunitCli.plan_area_ui_quad). That unit renders the scene bit-exactly as the full

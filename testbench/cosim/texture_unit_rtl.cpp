@@ -117,6 +117,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (m.specular && m.specular->model != "auto" && shading::model_of(m.specular->model) != o.shade_model)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/specular/model: " + m.specular->model +
                                   ", but the unit's shading stage is " + brdf::name(o.shade_model));
+  for (const auto& [name, m] : s.materials)
+    if (!m.clip.empty() && o.filter.value_or(m.filter) == scene::Filter::Ewa)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/clip: EWA border weights are not in the RTL "
+                                  "texture unit yet (C model and float reference only); render with --clip off");
   render::CmodelOptions copt;
   copt.shade_model = o.shade_model;
   copt.weights = o.weights;

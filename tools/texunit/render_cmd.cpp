@@ -8,6 +8,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "gauss/clip.hpp"
 #include "output.hpp"
 #include "texture_unit_rtl.hpp"
 #include "texunit/parallel.hpp"
@@ -15,6 +16,12 @@
 #include "texunit/scene.hpp"
 
 namespace tu::cli {
+
+std::vector<std::string> clip_choices() {
+  std::vector<std::string> c{"off"};
+  for (const auto& v : clip::variants()) c.push_back(v.name);
+  return c;
+}
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a) {
   auto* r = app.add_subcommand("render", "render a scene to PNG images (docs/scene-format.md)");
@@ -38,10 +45,13 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
                  "or the bilinear-only unit (HasEwa = 0)")
       ->check(CLI::IsMember({"full", "bilinear"}));
   r->add_flag("--no-relief", a.no_relief,
-              "cmodel / rtl engines: leave every material's relief out (the texture path alone); the "
+              "leave every material's relief out (the texture path alone; every engine); the "
               "bilinear-only RTL unit has no relief stage and always renders without it");
   r->add_option("--weights", a.weights, "override every material's EWA weight source")
       ->check(CLI::IsMember({"formula", "table1d", "table2d"}));
+  r->add_option("--clip", a.clip, "override every material's EWA sub-texel border weights: a clip-volume "
+                "variant (docs/blocks/gaussian.md) or off (docs/blocks/ewa.md#border-weights)")
+      ->check(CLI::IsMember(clip_choices()));
   r->add_option("--filter", a.filter, "override every material's filter")
       ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa"}));
   r->add_option("--threads", a.threads, "cmodel / rtl engines: threads for the C-model render (default 0: "
@@ -51,7 +61,8 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
 }
 
 int run_render(const RenderArgs& a) {
-  const scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  if (!a.clip.empty()) s = scene::with_clip(std::move(s), a.clip);
   std::optional<scene::Filter> f;
   if (a.filter == "nearest") f = scene::Filter::Nearest;
   if (a.filter == "bilinear") f = scene::Filter::Bilinear;
@@ -106,7 +117,8 @@ int run_render(const RenderArgs& a) {
     to.progress = opt.progress;
     frame = render::render_truth(s, to);
   } else {
-    frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt) : render::render_ref(s, f);
+    frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt)
+                                 : render::render_ref(a.no_relief ? scene::without_relief(s) : s, f);
   }
   {
     const auto& flags = render::pixel_flags();

@@ -44,6 +44,9 @@ struct Material {
   std::string texture;
   Filter filter = Filter::Ewa;
   WeightSource weights = WeightSource::Formula;
+  // EWA sub-texel border weights (seed 003 §2): a gauss::clip variant name (docs/blocks/ewa.md
+  // "Border weights"); empty: off (the all-or-nothing Q < 1 test).
+  std::string clip;
   double max_aniso = 16;
   // Trilinear's GL LOD rule (texture/trilinear_lod.hpp): lambda + lod_bias clamped to
   // [min_lod, max_lod] (levels), then to the pyramid.
@@ -113,6 +116,9 @@ const std::string& default_scene_json();
 Scene default_scene();
 // The same scene with every material's relief removed (the texture path alone).
 Scene without_relief(Scene s);
+// The same scene with every material's EWA border weights set to the clip variant `clip`
+// ("off" or empty: none); throws std::invalid_argument for an unknown variant.
+Scene with_clip(Scene s, const std::string& clip);
 
 // Builds the texture named `name` (procedural or PNG) with its mip pyramid.
 tex::Texture build_texture(const Scene& s, const std::string& name);
