@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <algorithm>
+#include <array>
 #include <map>
 #include <stdexcept>
 
@@ -21,6 +22,7 @@ namespace tu::cosim {
 namespace {
 constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;  // tu_texture_unit_sim Words
 constexpr uint64_t kViewWords = kRamWords;                              // tu_view_src Words
+constexpr uint64_t kShadeWords = uint64_t(1) << 16;                     // tu_shade_src Words
 
 uint64_t lo(i128 v) { return static_cast<uint64_t>(v); }
 uint64_t hi(i128 v) { return static_cast<uint64_t>(v >> 64); }
@@ -120,7 +122,20 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   }
   if (o.relief && !o.has_ewa)
     throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
+  // The full unit shades (HasShading); a light needs it, and a model the materials name must be its.
+  const bool shade_unit = o.has_ewa && !o.corridor_unit;  // the corridor's plan: no light, no stage
+  if (!shade_unit && !s.lights.empty())
+    throw std::invalid_argument(s.source + ": /lights: the bilinear-only unit has no shading stage");
+  for (const auto& [name, m] : s.materials)
+    if (m.specular && m.specular->model != "auto" && shading::model_of(m.specular->model) != o.shade_model)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/specular/model: " + m.specular->model +
+                                  ", but the unit's shading stage is " + brdf::name(o.shade_model));
+  for (const auto& [name, m] : s.materials)
+    if (!m.clip.empty() && o.filter.value_or(m.filter) == scene::Filter::Ewa)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/clip: EWA border weights are not in the RTL "
+                                  "texture unit yet (C model and float reference only); render with --clip off");
   render::CmodelOptions copt;
+  copt.shade_model = o.shade_model;
   copt.weights = o.weights;
   copt.relief = o.relief;
   copt.threads = o.threads;
@@ -160,6 +175,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   std::vector<ewa::PixelCost> costs;
   std::vector<relief::StagePixel> relief_px;  // each pixel's relief step (the stage's cycle model)
   std::vector<uint64_t> views;  // the view stream model's words
+  std::vector<std::array<uint32_t, brdf::shade::kWordWords>> shades;  // the shade stream model's words
+  const shading::Setup shade(s, o.shade_model);
+  const persp::RayCaster rays(s.camera);
   auto lw_of = [](const Obj& ob) { return log2_size(ob.tex.levels[0].width); };
   auto lh_of = [](const Obj& ob) { return log2_size(ob.tex.levels[0].height); };
   size_t pix = 0;
@@ -258,6 +276,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
           rp = {true, static_cast<uint32_t>(expect.pixels[pix].relief_steps),
                 m.relief->method == scene::ReliefMethod::Iterative};
         relief_px.push_back(rp);
+        if (shade_unit) shades.push_back(brdf::shade::pack(shade.fx_in(rays, c.object, c.triangle, px, y)));
       }
       x = x1 + 1;
     }
@@ -276,6 +295,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   if (view_words.size() / 2 > kViewWords)
     throw std::runtime_error(s.source + ": " + std::to_string(views.size()) + " relief pixels, the view stream model holds " +
                              std::to_string(kViewWords));
+  if (shades.size() > kShadeWords)
+    throw std::runtime_error(s.source + ": " + std::to_string(shades.size()) + " covered pixels, the shade stream model holds " +
+                             std::to_string(kShadeWords));
   auto init = [&](auto& d, const std::function<void()>& tick) {
     d.ram_sel_i = 0;
     load_words(d, tick, 0, ram);
@@ -283,6 +305,15 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     load_words(d, tick, 0, depth_ram);
     d.ram_sel_i = 2;
     load_words(d, tick, 0, view_words);
+    d.ram_sel_i = 3;  // part j of shade word i at 16 i + j
+    for (size_t i = 0; i < shades.size(); ++i)
+      for (size_t j = 0; j < shades[i].size(); ++j) {
+        d.ram_we_i = 1;
+        d.ram_waddr_i = static_cast<uint32_t>(16 * i + j);
+        d.ram_wdata_i = shades[i][j];
+        tick();
+      }
+    d.ram_we_i = 0;
     d.ram_sel_i = 0;
   };
   if (o.corridor_unit) {
@@ -308,8 +339,11 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   out.extra_outputs = rr.extra_outputs;
   // The full unit has the relief stage: its marches and iterations interleave with the filter's
   // work (ewa::texture_unit_cycles); the bilinear-only unit streams its pixels (stream_cycles).
-  out.predicted_cycles = o.has_ewa ? ewa::texture_unit_cycles(costs, relief_px)
-                                   : ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(false)));
+  // The shading stage (II = 1, its words preloaded) adds its pipeline's latency once, at the end.
+  const uint64_t shade_lat = shade_unit ? static_cast<uint64_t>(brdf::shade::latency(o.shade_model)) : 0;
+  out.predicted_cycles = (o.has_ewa ? ewa::texture_unit_cycles(costs, relief_px)
+                                    : ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(false)))) +
+                         shade_lat;
   out.frame.image = expect.image;
   for (size_t i = 0; i < rr.outputs.size(); ++i) {
     const Row& q = rr.outputs[i];

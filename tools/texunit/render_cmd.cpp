@@ -8,6 +8,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "gauss/clip.hpp"
 #include "output.hpp"
 #include "texture_unit_rtl.hpp"
 #include "texunit/parallel.hpp"
@@ -15,6 +16,12 @@
 #include "texunit/scene.hpp"
 
 namespace tu::cli {
+
+std::vector<std::string> clip_choices() {
+  std::vector<std::string> c{"off"};
+  for (const auto& v : clip::variants()) c.push_back(v.name);
+  return c;
+}
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a) {
   auto* r = app.add_subcommand("render", "render a scene to PNG images (docs/scene-format.md)");
@@ -39,10 +46,13 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
                  "1-D weight table, iterative parallax: --filter ewa --weights table1d)")
       ->check(CLI::IsMember({"full", "bilinear", "corridor"}));
   r->add_flag("--no-relief", a.no_relief,
-              "cmodel / rtl engines: leave every material's relief out (the texture path alone); the "
+              "leave every material's relief out (the texture path alone; every engine); the "
               "bilinear-only RTL unit has no relief stage and always renders without it");
   r->add_option("--weights", a.weights, "override every material's EWA weight source")
       ->check(CLI::IsMember({"formula", "table1d", "table2d"}));
+  r->add_option("--clip", a.clip, "override every material's EWA sub-texel border weights: a clip-volume "
+                "variant (docs/blocks/gaussian.md) or off (docs/blocks/ewa.md#border-weights)")
+      ->check(CLI::IsMember(clip_choices()));
   r->add_option("--filter", a.filter, "override every material's filter")
       ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa"}));
   r->add_option("--threads", a.threads, "cmodel / rtl engines: threads for the C-model render (default 0: "
@@ -52,7 +62,8 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
 }
 
 int run_render(const RenderArgs& a) {
-  const scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  if (!a.clip.empty()) s = scene::with_clip(std::move(s), a.clip);
   std::optional<scene::Filter> f;
   if (a.filter == "nearest") f = scene::Filter::Nearest;
   if (a.filter == "bilinear") f = scene::Filter::Bilinear;
@@ -97,7 +108,7 @@ int run_render(const RenderArgs& a) {
                   double(r.predicted_cycles) / n,
                   100.0 * (double(r.predicted_cycles) / double(std::max<uint64_t>(1, r.cycles)) - 1));
     else
-      std::printf("cycles measured %llu (%.2f/pixel), not predicted (relief pixels in the stream)",
+      std::printf("cycles measured %llu (%.2f/pixel), not predicted",
                   (unsigned long long)r.cycles, double(r.cycles) / n);
     std::printf("; simulated %.0f RTL pixels/s (%.2f s)\n", n / r.sim_wall_s, r.sim_wall_s);
   } else if (a.engine == "truth") {
@@ -108,7 +119,8 @@ int run_render(const RenderArgs& a) {
     to.progress = opt.progress;
     frame = render::render_truth(s, to);
   } else {
-    frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt) : render::render_ref(s, f);
+    frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt)
+                                 : render::render_ref(a.no_relief ? scene::without_relief(s) : s, f);
   }
   {
     const auto& flags = render::pixel_flags();
@@ -150,6 +162,7 @@ void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::stri
 // `refs`: the texture path.
 bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
                      const std::string& out_dir, int threads);
+bool demo_render_shaded(const std::string& out_dir, int threads);
 }  // namespace
 
 bool demo_render(const std::string& out_dir, int threads) {
@@ -199,7 +212,8 @@ bool demo_render(const std::string& out_dir, int threads) {
   const Refs flat_refs{ewa_flat, truth_flat}, relief_refs{ewa, truth};
   demo_render_cmodel(flat, flat_refs, out_dir, threads);
   demo_render_relief(s, relief_refs, out_dir, threads);
-  return demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
+  const bool rtl_ok = demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
+  return demo_render_shaded(out_dir, threads) && rtl_ok;
 }
 
 namespace {
@@ -308,7 +322,7 @@ bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const 
     const auto png = (std::filesystem::path(out_dir) / (std::string("rtl_") + r.name + ".png")).string();
     img::write_png_rgba(png, res.frame.image);
     const double n = static_cast<double>(std::max<size_t>(1, res.frame.pixels.size()));
-    char pred[32] = "-", err[32] = "-";  // relief streams: not predicted
+    char pred[32] = "-", err[32] = "-";  // a run without a prediction
     if (res.predicted_cycles) {
       std::snprintf(pred, sizeof pred, "%.3f", double(res.predicted_cycles) / n);
       std::snprintf(err, sizeof err, "%+.3f %%",
@@ -330,6 +344,37 @@ bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const 
   std::printf("%s\n", ok ? "RTL texture unit == C model on every pixel"
                           : "MISMATCH: RTL texture unit and C model disagree (see above)");
   return ok;
+}
+
+// The shaded scene (docs/scenes/shaded_sphere.json: one point light, diffuse + the unit's F_MSH
+// highlight on a checkered sphere with vertex normals) through the three engines.
+bool demo_render_shaded(const std::string& out_dir, int threads) {
+  const char* path = "docs/scenes/shaded_sphere.json";
+  if (!std::filesystem::exists(path)) {
+    std::printf("\nshaded scene: %s not found (run the demo from the repository root): skipped\n", path);
+    return true;
+  }
+  const scene::Scene s = scene::load(path);
+  const auto ref = render::render_ref(s);
+  render::CmodelOptions copt;
+  copt.threads = threads;
+  const auto fx = render::render_cmodel(s, std::nullopt, copt);
+  cosim::RtlRenderOptions o;
+  o.threads = threads;
+  const auto rtl = cosim::render_rtl(s, o);
+  const auto dir = std::filesystem::path(out_dir);
+  img::write_png_rgba((dir / "shaded_ref.png").string(), ref.image);
+  img::write_png_rgba((dir / "shaded_cmodel.png").string(), fx.image);
+  img::write_png_rgba((dir / "shaded_rtl.png").string(), rtl.frame.image);
+  const double n = static_cast<double>(std::max<size_t>(1, rtl.frame.pixels.size()));
+  std::printf("\nshaded scene %s (%zu covered pixels; one light, diffuse + %s highlight after the filter):\n"
+              "  C model %s vs the float reference; RTL: %llu mismatches against the C model, %.3f cycles/pixel, "
+              "predicted %.3f (%+.3f %%); images %s/shaded_{ref,cmodel,rtl}.png\n",
+              path, rtl.frame.pixels.size(), brdf::name(o.shade_model).c_str(), db(render::psnr_covered(fx, ref)).c_str(),
+              (unsigned long long)rtl.mismatches, double(rtl.cycles) / n, double(rtl.predicted_cycles) / n,
+              100.0 * (double(rtl.predicted_cycles) / double(std::max<uint64_t>(1, rtl.cycles)) - 1), out_dir.c_str());
+  if (!rtl.ok()) std::printf("  first mismatch: %s\n", rtl.first_mismatch.c_str());
+  return rtl.ok() && rtl.cycles == rtl.predicted_cycles;
 }
 }  // namespace
 
