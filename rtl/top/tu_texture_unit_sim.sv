@@ -114,7 +114,7 @@ module tu_texture_unit_sim #(
     .clk_i, .rst_ni, .wr_en_i(ram_we_i && ram_sel_i == 2'd2), .wr_addr_i(ram_waddr_i),
     .wr_data_i(ram_wdata_i), .out_valid_o(view_valid), .out_ready_i(view_ready), .out_data_o(view)
   );
-  tu_shade_src #(.Words(1 << 16)) u_shades (
+  tu_view_src #(.Words(1 << 16), .DataW(tu_formats_pkg::ShadeWordW)) u_shades (
     .clk_i, .rst_ni, .wr_en_i(ram_we_i && ram_sel_i == 2'd3), .wr_addr_i(ram_waddr_i),
     .wr_data_i(ram_wdata_i), .out_valid_o(shade_valid), .out_ready_i(shade_ready), .out_data_o(shade)
   );

@@ -21,7 +21,7 @@ namespace tu::cosim {
 namespace {
 constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;  // tu_texture_unit_sim Words
 constexpr uint64_t kViewWords = kRamWords;                              // tu_view_src Words
-constexpr uint64_t kShadeWords = uint64_t(1) << 16;                     // tu_shade_src Words
+constexpr uint64_t kShadeWords = uint64_t(1) << 16;                     // tu_view_src Words of the shade stream
 
 uint64_t lo(i128 v) { return static_cast<uint64_t>(v); }
 uint64_t hi(i128 v) { return static_cast<uint64_t>(v >> 64); }
