@@ -220,9 +220,9 @@ package tu_formats_pkg;
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
   localparam int MaterialW = 56;  // material fields of a pixel
-  localparam int ReliefW = 58;  // material relief fields
+  localparam int ReliefW = 59;  // material relief fields
   localparam int TriW = 104;  // per-triangle footprint constants
   localparam int FpixW = 81;  // pixel on its way to the filter
-  localparam int PixW = 139;  // pixel before the relief stage
+  localparam int PixW = 140;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

@@ -89,7 +89,10 @@ SV
     diff -u rtl/0_pkg/tu_unit_cfg_pkg.sv "$tmp/full.sv" || fail "rtl/0_pkg/tu_unit_cfg_pkg.sv is not the full unit: texunit plan default --out-full rtl/0_pkg/tu_unit_cfg_pkg.sv"
     ;;
   plan_corridor)
-    "$tu" plan docs/scenes/corridor.json --json >"$tmp/p.json"
+    "$tu" plan docs/scenes/corridor.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
+    # The RTL co-simulation's corridor unit (TextureUnitRtl.CorridorPlannedUnit...) is this package.
+    diff -u testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv "$tmp/cfg.sv" ||
+      fail "testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv is stale: texunit plan docs/scenes/corridor.json --out testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv"
     [ "$(val "$tmp/p.json" "d['filter'], d['relief']")" = "('ewa', True)" ] || fail "$(cat "$tmp/p.json")"
     [ "$(val "$tmp/p.json" "any('iter_parallax' in b for b in d['specialised']['blocks'])")" = True ] || fail "iterative relief"
     ;;

@@ -41,9 +41,10 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
                 "--engine truth: box over the pixel square, or gauss (the EWA's pixel model over the unit disc)")
       ->check(CLI::IsMember({"box", "gauss"}));
   r->add_option("--rtl-unit", a.rtl_unit,
-                 "--engine rtl: the full unit (EWA, trilinear, bilinear and nearest engines, each material's filter per span) "
-                 "or the bilinear-only unit (HasEwa = 0)")
-      ->check(CLI::IsMember({"full", "bilinear"}));
+                 "--engine rtl: the full unit (EWA, trilinear, bilinear and nearest engines, each material's filter per span), "
+                 "the bilinear-only unit (HasEwa = 0) or docs/scenes/corridor.json's planned unit (EWA with the "
+                 "1-D weight table, iterative parallax: --filter ewa --weights table1d)")
+      ->check(CLI::IsMember({"full", "bilinear", "corridor"}));
   r->add_flag("--no-relief", a.no_relief,
               "leave every material's relief out (the texture path alone; every engine); the "
               "bilinear-only RTL unit has no relief stage and always renders without it");
@@ -87,7 +88,8 @@ int run_render(const RenderArgs& a) {
   bool ok = true;
   if (a.engine == "rtl") {
     cosim::RtlRenderOptions ro;
-    ro.has_ewa = a.rtl_unit == "full";
+    ro.has_ewa = a.rtl_unit != "bilinear";
+    ro.corridor_unit = a.rtl_unit == "corridor";
     ro.filter = f;
     ro.weights = w;
     ro.relief = ro.has_ewa && !a.no_relief;
