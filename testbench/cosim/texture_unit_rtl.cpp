@@ -107,6 +107,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (o.relief && m.relief && m.relief->method == scene::ReliefMethod::Iterative)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/relief/method: iterative parallax is not in "
                                   "the RTL texture unit (its relief stage runs POM); render without relief (--no-relief)");
+  for (const auto& [name, m] : s.materials)
+    if (m.procedural)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/procedural: the noise unit is not in the RTL "
+                                  "texture unit yet (docs/blocks/noise.md §5); render it with --engine cmodel or ref");
   render::CmodelOptions copt;
   copt.weights = o.weights;
   copt.relief = o.relief;
