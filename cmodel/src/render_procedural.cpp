@@ -13,6 +13,9 @@ noise::ProcParams procedural_params(const scene::Material& m, int tex_w) {
   const scene::Procedural& pr = m.procedural.value();
   noise::ProcParams p;
   p.smoke = pr.kind == scene::ProceduralKind::Smoke;
+  p.water = pr.kind == scene::ProceduralKind::Water;
+  p.amplitude = pr.amplitude;
+  p.light = pr.light;
   p.z = pr.speed * pr.time;
   p.dims = pr.speed != 0 ? 3 : 2;  // z = 0 for every frame: the 2-D core (bit-identical slice)
   p.octaves = pr.octaves;

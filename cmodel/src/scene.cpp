@@ -246,7 +246,8 @@ TextureSpec parse_texture(Node n, const std::string& name, const std::string& ba
 
 Procedural parse_procedural(Node p) {
   Procedural pr;
-  pr.kind = p.str("kind", {}, {"fbm", "smoke"}) == "smoke" ? ProceduralKind::Smoke : ProceduralKind::Fbm;
+  const auto kind = p.str("kind", {}, {"fbm", "smoke", "water"});
+  pr.kind = kind == "smoke" ? ProceduralKind::Smoke : kind == "water" ? ProceduralKind::Water : ProceduralKind::Fbm;
   pr.octaves = p.integer("octaves", 1, fmt::kNoiseOctaves, fmt::kNoiseOctaves);
   // f / texture width < 256 keeps the frequency code in u32.24 (docs/blocks/noise.md §5).
   pr.frequency = p.num("frequency", 1.0 / 256, 128, 8.0);
@@ -257,6 +258,14 @@ Procedural parse_procedural(Node p) {
   if (pr.kind == ProceduralKind::Smoke) {
     pr.threshold = p.num("threshold", 0, 0.99, pr.threshold);
     pr.gain = p.num("gain", 0, 255, pr.gain);
+  }
+  if (pr.kind == ProceduralKind::Water) {
+    pr.amplitude = p.num("amplitude", 0, 16, pr.amplitude);
+    if (p.has("light")) {
+      const auto l = p.vec("light", 3, 1e6);
+      if (!(std::hypot(l[0], l[1], l[2]) > 0)) p.fail_at("light", "is the zero vector");
+      for (size_t i = 0; i < 3; ++i) pr.light[i] = l[i];
+    }
   }
   for (const char* k : {"color0", "color1"}) {
     if (!p.has(k)) continue;
@@ -512,7 +521,9 @@ const char* to_string(Filter f) {
 const char* to_string(WeightSource w) {
   return w == WeightSource::Formula ? "formula" : w == WeightSource::Table1d ? "table1d" : "table2d";
 }
-const char* to_string(ProceduralKind k) { return k == ProceduralKind::Smoke ? "smoke" : "fbm"; }
+const char* to_string(ProceduralKind k) {
+  return k == ProceduralKind::Smoke ? "smoke" : k == ProceduralKind::Water ? "water" : "fbm";
+}
 
 Scene at_time(Scene s, double t) {
   for (auto& [name, m] : s.materials)

@@ -36,6 +36,32 @@ ProcParams params(bool smoke, int dims, int octaves) {
   return p;
 }
 
+// Max and rms error (ULP of 2^-16) of proc_value_fx against proc_value_ref on `count` random
+// B1 codes in +-2^22 texels with lrho over the fading range.
+struct ErrStats {
+  double max = 0, rms = 0;
+};
+ErrStats error_vs_ref(const ProcParams& p, int count, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int64_t> uv(-(int64_t(1) << 30), int64_t(1) << 30);
+  std::uniform_int_distribution<int32_t> lr(-9 << pfmt::kNoiseLodF, 6 << pfmt::kNoiseLodF);
+  const auto c = quantise(p);
+  ErrStats st;
+  double se = 0;
+  for (int n = 0; n < count; ++n) {
+    const int64_t u = uv(rng), v = uv(rng);
+    const int32_t l = lr(rng);
+    const double fx = proc_value_fx(c, u, v, l) * kUlp;
+    const double ref = proc_value_ref(p, std::ldexp(double(u), -fmt::kTexUvF), std::ldexp(double(v), -fmt::kTexUvF),
+                                      std::ldexp(double(l), -pfmt::kNoiseLodF));
+    const double e = std::fabs(fx - ref) / kUlp;
+    st.max = std::max(st.max, e);
+    se += e * e;
+  }
+  st.rms = std::sqrt(se / count);
+  return st;
+}
+
 TEST(NoiseProc, NormalisationConstantsMatchTheFormats) {
   EXPECT_EQ(norm_code(3, fmt::kNoiseOctaves), uint32_t(fmt::kNoiseNorm3));
   EXPECT_EQ(norm_code(2, fmt::kNoiseOctaves), uint32_t(fmt::kNoiseNorm2));
@@ -102,31 +128,17 @@ TEST(NoiseProc, FullWeightsAreTheBlocksFbmAndNoFootprintIsTheMean) {
 // times C S_K: < 0.4 ULP); smoke doubles the noise terms (2 C) before its gain. Both switch
 // positions, K = 1..4.
 TEST(NoiseProc, ValueErrorAgainstTheFloatReference) {
-  std::mt19937_64 rng(7);
-  std::uniform_int_distribution<int64_t> uv(-(int64_t(1) << 30), int64_t(1) << 30);
-  std::uniform_int_distribution<int32_t> lr(-9 << pfmt::kNoiseLodF, 6 << pfmt::kNoiseLodF);
+  uint64_t seed = 7;
   for (bool smoke : {false, true})
     for (int dims : {2, 3})
       for (int k = 1; k <= fmt::kNoiseOctaves; ++k) {
         auto p = params(smoke, dims, k);
         p.gain = 1;  // smoke: the turbulence itself (threshold 0.2)
-        const auto c = quantise(p);
-        double worst = 0, se = 0;
-        const int count = 1 << 14;
-        for (int n = 0; n < count; ++n) {
-          const int64_t u = uv(rng), v = uv(rng);
-          const int32_t l = lr(rng);
-          const double fx = proc_value_fx(c, u, v, l) * kUlp;
-          const double ref = proc_value_ref(p, std::ldexp(double(u), -fmt::kTexUvF), std::ldexp(double(v), -fmt::kTexUvF),
-                                            std::ldexp(double(l), -pfmt::kNoiseLodF));
-          const double e = std::fabs(fx - ref) / kUlp;
-          worst = std::max(worst, e);
-          se += e * e;
-        }
+        const auto e = error_vs_ref(p, 1 << 14, seed++);
         const double bound = (dims == 2 ? 3.20 : 4.41) + 0.3 + 0.4;
         std::printf("%s dims %d K %d: max %.3f ULP, rms %.3f ULP (bound %.2f)\n", smoke ? "smoke" : "fbm  ", dims, k,
-                    worst, std::sqrt(se / count), smoke ? 2 * bound : bound);
-        EXPECT_LE(worst, smoke ? 2 * bound : bound);
+                    e.max, e.rms, smoke ? 2 * bound : bound);
+        EXPECT_LE(e.max, smoke ? 2 * bound : bound);
       }
 }
 
@@ -141,6 +153,25 @@ TEST(NoiseProc, MeanAbsoluteNoise) {
   }
   EXPECT_NEAR(s2 / n, kMeanAbs2, 2e-3);
   EXPECT_NEAR(s3 / n, kMeanAbs3, 2e-3);
+}
+
+// Water's Lambert shade against the float reference (the same forward difference over 2^-8
+// cells). Derived bound: the shade is 1-Lipschitz in the slope g, and each slope differences two
+// octave sums, each within e_P = S_K (7.99 + 0.5) ULP of its reference (the core bound of §3 per
+// octave, plus the weight's rounding), over a step of 2^-8 cells: |error| <= a 2 e_P 2^8 + 2 ULP
+// (the square root and the division).
+TEST(NoiseProc, WaterShadeAgainstTheFloatReference) {
+  for (int dims : {2, 3}) {
+    auto p = params(false, dims, fmt::kNoiseOctaves);
+    p.water = true;
+    p.amplitude = 0.5;
+    const auto e = error_vs_ref(p, 1 << 13, 5 + uint64_t(dims));
+    const double bound = p.amplitude * 2 * octave_amplitude_sum(fmt::kNoiseOctaves) * 8.49 * 256 + 2;
+    std::printf("water dims %d: max %.1f ULP, rms %.1f ULP (bound %.0f ULP of 2^-16)\n", dims, e.max, e.rms, bound);
+    EXPECT_LE(e.max, bound);
+    // A flat field (no footprint: every weight 0) faces the normal: the shade is L.z.
+    EXPECT_NEAR(proc_value_fx(quantise(p), 123, 456, kNoFootprint) * kUlp, 0.866 / std::hypot(0.4, 0.3, 0.866), 2 * kUlp);
+  }
 }
 
 // The period-256 wrap of the coordinate mapping: u and u + 256 cells (8192 texels at f/W = 1/32)
@@ -222,6 +253,8 @@ TEST(NoiseProc, SceneFieldsAreValidated) {
   EXPECT_NE(err(R"({"kind": "fbm", "footprint_limit": 1})").find("/procedural/footprint_limit: expected true or false"), std::string::npos);
   EXPECT_NE(err(R"({"kind": "fbm", "color1": [0, -1, 0]})").find("/procedural/color1/1"), std::string::npos);
   EXPECT_NE(err(R"({"kind": "fbm", "threshold": 0.5})").find("/procedural/threshold: unknown field"), std::string::npos);
+  EXPECT_NE(err(R"({"kind": "water", "light": [0, 0, 0]})").find("/procedural/light: is the zero vector"), std::string::npos);
+  EXPECT_NE(err(R"({"kind": "water", "amplitude": 20})").find("/procedural/amplitude"), std::string::npos);
   const auto s = scene::parse(head + R"({"kind": "smoke", "octaves": 2, "time": 1.5})" + tail, "p.json", ".");
   const auto& p = *s.materials.at("m").procedural;
   EXPECT_EQ(p.kind, scene::ProceduralKind::Smoke);

@@ -34,6 +34,8 @@ inline constexpr int kNoiseLodF = 10;   // footprint log2 and octave weights: fr
 inline constexpr int kNoiseWeightW = kNoiseLodF + 1;  // octave weight in [0, 1]: unsigned
 inline constexpr int kNoiseGainF = 8;   // smoke opacity gain: fraction bits
 inline constexpr int kNoiseGainW = 16;  // smoke opacity gain code: unsigned (gain < 256)
+inline constexpr int kWaterAmpF = 8;    // water height amplitude a: fraction bits
+inline constexpr int kWaterAmpW = 13;   // water amplitude code: unsigned (a < 32; |n|^2 stays < 2^55)
 }  // namespace pfmt
 
 using OctaveWeights = std::array<uint32_t, fmt::kNoiseOctaves>;  // u(NoiseWeightW).NoiseLodF

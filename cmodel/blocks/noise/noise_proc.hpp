@@ -7,7 +7,10 @@
 //   smoke          turb = (sum_i (w_i |n_i| + (1 - w_i) m) 2^-i) / (B S_K)  (turbulence) in [0, 1]
 //                  with m = E|noise| (kMeanAbs2/3): a faded octave of |n| tends to its mean, not 0
 //                  value = clamp((turb - threshold) gain, 0, 1)   (opacity mapping)
-//   colour         color0 + value (color1 - color0); alpha 255 (fbm), value (smoke)
+//   water          P = sum_i w_i n_i 2^-i, normal (-a dP/dx, -a dP/dy, 1) by forward differences over
+//                  2^-8 cells (the same in the reference), value = max(0, n.L) / |n| (Lambert, the
+//                  tangent-space light L; the scene has no lights and the BRDF stage is not in the unit)
+//   colour         color0 + value (color1 - color0); alpha 255 (fbm, water), value (smoke)
 // with S_K = 2 - 2^(1-K), B = kBound2 (2-D, z = 0) or kBound3. Faded octaves lower the contrast
 // toward the mean (1/2; smoke: clear), the band-limited expectation of the field.
 // Time as the third dimension is the note's reconstruction of the seed's `animate` (§4.3).
@@ -21,6 +24,9 @@
 //   value    u17.16: acc C_K + 1/2 (fbm) or 2 acc C_K (smoke), round half up, clamp (guard);
 //            C_K = norm_code(dims, K), u0.18, = NoiseNorm2/3 at K = NoiseOctaves;
 //   opacity  (turb - thr) gain: thr u17.16, gain u16.8, round half up, clamp to [0, 1];
+//   water    slopes from exact sums: g = -a dP s(.)kWaterF (a u8.8), |n|^2 exact in int64, |n| =
+//            floor(isqrt) kWaterF bits, n.L with L u.16 (normalised by the host), value =
+//            round_half_up(n.L / |n|), clamp (0 when n.L <= 0)
 //   colour   (c0 2^16 + value (c1 - c0) + 2^15) >> 16 per channel (8 bits, exact floor).
 // With every weight 1 the fbm value equals fbm_fx's sum normalised with C_K (bit for bit).
 // Error against proc_ref: the noise core's bound per octave (docs/blocks/noise.md §3) plus the
@@ -40,6 +46,11 @@ namespace tu::noise {
 // random points in [0, 256)^n (NoiseProc.MeanAbsoluteNoise checks them to 2e-3 on 2^18 points).
 inline constexpr double kMeanAbs2 = 0.2074, kMeanAbs3 = 0.2206;
 
+// Water's finite-difference step 2^-8 cells = 2^kWaterStepCode codes of s32.16, and the slope
+// format: g = -a dP carries kAccF - (NoiseTF - kWaterStepCode) + WaterAmpF fraction bits.
+inline constexpr int kWaterStepCode = 8;
+inline constexpr int kWaterF = 19 - (16 - kWaterStepCode) + 8;
+
 struct ProcParams {  // the float description (the scene's material, in noise units)
   bool smoke = false;
   int dims = 2;              // 2: z = 0 (fbm without time), 3: z = speed t
@@ -50,6 +61,9 @@ struct ProcParams {  // the float description (the scene's material, in noise un
   bool limit = true;         // footprint-limited octaves
   double lod_bias = 0;       // octaves
   double threshold = 0.2, gain = 2;
+  bool water = false;        // water instead of fbm (smoke false)
+  double amplitude = 0.5;    // water: height a P in cells
+  std::array<double, 3> light{0.4, 0.3, 0.866};  // water: tangent-space light (x along u, z the normal)
   std::array<double, 3> c0{0, 0, 0}, c1{255, 255, 255};
 };
 
@@ -64,6 +78,9 @@ struct ProcCodes {  // the quantised per-material constants the unit holds
   uint32_t norm = 0;        // C_K u0.18
   int64_t mean_abs = 0;     // smoke: m = E|noise|, s19.16
   uint32_t thr = 0, gain = 0;  // u17.16, u16.8
+  bool water = false;
+  uint32_t amp = 0;            // water: a u8.8
+  std::array<int64_t, 3> light{};  // water: unit light s.16
   std::array<uint8_t, 3> c0{}, c1{};
 };
 

@@ -34,7 +34,7 @@ struct Relief {
 
 // A procedural colour source (docs/scene-format.md "procedural"; docs/blocks/noise.md §5): the
 // unit evaluates Perlin noise at the pixel's (u, v[, t]) instead of sampling the texture.
-enum class ProceduralKind { Fbm, Smoke };
+enum class ProceduralKind { Fbm, Smoke, Water };
 struct Procedural {
   ProceduralKind kind = ProceduralKind::Fbm;
   int octaves = 4;          // K, 1..NoiseOctaves
@@ -44,6 +44,8 @@ struct Procedural {
   double speed = 0;         // time as the third noise dimension z = speed * t (0: 2-D noise)
   bool footprint_limit = true;  // fade out the octaves above the footprint's Nyquist frequency
   double threshold = 0.2, gain = 2;  // smoke: opacity = clamp((turbulence - threshold) * gain, 0, 1)
+  double amplitude = 0.5;            // water: height amplitude (cells per unit of the octave sum)
+  std::array<double, 3> light{0.4, 0.3, 0.866};  // water: tangent-space light direction
   std::array<double, 3> color0{0, 0, 0}, color1{255, 255, 255};  // value 0 -> color0, 1 -> color1
 };
 
