@@ -9,6 +9,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "gauss/clip.hpp"
 #include "output.hpp"
 #include "texture_unit_rtl.hpp"
 #include "texunit/parallel.hpp"
@@ -16,6 +17,12 @@
 #include "texunit/scene.hpp"
 
 namespace tu::cli {
+
+std::vector<std::string> clip_choices() {
+  std::vector<std::string> c{"off"};
+  for (const auto& v : clip::variants()) c.push_back(v.name);
+  return c;
+}
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a) {
   auto* r = app.add_subcommand("render", "render a scene to PNG images (docs/scene-format.md)");
@@ -39,10 +46,13 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
                  "or the bilinear-only unit (HasEwa = 0)")
       ->check(CLI::IsMember({"full", "bilinear"}));
   r->add_flag("--no-relief", a.no_relief,
-              "cmodel / rtl engines: leave every material's relief out (the texture path alone); the "
+              "leave every material's relief out (the texture path alone; every engine); the "
               "bilinear-only RTL unit has no relief stage and always renders without it");
   r->add_option("--weights", a.weights, "override every material's EWA weight source")
       ->check(CLI::IsMember({"formula", "table1d", "table2d"}));
+  r->add_option("--clip", a.clip, "override every material's EWA sub-texel border weights: a clip-volume "
+                "variant (docs/blocks/gaussian.md) or off (docs/blocks/ewa.md#border-weights)")
+      ->check(CLI::IsMember(clip_choices()));
   r->add_option("--filter", a.filter, "override every material's filter")
       ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa"}));
   r->add_flag("--no-footprint-limit", a.no_footprint_limit,
@@ -67,6 +77,7 @@ int run_render(const RenderArgs& a) {
   if (a.no_footprint_limit)
     for (auto& [name, m] : s.materials)
       if (m.procedural) m.procedural->footprint_limit = false;
+  if (!a.clip.empty()) s = scene::with_clip(std::move(s), a.clip);
   std::optional<scene::Filter> f;
   if (a.filter == "nearest") f = scene::Filter::Nearest;
   if (a.filter == "bilinear") f = scene::Filter::Bilinear;
@@ -121,6 +132,16 @@ int run_render(const RenderArgs& a) {
       std::printf("cycles measured %llu (%.2f/pixel), not predicted (relief pixels in the stream)",
                   (unsigned long long)r.cycles, double(r.cycles) / n);
     std::printf("; simulated %.0f RTL pixels/s (%.2f s)\n", n / r.sim_wall_s, r.sim_wall_s);
+  } else if (a.engine == "truth") {
+    render::TruthOptions to;
+    to.ss = a.ss;
+    to.kernel = a.truth_kernel == "gauss" ? render::TruthKernel::Gaussian : render::TruthKernel::Box;
+    to.relief = !a.no_relief;
+    to.progress = opt.progress;
+    frame = render::render_truth(s, to);
+  } else {
+    frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt)
+                                 : render::render_ref(a.no_relief ? scene::without_relief(s) : s, f);
   }
   render::TruthOptions to;
   to.ss = a.ss;
@@ -129,7 +150,8 @@ int run_render(const RenderArgs& a) {
   to.progress = opt.progress;
   auto render_with = [&](const std::string& engine, const scene::Scene& si) {
     return engine == "truth" ? render::render_truth(si, to)
-           : engine == "cmodel" ? render::render_cmodel(si, f, opt) : render::render_ref(si, f);
+           : engine == "cmodel" ? render::render_cmodel(si, f, opt)
+                                : render::render_ref(a.no_relief ? scene::without_relief(si) : si, f);
   };
   auto render_at = [&](const scene::Scene& si) { return render_with(a.engine, si); };
   if (a.engine != "rtl") frame = render_at(s);
@@ -196,6 +218,7 @@ void demo_render_procedural(const std::string& out_dir, int threads);
 // `refs`: the texture path.
 bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
                      const std::string& out_dir, int threads);
+bool demo_render_shaded(const std::string& out_dir, int threads);
 }  // namespace
 
 bool demo_render(const std::string& out_dir, int threads) {
@@ -407,6 +430,37 @@ bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const 
   std::printf("%s\n", ok ? "RTL texture unit == C model on every pixel"
                           : "MISMATCH: RTL texture unit and C model disagree (see above)");
   return ok;
+}
+
+// The shaded scene (docs/scenes/shaded_sphere.json: one point light, diffuse + the unit's F_MSH
+// highlight on a checkered sphere with vertex normals) through the three engines.
+bool demo_render_shaded(const std::string& out_dir, int threads) {
+  const char* path = "docs/scenes/shaded_sphere.json";
+  if (!std::filesystem::exists(path)) {
+    std::printf("\nshaded scene: %s not found (run the demo from the repository root): skipped\n", path);
+    return true;
+  }
+  const scene::Scene s = scene::load(path);
+  const auto ref = render::render_ref(s);
+  render::CmodelOptions copt;
+  copt.threads = threads;
+  const auto fx = render::render_cmodel(s, std::nullopt, copt);
+  cosim::RtlRenderOptions o;
+  o.threads = threads;
+  const auto rtl = cosim::render_rtl(s, o);
+  const auto dir = std::filesystem::path(out_dir);
+  img::write_png_rgba((dir / "shaded_ref.png").string(), ref.image);
+  img::write_png_rgba((dir / "shaded_cmodel.png").string(), fx.image);
+  img::write_png_rgba((dir / "shaded_rtl.png").string(), rtl.frame.image);
+  const double n = static_cast<double>(std::max<size_t>(1, rtl.frame.pixels.size()));
+  std::printf("\nshaded scene %s (%zu covered pixels; one light, diffuse + %s highlight after the filter):\n"
+              "  C model %s vs the float reference; RTL: %llu mismatches against the C model, %.3f cycles/pixel, "
+              "predicted %.3f (%+.3f %%); images %s/shaded_{ref,cmodel,rtl}.png\n",
+              path, rtl.frame.pixels.size(), brdf::name(o.shade_model).c_str(), db(render::psnr_covered(fx, ref)).c_str(),
+              (unsigned long long)rtl.mismatches, double(rtl.cycles) / n, double(rtl.predicted_cycles) / n,
+              100.0 * (double(rtl.predicted_cycles) / double(std::max<uint64_t>(1, rtl.cycles)) - 1), out_dir.c_str());
+  if (!rtl.ok()) std::printf("  first mismatch: %s\n", rtl.first_mismatch.c_str());
+  return rtl.ok() && rtl.cycles == rtl.predicted_cycles;
 }
 }  // namespace
 
