@@ -47,6 +47,8 @@ struct Procedural {
   double amplitude = 0.5;            // water: height amplitude (cells per unit of the octave sum)
   std::array<double, 3> light{0.4, 0.3, 0.866};  // water: tangent-space light direction
   std::array<double, 3> color0{0, 0, 0}, color1{255, 255, 255};  // value 0 -> color0, 1 -> color1
+};
+
 // The material's specular lobe for the shading stage (docs/blocks/brdf.md "In the unit").
 struct Specular {
   std::string model = "auto";  // a brdf::name() model, or "auto": the unit's model (`texunit plan`)
