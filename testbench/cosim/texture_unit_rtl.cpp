@@ -122,6 +122,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   }
   if (o.relief && !o.has_ewa)
     throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
+  for (const auto& [name, m] : s.materials)
+    if (m.procedural)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/procedural: the noise unit is not in the RTL "
+                                  "texture unit yet (docs/blocks/noise.md §5); render it with --engine cmodel or ref");
   // The full unit shades (HasShading); a light needs it, and a model the materials name must be its.
   const bool shade_unit = o.has_ewa && !o.corridor_unit;  // the corridor plan has no lights
   if (!shade_unit && !s.lights.empty())

@@ -34,6 +34,20 @@ case $case in
     grep -q "unknown block 'recip' (known: reciprocal, persp" "$tmp/err" || fail "message: $(cat "$tmp/err")"
     [ ! -e "$tmp/r.json" ] || fail "partial output written"
     ;;
+  render_procedural)
+    # Procedural materials: an animation (one PNG per frame, the smoke moves), the PSNR against the
+    # truth, and the RTL engine's refusal (exit 2, nothing written).
+    "$tu" render docs/scenes/procedural.json --engine cmodel --frames 3 --dt 0.5 --out "$tmp/a" 2>/dev/null >/dev/null
+    for i in 0000 0001 0002; do [ -s "$tmp/a/cmodel_$i.png" ] || fail "frame $i missing"; done
+    ! cmp -s "$tmp/a/cmodel_0000.png" "$tmp/a/cmodel_0001.png" || fail "frames 0 and 1 are equal"
+    "$tu" render docs/scenes/procedural.json --engine cmodel --vs ref --out "$tmp/b" 2>/dev/null >"$tmp/b.txt"
+    grep -q "PSNR cmodel vs ref: .* dB over 2\?[0-9]* covered pixels; ground .* dB smoke .* dB" "$tmp/b.txt" || fail "$(cat "$tmp/b.txt")"
+    [ -s "$tmp/b/heat_cmodel_vs_ref.png" ] || fail "heat map missing"
+    rc=0; "$tu" render docs/scenes/procedural.json --engine rtl --out "$tmp/c" 2>"$tmp/err" >/dev/null || rc=$?
+    [ "$rc" = 2 ] || fail "rtl engine: exit $rc"
+    grep -q "/materials/marble/procedural: the noise unit is not in the RTL" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    [ ! -e "$tmp/c" ] || fail "partial output written"
+    ;;
   plan_default)
     "$tu" plan default --json --out "$tmp/cfg.sv" >"$tmp/p.json"
     [ "$(val "$tmp/p.json" "d['filter'], d['relief'], d['persp'].split('/')[0]")" = "('ewa', True, 'persp')" ] || fail "$(cat "$tmp/p.json")"
