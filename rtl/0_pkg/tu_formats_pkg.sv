@@ -149,6 +149,9 @@ package tu_formats_pkg;
   localparam int EwaWsumW = 33;  // weight sum: unsigned, GaussSqF fraction bits (exact)
   localparam int EwaAccW = 41;  // per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)
   localparam int EwaNrmW = 23;  // weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1
+  localparam int EwaGradW = 24;  // border distance (clip on): g = K^T (xi, eta) = grad Q / 2, floor: signed, EwaGradF frac; band only
+  localparam int EwaGradF = 22;
+  localparam int EwaRootW = 24;  // border: r = floor(sqrt Q), |g| = floor(sqrt(gu^2 + gv^2)): unsigned, EwaGradF frac
   localparam int BrdfCW = 22;  // c = N.H input: signed, BrdfCF fraction bits; clamped to [0, 1] (c > 1 flags)
   localparam int BrdfCF = 20;
   localparam int BrdfClW = 21;  // clamped c and t = 1 - c (exact): unsigned, BrdfCF fraction bits
@@ -217,9 +220,9 @@ package tu_formats_pkg;
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
   localparam int MaterialW = 56;  // material fields of a pixel
-  localparam int ReliefW = 58;  // material relief fields
+  localparam int ReliefW = 59;  // material relief fields
   localparam int TriW = 104;  // per-triangle footprint constants
   localparam int FpixW = 81;  // pixel on its way to the filter
-  localparam int PixW = 139;  // pixel before the relief stage
+  localparam int PixW = 140;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

@@ -169,6 +169,9 @@
   X(EwaWsumW, 33, "weight sum: unsigned, GaussSqF fraction bits (exact)")                      \
   X(EwaAccW, 41, "per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)")       \
   X(EwaNrmW, 23, "weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1") \
+  X(EwaGradW, 24, "border distance (clip on): g = K^T (xi, eta) = grad Q / 2, floor: signed, EwaGradF frac; band only") \
+  X(EwaGradF, 22, "")                                                                           \
+  X(EwaRootW, 24, "border: r = floor(sqrt Q), |g| = floor(sqrt(gu^2 + gv^2)): unsigned, EwaGradF frac") \
   /* BRDF specular models (docs/blocks/brdf.md) */                                           \
   X(BrdfCW, 22, "c = N.H input: signed, BrdfCF fraction bits; clamped to [0, 1] (c > 1 flags)") \
   X(BrdfCF, 20, "")                                                                            \
