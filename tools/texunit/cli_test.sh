@@ -60,15 +60,15 @@ case $case in
     # A light: the shading stage with the cheapest model within max_brdf_mad (0.01: F_QR, MAD
     # 0.0082, the fewest cells); a tighter budget (0.002) needs F_ST16; a model the material names wins.
     "$tu" plan docs/scenes/shaded_sphere.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
-    [ "$(val "$tmp/p.json" "d['shading']['model']")" = "brdf/qr" ] || fail "$(cat "$tmp/p.json")"
+    [ "$(val "$tmp/p.json" "d['shading']['model'].split()[0]")" = "brdf/qr" ] || fail "$(cat "$tmp/p.json")"
     grep -q "localparam bit HasShading = 1'b1;" "$tmp/cfg.sv" || fail "HasShading"
     grep -q "localparam int ShadeModel = 6;" "$tmp/cfg.sv" || fail "ShadeModel"
     sed 's/"max_brdf_mad": 0.01/"max_brdf_mad": 0.002/' docs/scenes/shaded_sphere.json >"$tmp/tight.json"
     "$tu" plan "$tmp/tight.json" --json >"$tmp/p2.json"
-    [ "$(val "$tmp/p2.json" "d['shading']['model']")" = "brdf/st16" ] || fail "$(cat "$tmp/p2.json")"
+    [ "$(val "$tmp/p2.json" "d['shading']['model'].split()[0]")" = "brdf/st16" ] || fail "$(cat "$tmp/p2.json")"
     sed 's/"specular": {"n": 40/"specular": {"model": "dsh", "n": 40/' docs/scenes/shaded_sphere.json >"$tmp/pinned.json"
     "$tu" plan "$tmp/pinned.json" --json >"$tmp/p3.json"
-    [ "$(val "$tmp/p3.json" "d['shading']['model'], d['shading']['why']")" = "('brdf/dsh', 'named by the materials (MAD 0.00251)')" ] || fail "$(cat "$tmp/p3.json")"
+    [ "$(val "$tmp/p3.json" "d['shading']['model'].split()[0], d['shading']['why']")" = "('brdf/dsh', 'named by the materials (MAD 0.00251)')" ] || fail "$(cat "$tmp/p3.json")"
     ;;
   plan_ui_quad)
     # Head-on, magnified: bilinear instead of EWA, no relief hardware; fewer cells than the full unit.
