@@ -353,6 +353,9 @@ Scene parse(const std::string& text, const std::string& source, const std::strin
     s.budget.min_psnr_db = b.num("min_psnr_db", 0, 100, s.budget.min_psnr_db);
     b.finish();
   }
+  s.footprint = root.str("footprint", std::string("analytic"), {"analytic", "recurrence"}) == "recurrence"
+                    ? Footprint::Recurrence
+                    : Footprint::Analytic;
   root.finish();
   return s;
 }
@@ -445,6 +448,8 @@ const char* to_string(Filter f) {
 const char* to_string(WeightSource w) {
   return w == WeightSource::Formula ? "formula" : w == WeightSource::Table1d ? "table1d" : "table2d";
 }
+const char* to_string(Footprint f) { return f == Footprint::Recurrence ? "recurrence" : "analytic"; }
+
 const char* to_string(ReliefMethod m) {
   return m == ReliefMethod::PomFixed ? "pom_fixed" : m == ReliefMethod::PomAdaptive ? "pom_adaptive"
                                                                                     : "iterative";

@@ -15,4 +15,5 @@ package tu_unit_cfg_pkg;
   localparam int WtabLog2N = 8;
   localparam int Wtab2dLog2N = 5;
   localparam int PerspLanes = 1;
+  localparam bit EllRecurrence = 1'b0;  // B2: 0 analytic (tu_ellipse), 1 seed recurrences (tu_ellipse_rec)
 endpackage

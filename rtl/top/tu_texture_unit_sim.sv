@@ -8,6 +8,7 @@ module tu_texture_unit_sim #(
   parameter int HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
   parameter int HasNearest = {31'b0, tu_unit_cfg_pkg::HasNearest},
   parameter int HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
+  parameter int EllRecurrence = {31'b0, tu_unit_cfg_pkg::EllRecurrence},
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words
 ) (
   input  logic                                  clk_i,
@@ -81,7 +82,7 @@ module tu_texture_unit_sim #(
   logic [tu_formats_pkg::TexAddrW-1:0] d_addr;
   logic [31:0]                         d_word;
   tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear), .HasTriFilter(HasTriFilter), .HasNearest(HasNearest),
-                    .HasRelief(HasRelief)) u_tu (
+                    .HasRelief(HasRelief), .EllRecurrence(EllRecurrence)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,

@@ -8,6 +8,7 @@
 
 #include "Vtu_texture_unit_sim.h"
 #include "Vtu_texture_unit_sim_bil.h"
+#include "Vtu_texture_unit_sim_rec.h"
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "harness.hpp"
@@ -107,6 +108,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (o.relief && m.relief && m.relief->method == scene::ReliefMethod::Iterative)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/relief/method: iterative parallax is not in "
                                   "the RTL texture unit (its relief stage runs POM); render without relief (--no-relief)");
+  // B2 variant: the unit with EllRecurrence = 1 (full unit only).
+  const bool rec = s.footprint == scene::Footprint::Recurrence;
+  if (rec && !o.has_ewa)
+    throw std::invalid_argument(s.source + ": /footprint: recurrence, but the bilinear-only unit has the analytic ellipse");
   render::CmodelOptions copt;
   copt.weights = o.weights;
   copt.relief = o.relief;
@@ -224,8 +229,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       spans.push_back(r);
       for (int px = x; px <= x1; ++px, ++pix) {
         ewa::fx::In in;
-        in.b2 = ellipse::fx::analytic(ellipse::fx::make_in(k, px, y, static_cast<uint32_t>(r[kLaniso]),
-                                                           static_cast<uint32_t>(top)));
+        in.b2 = ellipse::fx::pixel(k, px, y, static_cast<uint32_t>(r[kLaniso]), static_cast<uint32_t>(top), rec);
         const bool guard = persp::Unit::pixel(persp::Unit::direct(k, px, y)).flag;
         ewa::PixelCost pc;
         if (eng == ewa::Engine::Ewa && pix < expect.pixels.size()) {
@@ -265,7 +269,11 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     load_words(d, tick, 0, view_words);
     d.ram_sel_i = 0;
   };
-  if (o.has_ewa) {
+  if (rec) {
+    Harness<Vtu_texture_unit_sim_rec> hs(drive<Vtu_texture_unit_sim_rec>, sample<Vtu_texture_unit_sim_rec>,
+                                         [&](Vtu_texture_unit_sim_rec& d, const std::function<void()>& t) { init(d, t); });
+    rr = hs.run(spans, ro, fanout);
+  } else if (o.has_ewa) {
     Harness<Vtu_texture_unit_sim> hs(drive<Vtu_texture_unit_sim>, sample<Vtu_texture_unit_sim>,
                                      [&](Vtu_texture_unit_sim& d, const std::function<void()>& t) { init(d, t); });
     rr = hs.run(spans, ro, fanout);
@@ -280,7 +288,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   out.cycles = rr.sim_cycles;
   out.hung = rr.hung;
   out.extra_outputs = rr.extra_outputs;
-  const auto front = static_cast<uint64_t>(ewa::texture_unit_front_latency(o.has_ewa));  // full unit: relief stage in
+  const auto front = static_cast<uint64_t>(ewa::texture_unit_front_latency(o.has_ewa, rec));  // full unit: relief stage in
   // With relief pixels the stage's march times interleave with the filter's: not predicted here
   // (the stage alone: relief::stage_cycles; the filter alone: ewa::stream_cycles).
   out.predicted_cycles = views.empty() ? ewa::stream_cycles(costs, front) : 0;

@@ -239,6 +239,7 @@ json unit_json(const Unit& u) {
 struct Config {
   bool trilinear, ewa, bilinear, tri_filter, nearest, relief, pom, iter_parallax;
   int pom_max_layers, weight_sources, wtab_log2n, wtab2d_log2n, persp_lanes;
+  bool ell_recurrence;  // B2: the seed's recurrences (tu_ellipse_rec) instead of the analytic unit
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -259,6 +260,8 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam int WtabLog2N = " << c.wtab_log2n << ";\n"
      << "  localparam int Wtab2dLog2N = " << c.wtab2d_log2n << ";\n"
      << "  localparam int PerspLanes = " << c.persp_lanes << ";\n"
+     << "  localparam bit EllRecurrence = 1'b" << c.ell_recurrence
+     << ";  // B2: 0 analytic (tu_ellipse), 1 seed recurrences (tu_ellipse_rec)\n"
      << "endpackage\n";
   return sv.str();
 }
@@ -392,7 +395,9 @@ int run(const Options& opt) {
   spec.stages.push_back({{persp}});
   if (relief) spec.stages.push_back({relief_rows});
   const TRow *weights = nullptr, *clip = nullptr;
-  if (filter != "bilinear") spec.stages.push_back({{one("ellipse", "analytic")}});
+  // B2: the scene's footprint variant ("footprint": analytic | recurrence).
+  const bool ell_rec = s.footprint == scene::Footprint::Recurrence;
+  if (filter != "bilinear") spec.stages.push_back({{one("ellipse", ell_rec ? "recurrence" : "analytic")}});
   // Weight sources: PSNR of the bit-accurate C-model render (EWA with that source) against the
   // float EWA reference, on the texture path (relief off on both sides: the relief method is its
   // own block). Rows the engine does not implement keep their 20 log10(1/rms).
@@ -444,17 +449,20 @@ int run(const Options& opt) {
   };
   const std::string origin = "`texunit plan " + opt.scene + "` from " + report_name;
   const Config planned{has_tri, has_ewa, uses("bilinear"), uses("trilinear"), false, relief, pom, iterative, max_layers, weight_bit(weights),
-                       log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1};
+                       log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1,
+                       ell_rec && has_tri};
   // The full unit: everything in, relief up to the scene format's 256 layers.
-  const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes};
+  const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes,
+                          false};
 
   // 5. Scene cycles of the RTL texture unit (texture path), from the exact cycle model
   //    ewa::stream_cycles on the bit-accurate C-model render's per-pixel work (equal to Verilator:
   //    TextureUnitRtl.CyclesMatchPrediction / MixedFiltersPerSpan): the specialised and the full
   //    unit with the plan's filter per material, and the full unit as authored.
   auto scene_cycles = [&](std::function<scene::Filter(const scene::Material&)> filter_of, bool relief_stage,
-                          std::optional<scene::WeightSource> weights) -> uint64_t {
+                          std::optional<scene::WeightSource> weights, bool rec) -> uint64_t {
     scene::Scene t = scene::without_relief(s);
+    t.footprint = rec ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
     for (auto& [name, m] : t.materials) m.filter = filter_of(m);
     render::CmodelOptions o = render::texture_path_only();
     o.weights = weights;
@@ -477,7 +485,7 @@ int run(const Options& opt) {
       }
       costs.push_back(c);
     }
-    return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage)));
+    return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage, rec)));
   };
   auto authored = [](const scene::Material& m) { return m.filter; };
   auto planned_filter = [&](const scene::Material& m) {
@@ -486,9 +494,9 @@ int run(const Options& opt) {
     return f == "bilinear" ? scene::Filter::Bilinear : f == "trilinear" ? scene::Filter::Trilinear : scene::Filter::Ewa;
   };
   const auto planned_weights = weights ? engine_source(*weights) : std::nullopt;
-  const uint64_t spec_cycles = scene_cycles(planned_filter, relief, planned_weights);
-  const uint64_t full_cycles = scene_cycles(planned_filter, true, planned_weights);  // the same picture
-  const uint64_t authored_cycles = scene_cycles(authored, true, std::nullopt);
+  const uint64_t spec_cycles = scene_cycles(planned_filter, relief, planned_weights, planned.ell_recurrence);
+  const uint64_t full_cycles = scene_cycles(planned_filter, true, planned_weights, false);  // the full unit (analytic B2)
+  const uint64_t authored_cycles = scene_cycles(authored, true, std::nullopt, false);
 
   const size_t px = bil.pixels.size();
   json out = {{"scene", s.source},

@@ -44,6 +44,10 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
       ->check(CLI::IsMember({"formula", "table1d", "table2d"}));
   r->add_option("--filter", a.filter, "override every material's filter")
       ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa"}));
+  r->add_option("--footprint", a.footprint,
+                "cmodel / rtl engines: override the scene's B2 variant (analytic tu_ellipse, or the seed's "
+                "recurrences tu_ellipse_rec; docs/blocks/ellipse.md)")
+      ->check(CLI::IsMember({"analytic", "recurrence"}));
   r->add_option("--threads", a.threads, "cmodel / rtl engines: threads for the C-model render (default 0: "
                 "every core); the image is the same for any count")
       ->check(CLI::Range(0, 4096));
@@ -51,7 +55,9 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
 }
 
 int run_render(const RenderArgs& a) {
-  const scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  if (!a.footprint.empty())
+    s.footprint = a.footprint == "recurrence" ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
   std::optional<scene::Filter> f;
   if (a.filter == "nearest") f = scene::Filter::Nearest;
   if (a.filter == "bilinear") f = scene::Filter::Bilinear;
@@ -84,8 +90,8 @@ int run_render(const RenderArgs& a) {
     const auto r = cosim::render_rtl(s, ro);
     frame = r.frame;
     ok = r.ok();
-    std::printf("rtl %s unit%s: %zu pixels in %llu spans, %llu mismatches against the C model%s%s\n",
-                a.rtl_unit.c_str(), ro.relief ? " with relief" : " (texture path, no relief)", r.frame.pixels.size(), (unsigned long long)r.spans,
+    std::printf("rtl %s unit%s%s: %zu pixels in %llu spans, %llu mismatches against the C model%s%s\n",
+                a.rtl_unit.c_str(), s.footprint == scene::Footprint::Recurrence ? " (recurrence ellipse)" : "", ro.relief ? " with relief" : " (texture path, no relief)", r.frame.pixels.size(), (unsigned long long)r.spans,
                 (unsigned long long)r.mismatches, r.first_mismatch.empty() ? "" : "; first: ",
                 r.first_mismatch.c_str());
     const double n = static_cast<double>(std::max<size_t>(1, r.frame.pixels.size()));

@@ -23,6 +23,9 @@ struct SceneError : std::runtime_error {
 enum class Filter { Nearest, Bilinear, Trilinear, Ewa };
 using WeightSource = schema::WeightSource;  // EWA weight source: its RTL code is the enum value
 enum class ReliefMethod { PomFixed, PomAdaptive, Iterative };
+// B2's Jacobian (docs/blocks/ellipse.md): analytic (tu_ellipse) or the seed's forward-difference
+// recurrences (tu_ellipse_rec, unit configuration EllRecurrence). One per unit, so per scene.
+enum class Footprint { Analytic, Recurrence };
 
 struct Relief {
   std::string height_texture;  // its first channel is the height (255 = top)
@@ -73,6 +76,7 @@ struct Scene {
   std::map<std::string, Material> materials;
   std::vector<Object> objects;
   Budget budget;
+  Footprint footprint = Footprint::Analytic;  // "footprint": "analytic" | "recurrence"
   std::vector<std::string> warnings;  // e.g. zero-area triangles dropped (load() prints them)
 };
 
@@ -97,5 +101,6 @@ tex::Texture build_texture(const Scene& s, const std::string& name);
 const char* to_string(Filter f);
 const char* to_string(WeightSource w);
 const char* to_string(ReliefMethod m);
+const char* to_string(Footprint f);
 
 }  // namespace tu::scene
