@@ -124,8 +124,8 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       if (const auto& maps = reliefs[static_cast<size_t>(c.object)]; maps && !px.flag)
         shift_relief_fx(s, rays, *m.relief, c, *maps, tx, x, y, &in.u, &in.v, &rec);
       if (opt.uv_shift) opt.uv_shift(x, y, c.object, &in.u, &in.v);
-      in.b2 = ellipse::fx::analytic(
-          ellipse::fx::make_in(k, x, y, laniso_code(m.max_aniso), static_cast<uint32_t>(top)));
+      in.b2 = ellipse::fx::pixel(k, x, y, laniso_code(m.max_aniso), static_cast<uint32_t>(top),
+                                 s.footprint == scene::Footprint::Recurrence);
       rec.x = x, rec.y = y, rec.object = c.object;
       rec.u = std::ldexp(double(in.u), -fmt::kTexUvF);
       rec.v = std::ldexp(double(in.v), -fmt::kTexUvF);

@@ -449,6 +449,9 @@ Scene parse(const std::string& text, const std::string& source, const std::strin
       s.lights.push_back(light);
     }
   }
+  s.footprint = root.str("footprint", std::string("analytic"), {"analytic", "recurrence"}) == "recurrence"
+                    ? Footprint::Recurrence
+                    : Footprint::Analytic;
   root.finish();
   return s;
 }
@@ -591,6 +594,7 @@ Scene at_time(Scene s, double t) {
     if (m.procedural) m.procedural->time += t;
   return s;
 }
+const char* to_string(Footprint f) { return f == Footprint::Recurrence ? "recurrence" : "analytic"; }
 
 const char* to_string(ReliefMethod m) {
   return m == ReliefMethod::PomFixed ? "pom_fixed" : m == ReliefMethod::PomAdaptive ? "pom_adaptive"

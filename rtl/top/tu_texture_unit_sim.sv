@@ -11,6 +11,7 @@ module tu_texture_unit_sim #(
   parameter int HasShading  = {31'b0, tu_unit_cfg_pkg::HasShading},
   parameter int HasPom      = {31'b0, tu_unit_cfg_pkg::HasPom},
   parameter int HasIterParallax = {31'b0, tu_unit_cfg_pkg::HasIterParallax},
+  parameter int EllRecurrence = {31'b0, tu_unit_cfg_pkg::EllRecurrence},
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words
 ) (
   input  logic                                  clk_i,
@@ -90,7 +91,7 @@ module tu_texture_unit_sim #(
   logic [tu_formats_pkg::ShadeWordW-1:0] shade;
   tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear), .HasTriFilter(HasTriFilter), .HasNearest(HasNearest),
                     .HasRelief(HasRelief), .HasShading(HasShading),
-                    .HasPom(HasPom), .HasIterParallax(HasIterParallax)) u_tu (
+                    .HasPom(HasPom), .HasIterParallax(HasIterParallax), .EllRecurrence(EllRecurrence)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,

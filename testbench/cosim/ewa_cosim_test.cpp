@@ -197,6 +197,31 @@ TEST(TextureUnitRtl, TrilinearLodBiasAndClampEqualCModel) {
               q.frame.pixels.size(), differ, (unsigned long long)q.cycles, (unsigned long long)q.predicted_cycles);
 }
 
+// The recurrence ellipse (EllRecurrence = 1: tu_ellipse_rec, fed by the span walk's q + G, q + H
+// registers) renders the small scene equal to the C model (fx::recurrence): EWA without stalls
+// with cycles as predicted (its latency sets the front), trilinear with 30 % stalls (the LOD of
+// both engines comes from B2).
+TEST(TextureUnitRtl, RecurrenceEllipseEqualsCModel) {
+  auto s = small_scene();
+  s.footprint = scene::Footprint::Recurrence;
+  for (auto f : {scene::Filter::Ewa, scene::Filter::Trilinear}) {
+    cosim::RtlRenderOptions o;
+    o.filter = f;
+    o.stall_prob = f == scene::Filter::Ewa ? 0 : 0.3;
+    const auto r = cosim::render_rtl(s, o);
+    EXPECT_TRUE(r.ok()) << r.first_mismatch;
+    EXPECT_GT(r.frame.pixels.size(), 1000u);
+    if (o.stall_prob == 0) EXPECT_EQ(r.cycles, r.predicted_cycles);
+    std::printf("recurrence ellipse, %s, stalls %.1f: %zu px, %llu mismatches, cycles %llu (predicted %llu)\n",
+                scene::to_string(f), o.stall_prob, r.frame.pixels.size(), (unsigned long long)r.mismatches,
+                (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
+  }
+  cosim::RtlRenderOptions bil;
+  bil.has_ewa = false;
+  bil.filter = scene::Filter::Bilinear;
+  EXPECT_THROW(cosim::render_rtl(s, bil), std::invalid_argument);  // the bilinear-only unit is analytic
+}
+
 // tu_nearest == tex::nearest; with trilinear taking turns (two short engines).
 TEST(TextureUnitRtl, NearestEqualsCModel) {
   check_engine(scene::Filter::Nearest, scene::Filter::Nearest, scene::Filter::Trilinear);

@@ -67,6 +67,10 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
       ->check(CLI::Range(1, 100000));
   r->add_option("--dt", a.dt, "--frames: time step between frames (the procedural materials' time unit)")
       ->check(CLI::Range(-1e6, 1e6));
+  r->add_option("--footprint", a.footprint,
+                "cmodel / rtl engines: override the scene's B2 variant (analytic tu_ellipse, or the seed's "
+                "recurrences tu_ellipse_rec; docs/blocks/ellipse.md)")
+      ->check(CLI::IsMember({"analytic", "recurrence"}));
   r->add_option("--threads", a.threads, "cmodel / rtl engines: threads for the C-model render (default 0: "
                 "every core); the image is the same for any count")
       ->check(CLI::Range(0, 4096));
@@ -79,6 +83,8 @@ int run_render(const RenderArgs& a) {
     for (auto& [name, m] : s.materials)
       if (m.procedural) m.procedural->footprint_limit = false;
   if (!a.clip.empty()) s = scene::with_clip(std::move(s), a.clip);
+  if (!a.footprint.empty())
+    s.footprint = a.footprint == "recurrence" ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
   std::optional<scene::Filter> f;
   if (a.filter == "nearest") f = scene::Filter::Nearest;
   if (a.filter == "bilinear") f = scene::Filter::Bilinear;
@@ -120,8 +126,8 @@ int run_render(const RenderArgs& a) {
     const auto r = cosim::render_rtl(s, ro);
     frame = r.frame;
     ok = r.ok();
-    std::printf("rtl %s unit%s: %zu pixels in %llu spans, %llu mismatches against the C model%s%s\n",
-                a.rtl_unit.c_str(), ro.relief ? " with relief" : " (texture path, no relief)", r.frame.pixels.size(), (unsigned long long)r.spans,
+    std::printf("rtl %s unit%s%s: %zu pixels in %llu spans, %llu mismatches against the C model%s%s\n",
+                a.rtl_unit.c_str(), s.footprint == scene::Footprint::Recurrence ? " (recurrence ellipse)" : "", ro.relief ? " with relief" : " (texture path, no relief)", r.frame.pixels.size(), (unsigned long long)r.spans,
                 (unsigned long long)r.mismatches, r.first_mismatch.empty() ? "" : "; first: ",
                 r.first_mismatch.c_str());
     const double n = static_cast<double>(std::max<size_t>(1, r.frame.pixels.size()));

@@ -24,6 +24,9 @@ struct SceneError : std::runtime_error {
 enum class Filter { Nearest, Bilinear, Trilinear, Ewa };
 using WeightSource = schema::WeightSource;  // EWA weight source: its RTL code is the enum value
 enum class ReliefMethod { PomFixed, PomAdaptive, Iterative };
+// B2's Jacobian (docs/blocks/ellipse.md): analytic (tu_ellipse) or the seed's forward-difference
+// recurrences (tu_ellipse_rec, unit configuration EllRecurrence). One per unit, so per scene.
+enum class Footprint { Analytic, Recurrence };
 
 struct Relief {
   std::string height_texture;  // its first channel is the height (255 = top)
@@ -117,6 +120,7 @@ struct Scene {
   std::vector<Object> objects;
   Budget budget;
   std::vector<Light> lights;  // at most one (the shading stage's); empty: no shading
+  Footprint footprint = Footprint::Analytic;  // "footprint": "analytic" | "recurrence"
   std::vector<std::string> warnings;  // e.g. zero-area triangles dropped (load() prints them)
 };
 
@@ -151,5 +155,6 @@ const char* to_string(ReliefMethod m);
 const char* to_string(ProceduralKind k);
 // The scene at time t: every procedural material's time set to its own time + t (frames).
 Scene at_time(Scene s, double t);
+const char* to_string(Footprint f);
 
 }  // namespace tu::scene
