@@ -29,12 +29,15 @@ module tu_texture_unit #(
   // 1: relief stage (tu_relief_stage) between B1 and the filter, with its POM march (fixed or
   // adaptive layers) and iterative-parallax engines
   parameter int HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
-  parameter int HasPom      = {31'b0, tu_unit_cfg_pkg::HasPom},
-  parameter int HasIterParallax = {31'b0, tu_unit_cfg_pkg::HasIterParallax},
   // 1: shading stage (tu_shade: one light, diffuse + the BRDF model ShadeModel, brdf::Model codes)
   // after the filter; every output pixel takes one word from the shade port
   parameter int HasShading  = {31'b0, tu_unit_cfg_pkg::HasShading},
   parameter int ShadeModel  = tu_unit_cfg_pkg::ShadeModel,
+  parameter int HasPom      = {31'b0, tu_unit_cfg_pkg::HasPom},
+  parameter int HasIterParallax = {31'b0, tu_unit_cfg_pkg::HasIterParallax},
+  // B2's Jacobian: 0 analytic (tu_ellipse), 1 the seed's forward-difference recurrences
+  // (tu_ellipse_rec: latency EllRecLatency > PerspLatency, so B1's output waits in a FIFO)
+  parameter int EllRecurrence = {31'b0, tu_unit_cfg_pkg::EllRecurrence},
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -129,7 +132,7 @@ module tu_texture_unit #(
   localparam int TriW  = tu_formats_pkg::TriW;     // tu_tri_t: per-triangle B2 fields
   localparam int PixW  = tu_formats_pkg::PixW;     // tu_pix_t: x, y, ovf, material, relief
   localparam int FPixW = tu_formats_pkg::FpixW;    // tu_fpix_t: after the relief stage
-  localparam int SpanW = 2 * PW + QW + 3 * XW + TriW + tu_formats_pkg::MaterialW + tu_formats_pkg::ReliefW;
+  localparam int SpanW = 2 * PW + 2 * QW + 3 * XW + TriW + tu_formats_pkg::MaterialW + tu_formats_pkg::ReliefW;
 
   // ---------------- span set-up: fork to B1 set-up and numerator set-up, join ----------------
   logic ps_in_ready, ns_in_ready, ps_valid, ns_valid, sj_valid, sj_ready;
@@ -165,7 +168,7 @@ module tu_texture_unit #(
     in_rel.hlw     = hlw_i;
     in_rel.hlh     = hlh_i;
   end
-  assign span_side = {a_i, d_i, g_i, x0_i, x1_i, y_i, in_tri, in_mat, in_rel};
+  assign span_side = {a_i, d_i, g_i, h_i, x0_i, x1_i, y_i, in_tri, in_mat, in_rel};
   assign in_ready_o = ps_in_ready && ns_in_ready;
 
   tu_persp_setup u_psetup (
@@ -185,12 +188,12 @@ module tu_texture_unit #(
 
   // unpack the span sideband
   logic [PW-1:0] s_a, s_d;
-  logic [QW-1:0] s_g;
+  logic [QW-1:0] s_g, s_h;
   logic [XW-1:0] s_x0, s_x1, s_y;
   tu_tri_t      s_tri;
   tu_material_t s_mat;
   tu_relief_t   s_rel;
-  assign {s_a, s_d, s_g, s_x0, s_x1, s_y, s_tri, s_mat, s_rel} = ns_side;
+  assign {s_a, s_d, s_g, s_h, s_x0, s_x1, s_y, s_tri, s_mat, s_rel} = ns_side;
   tu_pix_t s_pix;  // x: filled per pixel by the expander
   always_comb begin
     s_pix.fpix.x   = '0;
@@ -207,15 +210,16 @@ module tu_texture_unit #(
   logic [QW-1:0] ex_q0, ex_g, ex_q;
   logic [XW-1:0] ex_n, ex_x;
   logic [tu_formats_pkg::EllNumW-1:0] ex_nux, ex_nvx, ex_nuy, ex_nvy;
+  logic [tu_formats_pkg::EllRecQW-1:0] ex_qg, ex_qh;
   logic [ExSideW-1:0] ex_side;
   tu_span_expand #(.SideW(ExSideW)) u_expand (
     .clk_i, .rst_ni, .in_valid_i(sj_valid), .in_ready_o(sj_ready),
-    .pu0_i(ps_pu), .pv0_i(ps_pv), .q0_i(ps_q), .a_i(s_a), .d_i(s_d), .g_i(s_g),
+    .pu0_i(ps_pu), .pv0_i(ps_pv), .q0_i(ps_q), .a_i(s_a), .d_i(s_d), .g_i(s_g), .h_i(s_h),
     .nux_i(ns_nux), .nvx_i(ns_nvx), .nuy_i(ns_nuy), .nvy_i(ns_nvy), .m_i(ns_m), .nn_i(ns_nn),
     .x0_i(s_x0), .x1_i(s_x1), .side_i({s_tri, s_pix}),
     .out_valid_o(ex_valid), .out_ready_i(ex_ready),
     .pu0_o(ex_pu0), .pv0_o(ex_pv0), .q0_o(ex_q0), .a_o(ex_a), .d_o(ex_d), .g_o(ex_g), .n_o(ex_n),
-    .x_o(ex_x), .q_o(ex_q), .nux_o(ex_nux), .nvx_o(ex_nvx), .nuy_o(ex_nuy), .nvy_o(ex_nvy),
+    .x_o(ex_x), .q_o(ex_q), .qg_o(ex_qg), .qh_o(ex_qh), .nux_o(ex_nux), .nvx_o(ex_nvx), .nuy_o(ex_nuy), .nvy_o(ex_nvy),
     .side_o(ex_side)
   );
   tu_tri_t ex_tri;
@@ -243,25 +247,58 @@ module tu_texture_unit #(
   assign ex_ready = b1_in_ready && b2_in_ready && sb_in_ready;
   assign pj_valid = b1_valid && b2_valid && sb_valid;
 
+  // B1; with the recurrence ellipse its output waits in a FIFO for B2 (II = 1 kept: B1's
+  // pipeline plus the FIFO hold more pixels than B2's EllRecLatency)
+  logic          p1_valid, p1_ready;
+  logic [UW-1:0] p1_u, p1_v;
+  logic          p1_flag;
   tu_persp u_b1 (
     .clk_i, .rst_ni, .in_valid_i(ex_valid && b2_in_ready && sb_in_ready), .in_ready_o(b1_in_ready),
     .pu0_i(ex_pu0), .pv0_i(ex_pv0), .q0_i(ex_q0), .a_i(ex_a), .d_i(ex_d), .g_i(ex_g), .n_i(ex_n),
-    .out_valid_o(b1_valid), .out_ready_i(pj_ready && b2_valid && sb_valid),
-    .u_o(b1_u), .v_o(b1_v), .flag_o(b1_flag)
+    .out_valid_o(p1_valid), .out_ready_i(p1_ready),
+    .u_o(p1_u), .v_o(p1_v), .flag_o(p1_flag)
   );
-  tu_ellipse u_b2 (
-    .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && sb_in_ready), .in_ready_o(b2_in_ready),
-    .nux_i(ex_nux), .nvx_i(ex_nvx), .nuy_i(ex_nuy), .nvy_i(ex_nvy), .q_i(ex_q),
-    .dm_i(ex_tri.dm), .dexp_i(ex_tri.dexp), .laniso_i(ex_tri.laniso), .maxlod_i(ex_tri.maxlod),
-    .lbias_i(ex_tri.lbias), .lminlod_i(ex_tri.lminlod), .lmaxlod_i(ex_tri.lmaxlod),
-    .out_valid_o(b2_valid), .out_ready_i(pj_ready && b1_valid && sb_valid),
-    .ae_o(b2_ae), .be_o(b2_be), .ce_o(b2_ce), .eexp_o(b2_eexp), .fm_o(b2_fm), .fexp_o(b2_fexp),
-    .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_lod), .flags_o(b2_flags),
-    .lrho_o(b2_lrho), .tlod_o(b2_tlod), .tflags_o(b2_tflags)
-  );
+  localparam int EllB2Lat = (EllRecurrence != 0) ? tu_formats_pkg::EllRecLatency : tu_formats_pkg::EllLatency;
+  if (EllB2Lat > tu_formats_pkg::PerspLatency) begin : g_b1_fifo
+    tu_fifo #(.Width(2 * UW + 1), .Depth(4)) u_b1q (
+      .clk_i, .rst_ni, .in_valid_i(p1_valid), .in_ready_o(p1_ready), .in_data_i({p1_u, p1_v, p1_flag}),
+      .out_valid_o(b1_valid), .out_ready_i(pj_ready && b2_valid && sb_valid), .out_data_o({b1_u, b1_v, b1_flag})
+    );
+  end else begin : g_b1_direct
+    assign b1_valid = p1_valid;
+    assign p1_ready = pj_ready && b2_valid && sb_valid;
+    assign {b1_u, b1_v, b1_flag} = {p1_u, p1_v, p1_flag};
+  end
+  if (EllRecurrence != 0) begin : g_b2_rec
+    tu_ellipse_rec u_b2 (
+      .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && sb_in_ready), .in_ready_o(b2_in_ready),
+      .nux_i(ex_nux), .nvx_i(ex_nvx), .nuy_i(ex_nuy), .nvy_i(ex_nvy), .q_i(ex_q), .qg_i(ex_qg), .qh_i(ex_qh),
+      .laniso_i(ex_tri.laniso), .maxlod_i(ex_tri.maxlod),
+      .lbias_i(ex_tri.lbias), .lminlod_i(ex_tri.lminlod), .lmaxlod_i(ex_tri.lmaxlod),
+      .out_valid_o(b2_valid), .out_ready_i(pj_ready && b1_valid && sb_valid),
+      .ae_o(b2_ae), .be_o(b2_be), .ce_o(b2_ce), .eexp_o(b2_eexp), .fm_o(b2_fm), .fexp_o(b2_fexp),
+      .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_lod), .flags_o(b2_flags),
+      .lrho_o(b2_lrho), .tlod_o(b2_tlod), .tflags_o(b2_tflags)
+    );
+    logic unused_det3;
+    assign unused_det3 = ^{ex_tri.dm, ex_tri.dexp};  // det J is formed inside
+  end else begin : g_b2_analytic
+    tu_ellipse u_b2 (
+      .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && sb_in_ready), .in_ready_o(b2_in_ready),
+      .nux_i(ex_nux), .nvx_i(ex_nvx), .nuy_i(ex_nuy), .nvy_i(ex_nvy), .q_i(ex_q),
+      .dm_i(ex_tri.dm), .dexp_i(ex_tri.dexp), .laniso_i(ex_tri.laniso), .maxlod_i(ex_tri.maxlod),
+      .lbias_i(ex_tri.lbias), .lminlod_i(ex_tri.lminlod), .lmaxlod_i(ex_tri.lmaxlod),
+      .out_valid_o(b2_valid), .out_ready_i(pj_ready && b1_valid && sb_valid),
+      .ae_o(b2_ae), .be_o(b2_be), .ce_o(b2_ce), .eexp_o(b2_eexp), .fm_o(b2_fm), .fexp_o(b2_fexp),
+      .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_lod), .flags_o(b2_flags),
+      .lrho_o(b2_lrho), .tlod_o(b2_tlod), .tflags_o(b2_tflags)
+    );
+    logic unused_qgh;
+    assign unused_qgh = ^{ex_qg, ex_qh};  // the recurrence's denominators
+  end
   logic unused_b2;
   assign unused_b2 = ^{b2_lrho, b2_tflags};  // reported by the C model's record only
-  // Holds the sideband of every pixel inside B1/B2 (at most PerspLatency + 1).
+  // Holds the sideband of every pixel inside B1/B2 (at most max(PerspLatency, EllB2Lat) + 1).
   tu_fifo #(.Width(PixW), .Depth(16)) u_side (
     .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && b2_in_ready), .in_ready_o(sb_in_ready),
     .in_data_i(ex_pix_x), .out_valid_o(sb_valid), .out_ready_i(pj_ready && b1_valid && b2_valid),
@@ -345,7 +382,7 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::EwaCountW-1:0] p_visited, p_inside;
   logic [4:0]    p_flags, p_eflags;
   logic [1:0]    p_pflags;
-  logic [RrW-1:0] p_rr;  // relief result: layers, steps, flags
+  logic [RrW-1:0] p_rr;  // relief n, steps, flags
   localparam logic [1:0] EngBil = tu_formats_pkg::EngBilinear, EngEwa = tu_formats_pkg::EngEwa,
                          EngTri = tu_formats_pkg::EngTrilinear, EngNst = tu_formats_pkg::EngNearest;
   localparam logic [1:0] EngFirst = (HasEwa != 0) ? EngEwa : (HasTriFilter != 0) ? EngTri :

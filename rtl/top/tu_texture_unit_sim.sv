@@ -8,9 +8,10 @@ module tu_texture_unit_sim #(
   parameter int HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
   parameter int HasNearest = {31'b0, tu_unit_cfg_pkg::HasNearest},
   parameter int HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
+  parameter int HasShading  = {31'b0, tu_unit_cfg_pkg::HasShading},
   parameter int HasPom      = {31'b0, tu_unit_cfg_pkg::HasPom},
   parameter int HasIterParallax = {31'b0, tu_unit_cfg_pkg::HasIterParallax},
-  parameter int HasShading  = {31'b0, tu_unit_cfg_pkg::HasShading},
+  parameter int EllRecurrence = {31'b0, tu_unit_cfg_pkg::EllRecurrence},
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words
 ) (
   input  logic                                  clk_i,
@@ -89,8 +90,8 @@ module tu_texture_unit_sim #(
   logic                                 shade_valid, shade_ready;
   logic [tu_formats_pkg::ShadeWordW-1:0] shade;
   tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear), .HasTriFilter(HasTriFilter), .HasNearest(HasNearest),
-                    .HasRelief(HasRelief), .HasPom(HasPom), .HasIterParallax(HasIterParallax),
-                    .HasShading(HasShading)) u_tu (
+                    .HasRelief(HasRelief), .HasShading(HasShading),
+                    .HasPom(HasPom), .HasIterParallax(HasIterParallax), .EllRecurrence(EllRecurrence)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
@@ -120,7 +121,7 @@ module tu_texture_unit_sim #(
     .clk_i, .rst_ni, .wr_en_i(ram_we_i && ram_sel_i == 2'd2), .wr_addr_i(ram_waddr_i),
     .wr_data_i(ram_wdata_i), .out_valid_o(view_valid), .out_ready_i(view_ready), .out_data_o(view)
   );
-  tu_shade_src #(.Words(1 << 16)) u_shades (
+  tu_view_src #(.Words(1 << 16), .DataW(tu_formats_pkg::ShadeWordW)) u_shades (
     .clk_i, .rst_ni, .wr_en_i(ram_we_i && ram_sel_i == 2'd3), .wr_addr_i(ram_waddr_i),
     .wr_data_i(ram_wdata_i), .out_valid_o(shade_valid), .out_ready_i(shade_ready), .out_data_o(shade)
   );

@@ -197,6 +197,31 @@ TEST(TextureUnitRtl, TrilinearLodBiasAndClampEqualCModel) {
               q.frame.pixels.size(), differ, (unsigned long long)q.cycles, (unsigned long long)q.predicted_cycles);
 }
 
+// The recurrence ellipse (EllRecurrence = 1: tu_ellipse_rec, fed by the span walk's q + G, q + H
+// registers) renders the small scene equal to the C model (fx::recurrence): EWA without stalls
+// with cycles as predicted (its latency sets the front), trilinear with 30 % stalls (the LOD of
+// both engines comes from B2).
+TEST(TextureUnitRtl, RecurrenceEllipseEqualsCModel) {
+  auto s = small_scene();
+  s.footprint = scene::Footprint::Recurrence;
+  for (auto f : {scene::Filter::Ewa, scene::Filter::Trilinear}) {
+    cosim::RtlRenderOptions o;
+    o.filter = f;
+    o.stall_prob = f == scene::Filter::Ewa ? 0 : 0.3;
+    const auto r = cosim::render_rtl(s, o);
+    EXPECT_TRUE(r.ok()) << r.first_mismatch;
+    EXPECT_GT(r.frame.pixels.size(), 1000u);
+    if (o.stall_prob == 0) EXPECT_EQ(r.cycles, r.predicted_cycles);
+    std::printf("recurrence ellipse, %s, stalls %.1f: %zu px, %llu mismatches, cycles %llu (predicted %llu)\n",
+                scene::to_string(f), o.stall_prob, r.frame.pixels.size(), (unsigned long long)r.mismatches,
+                (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
+  }
+  cosim::RtlRenderOptions bil;
+  bil.has_ewa = false;
+  bil.filter = scene::Filter::Bilinear;
+  EXPECT_THROW(cosim::render_rtl(s, bil), std::invalid_argument);  // the bilinear-only unit is analytic
+}
+
 // tu_nearest == tex::nearest; with trilinear taking turns (two short engines).
 TEST(TextureUnitRtl, NearestEqualsCModel) {
   check_engine(scene::Filter::Nearest, scene::Filter::Nearest, scene::Filter::Trilinear);
@@ -265,6 +290,18 @@ TEST(TextureUnitRtl, IterativeReliefSceneEqualsCModelWithCyclesPredicted) {
   }
 }
 
+// EWA sub-texel border weights are not in the RTL unit yet (docs/blocks/ewa.md "Border
+// weights"): a message naming the material's field, before any simulation.
+TEST(TextureUnitRtl, BorderWeightsAreRejectedNamingTheField) {
+  const auto s = scene::with_clip(small_scene(), "mm_p1");
+  try {
+    cosim::render_rtl(s, {});
+    ADD_FAILURE() << "border weights accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("/clip: EWA border weights are not in the RTL"), std::string::npos) << e.what();
+  }
+}
+
 // docs/scenes/corridor.json on its planned unit (`texunit plan docs/scenes/corridor.json`: EWA with
 // the 1-D weight table on every material, iterative parallax, no POM march;
 // Vtu_texture_unit_sim_corridor): every pixel ==
@@ -295,18 +332,6 @@ TEST(TextureUnitRtl, CorridorPlannedUnitEqualsCModelWithCyclesPredicted) {
   // A material the planned unit has no engine for is refused, naming the field.
   o.filter.reset();  // the authored trilinear ceiling
   EXPECT_THROW(cosim::render_rtl(s, o), std::invalid_argument);
-}
-
-// EWA sub-texel border weights are not in the RTL unit yet (docs/blocks/ewa.md "Border
-// weights"): a message naming the material's field, before any simulation.
-TEST(TextureUnitRtl, BorderWeightsAreRejectedNamingTheField) {
-  const auto s = scene::with_clip(small_scene(), "mm_p1");
-  try {
-    cosim::render_rtl(s, {});
-    ADD_FAILURE() << "border weights accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("/clip: EWA border weights are not in the RTL"), std::string::npos) << e.what();
-  }
 }
 
 // docs/scenes/ui_quad.json (no relief, no minification): `texunit plan` writes a bilinear-only

@@ -10,6 +10,7 @@
 #include "Vtu_texture_unit_sim.h"
 #include "Vtu_texture_unit_sim_bil.h"
 #include "Vtu_texture_unit_sim_corridor.h"
+#include "Vtu_texture_unit_sim_rec.h"
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "harness.hpp"
@@ -22,7 +23,7 @@ namespace tu::cosim {
 namespace {
 constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;  // tu_texture_unit_sim Words
 constexpr uint64_t kViewWords = kRamWords;                              // tu_view_src Words
-constexpr uint64_t kShadeWords = uint64_t(1) << 16;                     // tu_shade_src Words
+constexpr uint64_t kShadeWords = uint64_t(1) << 16;                     // tu_view_src Words of the shade stream
 
 uint64_t lo(i128 v) { return static_cast<uint64_t>(v); }
 uint64_t hi(i128 v) { return static_cast<uint64_t>(v >> 64); }
@@ -122,8 +123,12 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   }
   if (o.relief && !o.has_ewa)
     throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
+  for (const auto& [name, m] : s.materials)
+    if (m.procedural)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/procedural: the noise unit is not in the RTL "
+                                  "texture unit yet (docs/blocks/noise.md §5); render it with --engine cmodel or ref");
   // The full unit shades (HasShading); a light needs it, and a model the materials name must be its.
-  const bool shade_unit = o.has_ewa && !o.corridor_unit;  // the corridor's plan: no light, no stage
+  const bool shade_unit = o.has_ewa && !o.corridor_unit;  // the corridor plan has no lights
   if (!shade_unit && !s.lights.empty())
     throw std::invalid_argument(s.source + ": /lights: the bilinear-only unit has no shading stage");
   for (const auto& [name, m] : s.materials)
@@ -134,6 +139,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (!m.clip.empty() && o.filter.value_or(m.filter) == scene::Filter::Ewa)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/clip: EWA border weights are not in the RTL "
                                   "texture unit yet (C model and float reference only); render with --clip off");
+  // B2 variant: the unit with EllRecurrence = 1 (full unit only).
+  const bool rec = s.footprint == scene::Footprint::Recurrence;
+  if (rec && !o.has_ewa)
+    throw std::invalid_argument(s.source + ": /footprint: recurrence, but the bilinear-only unit has the analytic ellipse");
   render::CmodelOptions copt;
   copt.shade_model = o.shade_model;
   copt.weights = o.weights;
@@ -257,8 +266,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       spans.push_back(r);
       for (int px = x; px <= x1; ++px, ++pix) {
         ewa::fx::In in;
-        in.b2 = ellipse::fx::analytic(ellipse::fx::make_in(k, px, y, static_cast<uint32_t>(r[kLaniso]),
-                                                           static_cast<uint32_t>(top)));
+        in.b2 = ellipse::fx::pixel(k, px, y, static_cast<uint32_t>(r[kLaniso]), static_cast<uint32_t>(top), rec);
         const bool guard = persp::Unit::pixel(persp::Unit::direct(k, px, y)).flag;
         ewa::PixelCost pc;
         if (eng == ewa::Engine::Ewa && pix < expect.pixels.size()) {
@@ -271,12 +279,12 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;
         pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(tlod >> fmt::kTexLodF), top);
         costs.push_back(pc);
+        if (shade_unit) shades.push_back(brdf::shade::pack(shade.fx_in(rays, c.object, c.triangle, px, y)));
         relief::StagePixel rp;
         if (ob.maps && pix < expect.pixels.size() && expect.pixels[pix].relief_n > 0)
           rp = {true, static_cast<uint32_t>(expect.pixels[pix].relief_steps),
                 m.relief->method == scene::ReliefMethod::Iterative};
         relief_px.push_back(rp);
-        if (shade_unit) shades.push_back(brdf::shade::pack(shade.fx_in(rays, c.object, c.triangle, px, y)));
       }
       x = x1 + 1;
     }
@@ -322,6 +330,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         drive<Vtu_texture_unit_sim_corridor>, sample<Vtu_texture_unit_sim_corridor>,
         [&](Vtu_texture_unit_sim_corridor& d, const std::function<void()>& t) { init(d, t); });
     rr = hs.run(spans, ro, fanout);
+  } else if (rec) {
+    Harness<Vtu_texture_unit_sim_rec> hs(drive<Vtu_texture_unit_sim_rec>, sample<Vtu_texture_unit_sim_rec>,
+                                         [&](Vtu_texture_unit_sim_rec& d, const std::function<void()>& t) { init(d, t); });
+    rr = hs.run(spans, ro, fanout);
   } else if (o.has_ewa) {
     Harness<Vtu_texture_unit_sim> hs(drive<Vtu_texture_unit_sim>, sample<Vtu_texture_unit_sim>,
                                      [&](Vtu_texture_unit_sim& d, const std::function<void()>& t) { init(d, t); });
@@ -339,11 +351,16 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   out.extra_outputs = rr.extra_outputs;
   // The full unit has the relief stage: its marches and iterations interleave with the filter's
   // work (ewa::texture_unit_cycles); the bilinear-only unit streams its pixels (stream_cycles).
+  // The recurrence ellipse's longer front (B1 waits in a FIFO) is modelled for scenes without
+  // relief pixels only (stream_cycles from its front latency); with relief pixels: not predicted.
   // The shading stage (II = 1, its words preloaded) adds its pipeline's latency once, at the end.
   const uint64_t shade_lat = shade_unit ? static_cast<uint64_t>(brdf::shade::latency(o.shade_model)) : 0;
-  out.predicted_cycles = (o.has_ewa ? ewa::texture_unit_cycles(costs, relief_px)
-                                    : ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(false)))) +
-                         shade_lat;
+  if (rec)
+    out.predicted_cycles = views.empty() ? ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(true, true))) + shade_lat : 0;
+  else
+    out.predicted_cycles = (o.has_ewa ? ewa::texture_unit_cycles(costs, relief_px)
+                                      : ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(false)))) +
+                           shade_lat;
   out.frame.image = expect.image;
   for (size_t i = 0; i < rr.outputs.size(); ++i) {
     const Row& q = rr.outputs[i];

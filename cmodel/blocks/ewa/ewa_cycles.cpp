@@ -117,6 +117,9 @@ uint64_t bilinear_stream_cycles(uint64_t pixels, uint64_t first_arrival) {
   return stream_cycles(std::vector<PixelCost>(pixels, c), first_arrival);
 }
 
-int texture_unit_front_latency(bool relief_stage) { return 2 + 1 + fmt::kPerspLatency + 1 + (relief_stage ? kReliefStagePassLatency : 0); }
+int texture_unit_front_latency(bool relief_stage, bool ell_recurrence) {
+  return 2 + 1 + std::max(fmt::kPerspLatency, ell_recurrence ? fmt::kEllRecLatency : 0) + 1 +
+         (relief_stage ? kReliefStagePassLatency : 0);
+}
 
 }  // namespace tu::ewa

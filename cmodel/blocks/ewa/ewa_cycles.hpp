@@ -99,7 +99,8 @@ inline bool trilinear_one_level(bool guard, int lod_floor, int top_level) {
 // Front-end latency of tu_texture_unit: span accepted at cycle 0 -> first pixel at the filter
 // engine's input: span set-up (2) + expander register (1) + B1 (PerspLatency) + FIFO (1), + 1 with
 // the relief stage (HasRelief: a pixel without a shift passes tu_relief_stage's sideband FIFO in
-// one clock, relief::stage_cycles).
-int texture_unit_front_latency(bool relief_stage);
+// one clock, relief::stage_cycles). With the recurrence ellipse (EllRecurrence: tu_ellipse_rec,
+// EllRecLatency > PerspLatency; B1's output waits in a FIFO) B2 sets the join instead of B1.
+int texture_unit_front_latency(bool relief_stage, bool ell_recurrence = false);
 
 }  // namespace tu::ewa
