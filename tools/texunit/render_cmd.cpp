@@ -137,7 +137,7 @@ int run_render(const RenderArgs& a) {
                   double(r.predicted_cycles) / n,
                   100.0 * (double(r.predicted_cycles) / double(std::max<uint64_t>(1, r.cycles)) - 1));
     else
-      std::printf("cycles measured %llu (%.2f/pixel), not predicted",
+      std::printf("cycles measured %llu (%.2f/pixel), not predicted (relief pixels in the stream)",
                   (unsigned long long)r.cycles, double(r.cycles) / n);
     std::printf("; simulated %.0f RTL pixels/s (%.2f s)\n", n / r.sim_wall_s, r.sim_wall_s);
   } else if (a.engine == "truth") {
@@ -416,7 +416,7 @@ bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const 
     const auto png = (std::filesystem::path(out_dir) / (std::string("rtl_") + r.name + ".png")).string();
     img::write_png_rgba(png, res.frame.image);
     const double n = static_cast<double>(std::max<size_t>(1, res.frame.pixels.size()));
-    char pred[32] = "-", err[32] = "-";  // a run without a prediction
+    char pred[32] = "-", err[32] = "-";  // relief streams: not predicted
     if (res.predicted_cycles) {
       std::snprintf(pred, sizeof pred, "%.3f", double(res.predicted_cycles) / n);
       std::snprintf(err, sizeof err, "%+.3f %%",
