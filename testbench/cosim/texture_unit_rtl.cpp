@@ -107,6 +107,11 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (o.relief && m.relief && m.relief->method == scene::ReliefMethod::Iterative)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/relief/method: iterative parallax is not in "
                                   "the RTL texture unit (its relief stage runs POM); render without relief (--no-relief)");
+  for (const auto& [name, m] : s.materials)
+    if (o.relief && m.relief &&
+        (m.relief->method == scene::ReliefMethod::DistanceMap || m.relief->method == scene::ReliefMethod::DistanceMapRefined))
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/relief/method: the distance-map tracer is not in "
+                                  "the RTL texture unit yet; render with --engine cmodel or without relief (--no-relief)");
   render::CmodelOptions copt;
   copt.weights = o.weights;
   copt.relief = o.relief;

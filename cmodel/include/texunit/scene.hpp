@@ -22,13 +22,14 @@ struct SceneError : std::runtime_error {
 
 enum class Filter { Nearest, Bilinear, Trilinear, Ewa };
 using WeightSource = schema::WeightSource;  // EWA weight source: its RTL code is the enum value
-enum class ReliefMethod { PomFixed, PomAdaptive, Iterative };
+enum class ReliefMethod { PomFixed, PomAdaptive, Iterative, DistanceMap, DistanceMapRefined };
 
 struct Relief {
   std::string height_texture;  // its first channel is the height (255 = top)
   double scale = 0.05;         // depth of the relief in texture-space units (uv of the texture)
   ReliefMethod method = ReliefMethod::PomAdaptive;
-  int layers = 16;             // PomFixed: N; PomAdaptive: Nmax (Nmin = 4); Iterative: cap
+  int layers = 16;             // PomFixed: N; PomAdaptive: Nmax (Nmin = 4); Iterative, DistanceMap*: cap
+  int map_layers = 16;         // DistanceMap*: the distance map's layers D
 };
 
 struct Material {
