@@ -12,6 +12,7 @@
 #include "texture/trilinear_lod.hpp"
 #include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
+#include "texunit/shading.hpp"
 
 namespace tu::render {
 
@@ -92,6 +93,12 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
                           : std::nullopt);
   const auto mats = object_materials(s);
   const persp::RayCaster rays(s.camera);
+  const shading::Setup shade(s, opt.shade_model.value_or(shading::kUnitModel));
+  // The shading stage after the filter (brdf::shade::eval): every covered pixel of a lit scene.
+  auto shaded = [&](const Cover& c, int x, int y, img::Rgba8 t) {
+    if (!shade.active()) return t;
+    return brdf::shade::eval(shade.model(c.object), shade.fx_in(rays, c.object, c.triangle, x, y), t).rgba;
+  };
   // Rows on opt.threads threads, each into its own list, joined in row order. The uv_shift hook
   // may keep state (its call order is part of its contract): one thread then.
   std::vector<std::vector<PixelRecord>> rows(static_cast<size_t>(h));
@@ -126,6 +133,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
         rec.color = tx.levels.back().at(0, 0);
         rec.lod = top;
         rec.texels = 1;
+        rec.color = shaded(c, x, y, rec.color);
         f.image.at(x, y) = rec.color;
         pixels.push_back(rec);
         continue;
@@ -149,7 +157,8 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           break;
         }
         case scene::Filter::Ewa: {
-          const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels});
+          const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels,
+                                                  m.clip.empty() ? nullptr : &clip::variant(m.clip)});
           rec.color = r.color;
           rec.lod = r.level;
           rec.texels = static_cast<int>(r.texels_visited);
@@ -159,6 +168,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           break;
         }
       }
+      rec.color = shaded(c, x, y, rec.color);
       f.image.at(x, y) = rec.color;
       pixels.push_back(rec);
     }

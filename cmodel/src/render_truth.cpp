@@ -8,6 +8,7 @@
 #include "pom/relief.hpp"
 #include "pom/relief_exact.hpp"
 #include "texunit/render.hpp"
+#include "texunit/shading.hpp"
 
 namespace tu::render {
 
@@ -65,6 +66,8 @@ Frame render_truth(const scene::Scene& s, const TruthOptions& opt) {
   // Sample offsets from the pixel centre: box = the pixel square, Gaussian = the EWA's pixel
   // model over the unit disc, w = (1 - r^2 / 2)^8 for r < 1 (ewa_ref.hpp).
   const bool gauss = opt.kernel == TruthKernel::Gaussian;
+  const shading::Setup shade(s);  // lit scenes: the float shading of the centre's surface point
+  const persp::RayCaster rays(s.camera);
   const double span = gauss ? 2.0 : 1.0;
   for (int y = 0; y < h; ++y) {
     if (opt.progress && (y % 8 == 0 || y == h - 1))
@@ -124,6 +127,8 @@ Frame render_truth(const scene::Scene& s, const TruthOptions& opt) {
       } else {
         rec.color = tx.levels.back().at(0, 0);  // every sample beyond the horizon: the texture mean
       }
+      if (brdf::shade::RefIn si; shade.ref_in(rays, c.object, c.triangle, x, y, &si))
+        rec.color = brdf::shade::ref(shade.model(c.object), si, rec.color);
       f.image.at(x, y) = rec.color;
       f.pixels.push_back(rec);
     }

@@ -1,5 +1,7 @@
 #include "texunit/scene.hpp"
 
+#include "gauss/clip.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -249,6 +251,10 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
   const auto w = n.str("weights", std::string("formula"), {"formula", "table1d", "table2d"});
   m.weights = w == "table1d" ? WeightSource::Table1d : w == "table2d" ? WeightSource::Table2d
                                                                       : WeightSource::Formula;
+  std::vector<std::string> clips{"off"};
+  for (const auto& v : clip::variants()) clips.push_back(v.name);
+  m.clip = n.str("clip", std::string("off"), clips);
+  if (m.clip == "off") m.clip.clear();
   m.max_aniso = n.num("max_aniso", 1, 64, 16.0);
   m.lod_bias = n.num("lod_bias", -16, 16, 0.0);
   m.min_lod = n.num("min_lod", 0, 12, 0.0);
@@ -272,6 +278,19 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
     r.finish();
     m.relief = rel;
   }
+  if (n.has("specular")) {
+    Node sp = n.obj("specular");
+    Specular spec;
+    spec.model = sp.str("model", std::string("auto"), {"auto", "blinn", "schlick", "msh", "dsh", "scos2", "st16", "qr"});
+    spec.n = sp.integer("n", 1, 1000, 32);
+    const auto c = sp.vec("color", 3, 2, {{1, 1, 1}});
+    for (int k = 0; k < 3; ++k) {
+      if (c[static_cast<size_t>(k)] < 0) sp.fail_at("color/" + std::to_string(k), "is negative");
+      spec.color[k] = c[static_cast<size_t>(k)];
+    }
+    sp.finish();
+    m.specular = spec;
+  }
   n.finish();
   return m;
 }
@@ -290,6 +309,18 @@ Object parse_object(Node n, const Scene& s, int index, std::vector<std::string>*
     n.fail_at("vertices", "expected " + std::to_string(nv) + " vertices for a " + type);
   if (!uvs.is_array() || uvs.size() != nv)
     n.fail_at("uv", "expected " + std::to_string(nv) + " uv pairs for a " + type);
+  std::array<std::array<double, 3>, 4> normal{};
+  const bool has_normals = n.has("normals");
+  if (has_normals) {
+    const json& ns = n.raw("normals");
+    if (!ns.is_array() || ns.size() != nv)
+      n.fail_at("normals", "expected " + std::to_string(nv) + " normals for a " + type);
+    for (size_t i = 0; i < nv; ++i) {
+      const auto q = n.numbers(ns[i], "normals/" + std::to_string(i), 3, kMaxCoord);
+      if (!(std::hypot(q[0], q[1], q[2]) > 0)) n.fail_at("normals/" + std::to_string(i), "is the zero vector");
+      for (size_t k = 0; k < 3; ++k) normal[i][k] = q[k];
+    }
+  }
   persp::Vertex v[4];
   for (size_t i = 0; i < nv; ++i) {
     const auto p = n.numbers(vs[i], "vertices/" + std::to_string(i), 3, kMaxCoord);
@@ -313,6 +344,7 @@ Object parse_object(Node n, const Scene& s, int index, std::vector<std::string>*
       return;
     }
     o.triangles.push_back(t);
+    if (has_normals) o.normals.push_back({normal[static_cast<size_t>(a)], normal[static_cast<size_t>(b)], normal[static_cast<size_t>(c)]});
   };
   if (nv == 3) tri(0, 1, 2, "");
   else tri(0, 1, 2, "#0"), tri(0, 2, 3, "#1");
@@ -354,7 +386,29 @@ Scene parse(const std::string& text, const std::string& source, const std::strin
     Node b = root.obj("error_budget");
     s.budget.max_texel_err = b.num("max_texel_err", 1e-6, 16, s.budget.max_texel_err);
     s.budget.min_psnr_db = b.num("min_psnr_db", 0, 100, s.budget.min_psnr_db);
+    s.budget.max_brdf_mad = b.num("max_brdf_mad", 1e-6, 1, s.budget.max_brdf_mad);
     b.finish();
+  }
+  if (root.has("lights")) {
+    const json& ls = root.raw("lights");
+    if (!ls.is_array() || ls.size() > 1) root.fail_at("lights", "expected an array of at most one light (one shading pass)");
+    for (size_t i = 0; i < ls.size(); ++i) {
+      Node l(ls[i], "/lights/" + std::to_string(i), s.source);
+      Light light;
+      if (l.has("position") == l.has("direction")) l.fail("give exactly one of 'position' or 'direction'");
+      light.positional = l.has("position");
+      const auto p = light.positional ? l.vec("position", 3, kMaxCoord) : l.vec("direction", 3, kMaxCoord);
+      if (!light.positional && !(std::hypot(p[0], p[1], p[2]) > 0)) l.fail_at("direction", "is the zero vector");
+      for (int k = 0; k < 3; ++k) (light.positional ? light.position : light.direction)[k] = p[static_cast<size_t>(k)];
+      const auto c = l.vec("color", 3, 2, {{1, 1, 1}});
+      for (int k = 0; k < 3; ++k) {
+        if (c[static_cast<size_t>(k)] < 0) l.fail_at("color/" + std::to_string(k), "is negative");
+        light.color[k] = c[static_cast<size_t>(k)];
+      }
+      light.ambient = l.num("ambient", 0, 2, 0.2);
+      l.finish();
+      s.lights.push_back(light);
+    }
   }
   root.finish();
   return s;
@@ -409,6 +463,13 @@ Scene default_scene() { return parse(default_scene_json(), "<default scene>", ".
 
 Scene without_relief(Scene s) {
   for (auto& [name, m] : s.materials) m.relief.reset();
+  return s;
+}
+
+Scene with_clip(Scene s, const std::string& clip) {
+  const std::string c = clip == "off" ? std::string() : clip;
+  if (!c.empty()) clip::variant(c);  // validates the name
+  for (auto& [name, m] : s.materials) m.clip = c;
   return s;
 }
 

@@ -1,5 +1,5 @@
-// Texture unit top: B1 perspective divide -> B2 footprint -> B5 filter, one output per covered
-// pixel, valid/ready throughout (docs/blocks/ewa.md "RTL").
+// Texture unit top: B1 perspective divide -> B2 footprint -> B5 filter -> shading, one output per
+// covered pixel, valid/ready throughout (docs/blocks/ewa.md "RTL"; shading: docs/blocks/brdf.md §6).
 //
 //   span in ─► fork ─► tu_persp_setup (2) ─┐                ┌─► tu_persp (8) ──┐
 //                  └─► tu_num_setup (2) ───┴► join ─► tu_span_expand ─► fork ─┼─► tu_ellipse (5) ─┼► join ─► tu_fifo ─► filter ─► pixel out
@@ -10,6 +10,9 @@
 // log2 size, wrap), EWA weight source and texel cap. The fixed-latency B1/B2 pipelines stall as a
 // whole; the FIFO in front of the data-dependent filter lets them run ahead by FifoDepth pixels.
 // The filter reads texels through a port with 1-cycle read latency (tu_texel_ram in simulation).
+// With HasShading the filtered pixel is joined with its word from the shade port (the shader's
+// N, L, H, exponent, cut-off and colours, brdf::shade::pack) and shaded by tu_shade (II = 1, the
+// model's latency) on its way out.
 // Per-pixel records: tu_records.svh (generated from cmodel/include/texunit/schema.hpp).
 `include "tu_records.svh"
 `include "tu_assert.svh"
@@ -25,6 +28,10 @@ module tu_texture_unit #(
   parameter int HasNearest   = {31'b0, tu_unit_cfg_pkg::HasNearest},
   // 1: relief stage (tu_relief_stage: POM, fixed or adaptive layers) between B1 and the filter
   parameter int HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
+  // 1: shading stage (tu_shade: one light, diffuse + the BRDF model ShadeModel, brdf::Model codes)
+  // after the filter; every output pixel takes one word from the shade port
+  parameter int HasShading  = {31'b0, tu_unit_cfg_pkg::HasShading},
+  parameter int ShadeModel  = tu_unit_cfg_pkg::ShadeModel,
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -85,6 +92,10 @@ module tu_texture_unit #(
   output logic                                  d_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   d_addr_o,
   input  logic [7:0]                            d_data_i,
+  // per-pixel shade word (brdf::shade::pack), one per output pixel in pixel order (HasShading)
+  input  logic                                  shade_valid_i,
+  output logic                                  shade_ready_o,
+  input  logic [tu_formats_pkg::ShadeWordW-1:0] shade_i,
   // texel port (1-cycle read latency)
   output logic                                  tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   tex_addr_o,
@@ -315,6 +326,15 @@ module tu_texture_unit #(
   // stay in order and only one engine drives the texel port. Switches happen at material changes
   // only (ewa::stream_cycles counts the drain).
   localparam int OsW = 2 * XW + 2 + 5 + tu_formats_pkg::PomNW;
+  // the filtered pixel before the shading stage
+  logic          p_valid, p_ready;
+  logic [XW-1:0] p_x, p_y;
+  logic [31:0]   p_rgba;
+  logic [3:0]    p_level;
+  logic [tu_formats_pkg::EwaCountW-1:0] p_visited, p_inside;
+  logic [4:0]    p_flags, p_eflags;
+  logic [1:0]    p_pflags;
+  logic [tu_formats_pkg::PomNW-1:0] p_rn;
   localparam logic [1:0] EngBil = tu_formats_pkg::EngBilinear, EngEwa = tu_formats_pkg::EngEwa,
                          EngTri = tu_formats_pkg::EngTrilinear, EngNst = tu_formats_pkg::EngNearest;
   localparam logic [1:0] EngFirst = (HasEwa != 0) ? EngEwa : (HasTriFilter != 0) ? EngTri :
@@ -357,16 +377,16 @@ module tu_texture_unit #(
   tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
     .clk_i, .rst_ni, .in_valid_i(fq_valid && can_go && eng_ready), .in_ready_o(os_in_ready),
     .in_data_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rn}), .out_valid_o(os_valid),
-    .out_ready_i(out_ready_i && flt_valid), .out_data_o(os_data)
+    .out_ready_i(p_ready && flt_valid), .out_data_o(os_data)
   );
   // cur_q is the engine of the oldest pixel in flight (set when it accepted its first).
   logic eng_in_valid;
   assign eng_in_valid = fq_valid && can_go && os_in_ready;
   assign flt_valid   = valid_of[cur_q];
-  assign out_valid_o = flt_valid && os_valid;
-  assign fire_out    = out_valid_o && out_ready_i;
-  assign {x_o, y_o, pflags_o, eflags_o, rn_o} = os_data;
-  assign rgba_o      = cur_rgba;
+  assign p_valid     = flt_valid && os_valid;
+  assign fire_out    = p_valid && p_ready;
+  assign {p_x, p_y, p_pflags, p_eflags, p_rn} = os_data;
+  assign p_rgba      = cur_rgba;
   // Only the engine with pixels in flight reads texels.
   assign tex_req_o   = req_of[cur_q];
   assign tex_addr_o  = cur_addr;
@@ -391,7 +411,7 @@ module tu_texture_unit #(
       .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
       .clamp_i(f_mat.tclamp), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap),
       .tex_req_o(ewa_req), .tex_addr_o(ewa_addr), .tex_data_i,
-      .out_valid_o(ewa_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngEwa),
+      .out_valid_o(ewa_valid), .out_ready_i(p_ready && os_valid && cur_q == EngEwa),
       .rgba_o(ewa_rgba), .level_o(ewa_level), .visited_o(ewa_visited), .inside_o(ewa_inside),
       .flags_o(ewa_flags)
     );
@@ -413,7 +433,7 @@ module tu_texture_unit #(
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngBil), .in_ready_o(bil_in_ready),
       .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .level_i(4'd0), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
       .clamp_i(f_mat.tclamp), .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i,
-      .out_valid_o(bil_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngBil), .rgba_o(bil_rgba)
+      .out_valid_o(bil_valid), .out_ready_i(p_ready && os_valid && cur_q == EngBil), .rgba_o(bil_rgba)
     );
   end else begin : g_no_bilinear
     assign bil_in_ready = 1'b0;
@@ -427,7 +447,7 @@ module tu_texture_unit #(
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngTri), .in_ready_o(tri_in_ready),
       .u_i(f_u), .v_i(f_v), .lod_i(f_tlod), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
       .clamp_i(f_mat.tclamp), .tex_req_o(tri_req), .tex_addr_o(tri_addr), .tex_data_i,
-      .out_valid_o(tri_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngTri), .rgba_o(tri_rgba),
+      .out_valid_o(tri_valid), .out_ready_i(p_ready && os_valid && cur_q == EngTri), .rgba_o(tri_rgba),
       .level_o(tri_level)
     );
   end else begin : g_no_trilinear
@@ -445,7 +465,7 @@ module tu_texture_unit #(
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngNst), .in_ready_o(nst_in_ready),
       .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh), .clamp_i(f_mat.tclamp),
       .tex_req_o(nst_req), .tex_addr_o(nst_addr), .tex_data_i,
-      .out_valid_o(nst_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngNst), .rgba_o(nst_rgba)
+      .out_valid_o(nst_valid), .out_ready_i(p_ready && os_valid && cur_q == EngNst), .rgba_o(nst_rgba)
     );
   end else begin : g_no_nearest
     assign nst_in_ready = 1'b0;
@@ -456,11 +476,36 @@ module tu_texture_unit #(
   end
   // Bilinear pixels: level 0, four texels; trilinear: floor(lod), eight; nearest: level 0, one;
   // no EWA flags.
-  assign level_o   = cur_q == EngEwa ? ewa_level : cur_q == EngTri ? tri_level : '0;
-  assign visited_o = cur_q == EngEwa ? ewa_visited
+  assign p_level   = cur_q == EngEwa ? ewa_level : cur_q == EngTri ? tri_level : '0;
+  assign p_visited = cur_q == EngEwa ? ewa_visited
                                      : tu_formats_pkg::EwaCountW'(cur_q == EngTri ? 8 : cur_q == EngNst ? 1 : 4);
-  assign inside_o  = cur_q == EngEwa ? ewa_inside : '0;
-  assign flags_o   = cur_q == EngEwa ? ewa_flags : '0;
+  assign p_inside  = cur_q == EngEwa ? ewa_inside : '0;
+  assign p_flags   = cur_q == EngEwa ? ewa_flags : '0;
+
+
+  // ---------------- shading ----------------
+  // The filtered pixel joined with its shade word; every other output field rides along.
+  localparam int ShSideW = 2 * XW + 4 + 2 * tu_formats_pkg::EwaCountW + 5 + 5 + 2 + tu_formats_pkg::PomNW;
+  if (HasShading != 0) begin : g_shade
+    logic sh_in_ready;
+    assign p_ready       = sh_in_ready && shade_valid_i;
+    assign shade_ready_o = sh_in_ready && p_valid;
+    tu_shade #(.Model(ShadeModel), .SideW(ShSideW)) u_shade (
+      .clk_i, .rst_ni, .in_valid_i(p_valid && shade_valid_i), .in_ready_o(sh_in_ready),
+      .rgba_i(p_rgba), .shade_i,
+      .side_i({p_x, p_y, p_level, p_visited, p_inside, p_flags, p_eflags, p_pflags, p_rn}),
+      .out_valid_o, .out_ready_i, .rgba_o,
+      .side_o({x_o, y_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o})
+    );
+  end else begin : g_no_shade
+    assign p_ready       = out_ready_i;
+    assign shade_ready_o = 1'b0;
+    assign out_valid_o   = p_valid;
+    assign {x_o, y_o, rgba_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o} =
+           {p_x, p_y, p_rgba, p_level, p_visited, p_inside, p_flags, p_eflags, p_pflags, p_rn};
+    logic unused_shade;
+    assign unused_shade = ^{shade_valid_i, shade_i};
+  end
 
   logic unused;
   assign unused = ^{b2_eexp, b2_fm, b2_fexp, ex_pix.fpix.x};  // x slot: filled per pixel
@@ -475,4 +520,5 @@ module tu_texture_unit #(
                                                                  wsrc_i, cap_i, filt_i, rel_i, radapt_i, rlayers_i, rscale_i, hbase_i,
                                                                  hlw_i, hlh_i})
   `TU_ASSERT_HANDSHAKE(ViewHandshake, view_valid_i, view_ready_o, {view_ok_i, vx_i, vy_i, vz_i, vc_i})
+  `TU_ASSERT_HANDSHAKE(ShadeHandshake, shade_valid_i, shade_ready_o, {shade_i})
 endmodule

@@ -233,6 +233,18 @@ TEST(TextureUnitRtl, ReliefSceneEqualsCModelWithStalls) {
   }
 }
 
+// EWA sub-texel border weights are not in the RTL unit yet (docs/blocks/ewa.md "Border
+// weights"): a message naming the material's field, before any simulation.
+TEST(TextureUnitRtl, BorderWeightsAreRejectedNamingTheField) {
+  const auto s = scene::with_clip(small_scene(), "mm_p1");
+  try {
+    cosim::render_rtl(s, {});
+    ADD_FAILURE() << "border weights accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("/clip: EWA border weights are not in the RTL"), std::string::npos) << e.what();
+  }
+}
+
 // docs/scenes/ui_quad.json (no relief, no minification): `texunit plan` writes a bilinear-only
 // unit without relief hardware (HasEwa = 0, HasRelief = 0; TexunitCli.plan_ui_quad, and the Yosys
 // cells drop: TexunitCli.plan_area_ui_quad). That unit renders the scene bit-exactly as the full
@@ -257,3 +269,37 @@ TEST(TextureUnitRtl, SpecialisedUnitRendersSceneWithoutReliefAsTheFullUnit) {
               (unsigned long long)a.cycles, (unsigned long long)b.cycles);
 }
 }  // namespace
+
+// The shading stage (docs/blocks/brdf.md §6): the docs' shaded sphere (one point light, vertex
+// normals, F_MSH highlight) through the full unit equals the C model on every pixel, cycles as
+// predicted (the stage's latency added once), and with 30% stalls on both sides; a material
+// naming another model than the unit's, or a light on the unit without the stage, is refused.
+TEST(TextureUnitRtl, ShadedSphereEqualsCModelCyclesPredicted) {
+  const auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/shaded_sphere.json");
+  ASSERT_FALSE(s.lights.empty());
+  cosim::RtlRenderOptions o;
+  const auto r = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r.ok()) << r.first_mismatch;
+  EXPECT_GT(r.frame.pixels.size(), 3000u);
+  EXPECT_EQ(r.cycles, r.predicted_cycles);
+  // Shading changed the picture: the unshaded C model differs on most pixels.
+  auto dark = s;
+  dark.lights.clear();
+  const auto plain = render::render_cmodel(dark, std::nullopt, render::texture_path_only());
+  size_t differ = 0;
+  for (size_t i = 0; i < plain.pixels.size() && i < r.frame.pixels.size(); ++i)
+    differ += !(plain.pixels[i].color == r.frame.pixels[i].color);
+  EXPECT_GT(differ, r.frame.pixels.size() / 2);
+  std::printf("shaded sphere: %zu px, %zu shaded differently from the texture, cycles %llu predicted %llu\n",
+              r.frame.pixels.size(), differ, (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
+  o.stall_prob = 0.3;
+  const auto q = cosim::render_rtl(s, o);
+  EXPECT_TRUE(q.ok()) << q.first_mismatch;
+  auto pinned = s;
+  pinned.materials.at("ball").specular->model = "blinn";
+  EXPECT_THROW(cosim::render_rtl(pinned, {}), std::invalid_argument);
+  cosim::RtlRenderOptions bil;
+  bil.has_ewa = false;
+  bil.filter = scene::Filter::Bilinear;
+  EXPECT_THROW(cosim::render_rtl(s, bil), std::invalid_argument);
+}

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <algorithm>
+#include <array>
 #include <map>
 #include <stdexcept>
 
@@ -20,6 +21,7 @@ namespace tu::cosim {
 namespace {
 constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;  // tu_texture_unit_sim Words
 constexpr uint64_t kViewWords = kRamWords;                              // tu_view_src Words
+constexpr uint64_t kShadeWords = uint64_t(1) << 16;                     // tu_shade_src Words
 
 uint64_t lo(i128 v) { return static_cast<uint64_t>(v); }
 uint64_t hi(i128 v) { return static_cast<uint64_t>(v >> 64); }
@@ -112,7 +114,20 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         (m.relief->method == scene::ReliefMethod::DistanceMap || m.relief->method == scene::ReliefMethod::DistanceMapRefined))
       throw std::invalid_argument(s.source + ": /materials/" + name + "/relief/method: the distance-map tracer is not in "
                                   "the RTL texture unit yet; render with --engine cmodel or without relief (--no-relief)");
+  // The full unit shades (HasShading); a light needs it, and a model the materials name must be its.
+  const bool shade_unit = o.has_ewa;
+  if (!shade_unit && !s.lights.empty())
+    throw std::invalid_argument(s.source + ": /lights: the bilinear-only unit has no shading stage");
+  for (const auto& [name, m] : s.materials)
+    if (m.specular && m.specular->model != "auto" && shading::model_of(m.specular->model) != o.shade_model)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/specular/model: " + m.specular->model +
+                                  ", but the unit's shading stage is " + brdf::name(o.shade_model));
+  for (const auto& [name, m] : s.materials)
+    if (!m.clip.empty() && o.filter.value_or(m.filter) == scene::Filter::Ewa)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/clip: EWA border weights are not in the RTL "
+                                  "texture unit yet (C model and float reference only); render with --clip off");
   render::CmodelOptions copt;
+  copt.shade_model = o.shade_model;
   copt.weights = o.weights;
   copt.relief = o.relief;
   copt.threads = o.threads;
@@ -151,6 +166,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   std::vector<Row> spans;
   std::vector<ewa::PixelCost> costs;
   std::vector<uint64_t> views;  // the view stream model's words
+  std::vector<std::array<uint32_t, brdf::shade::kWordWords>> shades;  // the shade stream model's words
+  const shading::Setup shade(s, o.shade_model);
+  const persp::RayCaster rays(s.camera);
   auto lw_of = [](const Obj& ob) { return log2_size(ob.tex.levels[0].width); };
   auto lh_of = [](const Obj& ob) { return log2_size(ob.tex.levels[0].height); };
   size_t pix = 0;
@@ -243,6 +261,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;
         pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(tlod >> fmt::kTexLodF), top);
         costs.push_back(pc);
+        if (shade_unit) shades.push_back(brdf::shade::pack(shade.fx_in(rays, c.object, c.triangle, px, y)));
       }
       x = x1 + 1;
     }
@@ -261,6 +280,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   if (view_words.size() / 2 > kViewWords)
     throw std::runtime_error(s.source + ": " + std::to_string(views.size()) + " relief pixels, the view stream model holds " +
                              std::to_string(kViewWords));
+  if (shades.size() > kShadeWords)
+    throw std::runtime_error(s.source + ": " + std::to_string(shades.size()) + " covered pixels, the shade stream model holds " +
+                             std::to_string(kShadeWords));
   auto init = [&](auto& d, const std::function<void()>& tick) {
     d.ram_sel_i = 0;
     load_words(d, tick, 0, ram);
@@ -268,6 +290,15 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     load_words(d, tick, 0, depth_ram);
     d.ram_sel_i = 2;
     load_words(d, tick, 0, view_words);
+    d.ram_sel_i = 3;  // part j of shade word i at 16 i + j
+    for (size_t i = 0; i < shades.size(); ++i)
+      for (size_t j = 0; j < shades[i].size(); ++j) {
+        d.ram_we_i = 1;
+        d.ram_waddr_i = static_cast<uint32_t>(16 * i + j);
+        d.ram_wdata_i = shades[i][j];
+        tick();
+      }
+    d.ram_we_i = 0;
     d.ram_sel_i = 0;
   };
   if (o.has_ewa) {
@@ -288,7 +319,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   const auto front = static_cast<uint64_t>(ewa::texture_unit_front_latency(o.has_ewa));  // full unit: relief stage in
   // With relief pixels the stage's march times interleave with the filter's: not predicted here
   // (the stage alone: relief::stage_cycles; the filter alone: ewa::stream_cycles).
-  out.predicted_cycles = views.empty() ? ewa::stream_cycles(costs, front) : 0;
+  // The shading stage (II = 1, its words preloaded) adds its pipeline's latency once, at the end.
+  const uint64_t shade_lat = shade_unit ? static_cast<uint64_t>(brdf::shade::latency(o.shade_model)) : 0;
+  out.predicted_cycles = views.empty() ? ewa::stream_cycles(costs, front) + shade_lat : 0;
   out.frame.image = expect.image;
   for (size_t i = 0; i < rr.outputs.size(); ++i) {
     const Row& q = rr.outputs[i];

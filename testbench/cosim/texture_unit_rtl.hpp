@@ -12,7 +12,10 @@
 //   * relief (option): each material's POM relief through the unit's relief stage, the depth maps
 //     in the depth RAM model and one view word per pixel of a relief span (relief::pixel_view,
 //     quantised; the complexity texel for adaptive layers) in the view stream model; without the
-//     option (or on a unit without relief) the texture path alone is compared.
+//     option (or on a unit without relief) the texture path alone is compared;
+//   * shading: the full unit has the shading stage (HasShading, model ShadeModel = shade_model):
+//     one shade word per covered pixel (shading::Setup::fx_in, brdf::shade::pack) in the shade
+//     stream model, `on` = 0 in a scene without a light (the colour passes unchanged).
 #pragma once
 
 #include <cstdint>
@@ -21,6 +24,7 @@
 
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
+#include "texunit/shading.hpp"
 
 namespace tu::cosim {
 
@@ -32,6 +36,7 @@ struct RtlRenderOptions {
   double stall_prob = 0;                       // random input bubbles / output stalls
   uint64_t seed = 1;
   int threads = 0;  // for the C-model render and visibility (<= 0: every core); same result
+  brdf::Model shade_model = shading::kUnitModel;  // the Verilated full unit's ShadeModel
 };
 
 struct RtlRender {

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "gauss/clip.hpp"
 #include "output.hpp"
 #include "texture_unit_rtl.hpp"
 #include "texunit/parallel.hpp"
@@ -15,6 +16,12 @@
 #include "texunit/scene.hpp"
 
 namespace tu::cli {
+
+std::vector<std::string> clip_choices() {
+  std::vector<std::string> c{"off"};
+  for (const auto& v : clip::variants()) c.push_back(v.name);
+  return c;
+}
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a) {
   auto* r = app.add_subcommand("render", "render a scene to PNG images (docs/scene-format.md)");
@@ -38,10 +45,13 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
                  "or the bilinear-only unit (HasEwa = 0)")
       ->check(CLI::IsMember({"full", "bilinear"}));
   r->add_flag("--no-relief", a.no_relief,
-              "cmodel / rtl engines: leave every material's relief out (the texture path alone); the "
+              "leave every material's relief out (the texture path alone; every engine); the "
               "bilinear-only RTL unit has no relief stage and always renders without it");
   r->add_option("--weights", a.weights, "override every material's EWA weight source")
       ->check(CLI::IsMember({"formula", "table1d", "table2d"}));
+  r->add_option("--clip", a.clip, "override every material's EWA sub-texel border weights: a clip-volume "
+                "variant (docs/blocks/gaussian.md) or off (docs/blocks/ewa.md#border-weights)")
+      ->check(CLI::IsMember(clip_choices()));
   r->add_option("--filter", a.filter, "override every material's filter")
       ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa"}));
   r->add_option("--threads", a.threads, "cmodel / rtl engines: threads for the C-model render (default 0: "
@@ -51,7 +61,8 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
 }
 
 int run_render(const RenderArgs& a) {
-  const scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  if (!a.clip.empty()) s = scene::with_clip(std::move(s), a.clip);
   std::optional<scene::Filter> f;
   if (a.filter == "nearest") f = scene::Filter::Nearest;
   if (a.filter == "bilinear") f = scene::Filter::Bilinear;
@@ -106,7 +117,8 @@ int run_render(const RenderArgs& a) {
     to.progress = opt.progress;
     frame = render::render_truth(s, to);
   } else {
-    frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt) : render::render_ref(s, f);
+    frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt)
+                                 : render::render_ref(a.no_relief ? scene::without_relief(s) : s, f);
   }
   {
     const auto& flags = render::pixel_flags();
@@ -148,6 +160,7 @@ void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::stri
 // `refs`: the texture path.
 bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
                      const std::string& out_dir, int threads);
+bool demo_render_shaded(const std::string& out_dir, int threads);
 }  // namespace
 
 bool demo_render(const std::string& out_dir, int threads) {
@@ -197,7 +210,8 @@ bool demo_render(const std::string& out_dir, int threads) {
   const Refs flat_refs{ewa_flat, truth_flat}, relief_refs{ewa, truth};
   demo_render_cmodel(flat, flat_refs, out_dir, threads);
   demo_render_relief(s, relief_refs, out_dir, threads);
-  return demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
+  const bool rtl_ok = demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
+  return demo_render_shaded(out_dir, threads) && rtl_ok;
 }
 
 namespace {
@@ -328,6 +342,37 @@ bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const 
   std::printf("%s\n", ok ? "RTL texture unit == C model on every pixel"
                           : "MISMATCH: RTL texture unit and C model disagree (see above)");
   return ok;
+}
+
+// The shaded scene (docs/scenes/shaded_sphere.json: one point light, diffuse + the unit's F_MSH
+// highlight on a checkered sphere with vertex normals) through the three engines.
+bool demo_render_shaded(const std::string& out_dir, int threads) {
+  const char* path = "docs/scenes/shaded_sphere.json";
+  if (!std::filesystem::exists(path)) {
+    std::printf("\nshaded scene: %s not found (run the demo from the repository root): skipped\n", path);
+    return true;
+  }
+  const scene::Scene s = scene::load(path);
+  const auto ref = render::render_ref(s);
+  render::CmodelOptions copt;
+  copt.threads = threads;
+  const auto fx = render::render_cmodel(s, std::nullopt, copt);
+  cosim::RtlRenderOptions o;
+  o.threads = threads;
+  const auto rtl = cosim::render_rtl(s, o);
+  const auto dir = std::filesystem::path(out_dir);
+  img::write_png_rgba((dir / "shaded_ref.png").string(), ref.image);
+  img::write_png_rgba((dir / "shaded_cmodel.png").string(), fx.image);
+  img::write_png_rgba((dir / "shaded_rtl.png").string(), rtl.frame.image);
+  const double n = static_cast<double>(std::max<size_t>(1, rtl.frame.pixels.size()));
+  std::printf("\nshaded scene %s (%zu covered pixels; one light, diffuse + %s highlight after the filter):\n"
+              "  C model %s vs the float reference; RTL: %llu mismatches against the C model, %.3f cycles/pixel, "
+              "predicted %.3f (%+.3f %%); images %s/shaded_{ref,cmodel,rtl}.png\n",
+              path, rtl.frame.pixels.size(), brdf::name(o.shade_model).c_str(), db(render::psnr_covered(fx, ref)).c_str(),
+              (unsigned long long)rtl.mismatches, double(rtl.cycles) / n, double(rtl.predicted_cycles) / n,
+              100.0 * (double(rtl.predicted_cycles) / double(std::max<uint64_t>(1, rtl.cycles)) - 1), out_dir.c_str());
+  if (!rtl.ok()) std::printf("  first mismatch: %s\n", rtl.first_mismatch.c_str());
+  return rtl.ok() && rtl.cycles == rtl.predicted_cycles;
 }
 }  // namespace
 

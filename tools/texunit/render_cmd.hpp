@@ -2,11 +2,13 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 namespace tu::cli {
 
 struct RenderArgs {
   std::string scene, out_dir, dump, engine = "ref", filter, weights, rtl_unit = "full";
+  std::string clip;  // overrides every material's EWA border weights (a clip variant or "off")
   bool no_relief = false;
   int ss = 16;                      // --engine truth: samples per pixel side
   std::string truth_kernel = "box";  // --engine truth: box | gauss
@@ -14,6 +16,7 @@ struct RenderArgs {
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);
+std::vector<std::string> clip_choices();  // "off" and every gauss::clip variant
 int run_render(const RenderArgs& a);  // throws on bad scenes and unwritable outputs
 
 // The main job's render part: the default scene through the float reference with every filter,

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "brdf/brdf_common.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "texunit/image.hpp"
 #include "texunit/scene.hpp"
@@ -55,8 +56,11 @@ std::vector<const scene::Material*> object_materials(const scene::Scene& s);
 std::vector<persp::Coef9> setup_ref(const scene::Scene& s, size_t object, int tex_w, int tex_h);
 std::vector<persp::Unit::Coefs> setup_fx(const scene::Scene& s, size_t object, int tex_w, int tex_h);
 
-// Float reference render. `filter`, when given, overrides every material's filter.
-Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter = {});
+// Float reference render. `filter`, when given, overrides every material's filter; scenes with a
+// light are shaded (brdf::shade::ref on the filtered colour; "auto" models: `shade_model`, else the
+// unit's, texunit/shading.hpp).
+Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter = {},
+                 std::optional<brdf::Model> shade_model = {});
 
 // Bit-accurate C-model render (docs/blocks/ewa.md): per covered pixel (same visibility as the
 // reference) B1 persp::Unit on the quantised coefficients, B2 ellipse::fx::analytic, then the
@@ -75,6 +79,9 @@ struct CmodelOptions {
   // Threads for visibility and the pixels (rows; <= 0: every core). The frame is the same for
   // any count; a render with a uv_shift hook runs on one thread.
   int threads = 0;
+  // Shading stage (scenes with a light): the model of materials whose specular model is "auto"
+  // (the unit's; texunit/shading.hpp kUnitModel when not given).
+  std::optional<brdf::Model> shade_model;
 };
 // The options of the texture path alone (relief off), for comparisons with the RTL top.
 inline CmodelOptions texture_path_only() {

@@ -4,6 +4,7 @@
 // the line (for syntax errors) or the field as a JSON pointer (e.g. `/objects/1/material`).
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -32,16 +33,27 @@ struct Relief {
   int map_layers = 16;         // DistanceMap*: the distance map's layers D
 };
 
+// The material's specular lobe for the shading stage (docs/blocks/brdf.md "In the unit").
+struct Specular {
+  std::string model = "auto";  // a brdf::name() model, or "auto": the unit's model (`texunit plan`)
+  int n = 32;                  // exponent, 1..1000
+  double color[3] = {1, 1, 1}; // ks per channel, 0..2
+};
+
 struct Material {
   std::string name;
   std::string texture;
   Filter filter = Filter::Ewa;
   WeightSource weights = WeightSource::Formula;
+  // EWA sub-texel border weights (seed 003 §2): a gauss::clip variant name (docs/blocks/ewa.md
+  // "Border weights"); empty: off (the all-or-nothing Q < 1 test).
+  std::string clip;
   double max_aniso = 16;
   // Trilinear's GL LOD rule (texture/trilinear_lod.hpp): lambda + lod_bias clamped to
   // [min_lod, max_lod] (levels), then to the pyramid.
   double lod_bias = 0, min_lod = 0, max_lod = 12;
   std::optional<Relief> relief;
+  std::optional<Specular> specular;  // absent: diffuse only (when the scene has a light)
 };
 
 struct TextureSpec {
@@ -57,6 +69,18 @@ struct Object {
   std::string name;
   std::string material;
   std::vector<persp::Triangle> triangles;  // uv in texture repeats (1 = the texture's width)
+  // Per triangle, the normals at its three vertices (interpolated over it); empty: face normals.
+  std::vector<std::array<std::array<double, 3>, 3>> normals;
+};
+
+// The scene's light (shading stage): a point light at `position` or a directional one shining
+// along `direction`, its colour and the ambient level.
+struct Light {
+  bool positional = false;
+  double position[3] = {0, 0, 0};
+  double direction[3] = {0, -1, 0};
+  double color[3] = {1, 1, 1};
+  double ambient = 0.2;
 };
 
 // The object's triangles with uv in level-0 texels of a tex_width x tex_height texture.
@@ -65,6 +89,7 @@ std::vector<persp::Triangle> in_texels(const Object& o, int tex_width, int tex_h
 struct Budget {
   double max_texel_err = 1.0 / 16;  // texture-coordinate error, texels
   double min_psnr_db = 35;          // image quality against the float EWA reference
+  double max_brdf_mad = 0.01;       // specular model: mean |F - F_Blinn| on the thesis grid (`plan`)
 };
 
 struct Scene {
@@ -74,6 +99,7 @@ struct Scene {
   std::map<std::string, Material> materials;
   std::vector<Object> objects;
   Budget budget;
+  std::vector<Light> lights;  // at most one (the shading stage's); empty: no shading
   std::vector<std::string> warnings;  // e.g. zero-area triangles dropped (load() prints them)
 };
 
@@ -91,6 +117,9 @@ const std::string& default_scene_json();
 Scene default_scene();
 // The same scene with every material's relief removed (the texture path alone).
 Scene without_relief(Scene s);
+// The same scene with every material's EWA border weights set to the clip variant `clip`
+// ("off" or empty: none); throws std::invalid_argument for an unknown variant.
+Scene with_clip(Scene s, const std::string& clip);
 
 // Builds the texture named `name` (procedural or PNG) with its mip pyramid.
 tex::Texture build_texture(const Scene& s, const std::string& name);
