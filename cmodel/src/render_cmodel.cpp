@@ -92,6 +92,9 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
                           ? std::optional(relief::make_maps(s, o.material))
                           : std::nullopt);
   const auto mats = object_materials(s);
+  std::vector<std::optional<noise::ProcCodes>> procs;  // per procedural object: the unit's constants
+  for (const auto& p : procedural_objects(s, texs))
+    procs.push_back(opt.procedural && p ? std::optional(noise::quantise(*p)) : std::nullopt);
   const persp::RayCaster rays(s.camera);
   const shading::Setup shade(s, opt.shade_model.value_or(shading::kUnitModel));
   // The shading stage after the filter (brdf::shade::eval): every covered pixel of a lit scene.
@@ -121,12 +124,21 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       if (const auto& maps = reliefs[static_cast<size_t>(c.object)]; maps && !px.flag)
         shift_relief_fx(s, rays, *m.relief, c, *maps, tx, x, y, &in.u, &in.v, &rec);
       if (opt.uv_shift) opt.uv_shift(x, y, c.object, &in.u, &in.v);
-      in.b2 = ellipse::fx::analytic(
-          ellipse::fx::make_in(k, x, y, laniso_code(m.max_aniso), static_cast<uint32_t>(top)));
+      in.b2 = ellipse::fx::pixel(k, x, y, laniso_code(m.max_aniso), static_cast<uint32_t>(top),
+                                 s.footprint == scene::Footprint::Recurrence);
       rec.x = x, rec.y = y, rec.object = c.object;
       rec.u = std::ldexp(double(in.u), -fmt::kTexUvF);
       rec.v = std::ldexp(double(in.v), -fmt::kTexUvF);
       rec.b2_flags = in.b2.flags;
+      if (const auto& pc = procs[static_cast<size_t>(c.object)]) {
+        // The noise unit at B1's (u, v) with B2's lrho; beyond the B1 guard the footprint spans
+        // every octave: all weights 0, the field's mean.
+        rec.color = shaded(c, x, y, noise::proc_color_fx(*pc, noise::proc_value_fx(*pc, in.u, in.v, px.flag ? noise::kNoFootprint : in.b2.lrho)));
+        rec.texels = 0;
+        f.image.at(x, y) = rec.color;
+        pixels.push_back(rec);
+        continue;
+      }
       if (px.flag) {
         // B1 guard (q < 2^-PerspGuardLog2, beyond 1024x the unit distance): no texture
         // coordinates. The footprint there spans the texture: its mean, the 1x1 top level.

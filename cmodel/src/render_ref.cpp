@@ -117,6 +117,7 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
     reliefs.push_back(s.materials.at(o.material).relief ? std::optional(relief::make_maps(s, o.material))
                                                         : std::nullopt);
   const auto mats = object_materials(s);
+  const auto procs = procedural_objects(s, texs);
   const persp::RayCaster rays(s.camera);
   const shading::Setup shade(s, shade_model.value_or(shading::kUnitModel));
   f.pixels.reserve(covered(cov));
@@ -137,6 +138,14 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
       const auto foot = ellipse::footprint(j, fp);
       rec.aniso = foot.aniso;
       rec.footprint_lod = foot.lod;
+      if (const auto& pp = procs[static_cast<size_t>(c.object)]) {
+        rec.color = procedural_ref(*pp, u, v, j);  // the noise instead of a texture fetch, then the shading
+        if (brdf::shade::RefIn si; shade.ref_in(rays, c.object, c.triangle, x, y, &si))
+          rec.color = brdf::shade::ref(shade.model(c.object), si, rec.color);
+        f.image.at(x, y) = rec.color;
+        f.pixels.push_back(rec);
+        continue;
+      }
       switch (filter.value_or(m.filter)) {
         case scene::Filter::Nearest:
           rec.color = tx.fetch(0, floor_i64(u), floor_i64(v));

@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "texunit/formats.hpp"
 #include "texunit/text.hpp"
 
 namespace tu::scene {
@@ -130,6 +131,11 @@ class Node {
                      std::to_string(hi) + "]");
     return static_cast<int>(x);
   }
+  bool boolean(const std::string& k) {
+    const json& v = raw(k);
+    if (!v.is_boolean()) fail_at(k, "expected true or false");
+    return v.get<bool>();
+  }
   std::string str(const std::string& k, std::optional<std::string> def = {},
                   const std::vector<std::string>& allowed = {}) {
     if (!has(k) && def) return used_.insert(k), *def;
@@ -240,6 +246,41 @@ TextureSpec parse_texture(Node n, const std::string& name, const std::string& ba
   return t;
 }
 
+Procedural parse_procedural(Node p) {
+  Procedural pr;
+  const auto kind = p.str("kind", {}, {"fbm", "smoke", "water"});
+  pr.kind = kind == "smoke" ? ProceduralKind::Smoke : kind == "water" ? ProceduralKind::Water : ProceduralKind::Fbm;
+  pr.octaves = p.integer("octaves", 1, fmt::kNoiseOctaves, fmt::kNoiseOctaves);
+  // f / texture width < 256 keeps the frequency code in u32.24 (docs/blocks/noise.md §5).
+  pr.frequency = p.num("frequency", 1.0 / 256, 128, 8.0);
+  pr.seed = p.integer("seed", 0, 255, 0);
+  pr.time = p.num("time", -1e6, 1e6, 0.0);
+  pr.speed = p.num("speed", 0, 256, pr.kind == ProceduralKind::Smoke ? 1.0 : 0.0);
+  pr.footprint_limit = p.has("footprint_limit") ? p.boolean("footprint_limit") : true;
+  if (pr.kind == ProceduralKind::Smoke) {
+    pr.threshold = p.num("threshold", 0, 0.99, pr.threshold);
+    pr.gain = p.num("gain", 0, 255, pr.gain);
+  }
+  if (pr.kind == ProceduralKind::Water) {
+    pr.amplitude = p.num("amplitude", 0, 16, pr.amplitude);
+    if (p.has("light")) {
+      const auto l = p.vec("light", 3, 1e6);
+      if (!(std::hypot(l[0], l[1], l[2]) > 0)) p.fail_at("light", "is the zero vector");
+      for (size_t i = 0; i < 3; ++i) pr.light[i] = l[i];
+    }
+  }
+  for (const char* k : {"color0", "color1"}) {
+    if (!p.has(k)) continue;
+    const auto c = p.vec(k, 3, 255);
+    for (size_t i = 0; i < 3; ++i)
+      if (c[i] < 0) p.fail_at(std::string(k) + "/" + std::to_string(i), "value is out of range [0, 255]");
+    auto& dst = std::string(k) == "color0" ? pr.color0 : pr.color1;
+    for (size_t i = 0; i < 3; ++i) dst[i] = c[i];
+  }
+  p.finish();
+  return pr;
+}
+
 Material parse_material(Node n, const std::string& name, const Scene& s) {
   Material m;
   m.name = name;
@@ -278,6 +319,7 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
     r.finish();
     m.relief = rel;
   }
+  if (n.has("procedural")) m.procedural = parse_procedural(n.obj("procedural"));
   if (n.has("specular")) {
     Node sp = n.obj("specular");
     Specular spec;
@@ -410,6 +452,9 @@ Scene parse(const std::string& text, const std::string& source, const std::strin
       s.lights.push_back(light);
     }
   }
+  s.footprint = root.str("footprint", std::string("analytic"), {"analytic", "recurrence"}) == "recurrence"
+                    ? Footprint::Recurrence
+                    : Footprint::Analytic;
   root.finish();
   return s;
 }
@@ -461,6 +506,40 @@ const std::string& default_scene_json() {
 
 Scene default_scene() { return parse(default_scene_json(), "<default scene>", "."); }
 
+const std::string& procedural_scene_json() {
+  // docs/scenes/procedural.json, byte for byte (NoiseProc.DocsSceneIsTheEmbeddedOne).
+  static const std::string text = R"({
+  "texunit_scene": 1,
+  "camera": {"position": [0, 1.5, 0], "look_at": [0.6, 1.0, -10], "up": [0, 1, 0],
+             "fovy_deg": 60, "width": 128, "height": 96, "z_near": 0.1},
+  "textures": {
+    "grid": {"builtin": "checkerboard", "size": 256, "cells": 8, "wrap": "repeat"}
+  },
+  "materials": {
+    "marble": {"texture": "grid",
+               "procedural": {"kind": "fbm", "octaves": 4, "frequency": 8, "seed": 3,
+                              "color0": [40, 30, 20], "color1": [240, 220, 190]}},
+    "smoke": {"texture": "grid",
+              "procedural": {"kind": "smoke", "octaves": 4, "frequency": 4, "seed": 7, "time": 0,
+                             "speed": 0.5, "threshold": 0.15, "gain": 2.5,
+                             "color0": [30, 40, 90], "color1": [230, 230, 230]}}
+  },
+  "objects": [
+    {"name": "ground", "type": "quad", "material": "marble",
+     "vertices": [[-20, 0, -0.5], [20, 0, -0.5], [20, 0, -160], [-20, 0, -160]],
+     "uv": [[0, 0], [4, 0], [4, 16], [0, 16]]},
+    {"name": "smoke", "type": "quad", "material": "smoke",
+     "vertices": [[2.5, 0, -1.5], [3.5, 0, -40], [3.5, 4, -40], [2.5, 4, -1.5]],
+     "uv": [[0, 1], [8, 1], [8, 0], [0, 0]]}
+  ],
+  "error_budget": {"max_texel_err": 0.0625, "min_psnr_db": 35}
+}
+)";
+  return text;
+}
+
+Scene procedural_scene() { return parse(procedural_scene_json(), "<procedural scene>", "."); }
+
 Scene without_relief(Scene s) {
   for (auto& [name, m] : s.materials) m.relief.reset();
   return s;
@@ -509,6 +588,17 @@ const char* to_string(Filter f) {
 const char* to_string(WeightSource w) {
   return w == WeightSource::Formula ? "formula" : w == WeightSource::Table1d ? "table1d" : "table2d";
 }
+const char* to_string(ProceduralKind k) {
+  return k == ProceduralKind::Smoke ? "smoke" : k == ProceduralKind::Water ? "water" : "fbm";
+}
+
+Scene at_time(Scene s, double t) {
+  for (auto& [name, m] : s.materials)
+    if (m.procedural) m.procedural->time += t;
+  return s;
+}
+const char* to_string(Footprint f) { return f == Footprint::Recurrence ? "recurrence" : "analytic"; }
+
 const char* to_string(ReliefMethod m) {
   return m == ReliefMethod::PomFixed ? "pom_fixed" : m == ReliefMethod::PomAdaptive ? "pom_adaptive"
          : m == ReliefMethod::Iterative ? "iterative" : m == ReliefMethod::DistanceMap ? "distance_map"

@@ -128,6 +128,12 @@ package tu_formats_pkg;
   localparam int EllRhoW = 96;  // GL LOD sums Px' = nUx^2 + nVx^2, Py' = nUy^2 + nVy^2 (by screen axis): exact, unsigned, 2 EllNumF frac
   localparam int TexLodBiasW = 14;  // trilinear lod bias: signed, TexLodF fraction bits (|bias| <= 16 levels)
   localparam int EllLatency = 5;  // analytic ellipse/LOD pipeline latency in cycles, II = 1
+  localparam int EllRecQW = 45;  // q(x+1) = q + G, q(y+1) = q + H (span-walk registers): signed, PerspF frac
+  localparam int EllRecDW = 89;  // denominators q (q+G), q (q+H): unsigned, 2 PerspF frac, exact (guarded > 0)
+  localparam int EllRecPW = 73;  // n * R before rounding to a Jacobian entry: signed, exact
+  localparam int EllRecJdW = 97;  // det J = Ux Vy - Uy Vx: signed, 2 EllNumF frac, exact; -> det3 float format
+  localparam int EllRecFrontLatency = 6;  // Jacobian front: reciprocal core (4) + J register + det J register
+  localparam int EllRecLatency = 11;  // recurrence ellipse/LOD latency in cycles, II = 1
   localparam int EwaCordW = 24;  // CORDIC x, y datapath: signed; d = Ae'-Ce', b = Be' block-normalised to W-3 bits
   localparam int EwaCordIter = 16;  // CORDIC iterations (vectoring and rotation)
   localparam int EwaAngW = 18;  // binary angle: signed, 2 pi = 2^EwaAngW (wraps), atan table entries
@@ -220,9 +226,9 @@ package tu_formats_pkg;
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
   localparam int MaterialW = 56;  // material fields of a pixel
-  localparam int ReliefW = 58;  // material relief fields
+  localparam int ReliefW = 59;  // material relief fields
   localparam int TriW = 104;  // per-triangle footprint constants
   localparam int FpixW = 81;  // pixel on its way to the filter
-  localparam int PixW = 139;  // pixel before the relief stage
+  localparam int PixW = 140;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

@@ -18,4 +18,5 @@ package tu_unit_cfg_pkg;
   localparam bit HasShading = 1'b1;  // shading stage (tu_shade) after the filter
   // brdf::Model code: 0 blinn, 1 schlick, 2 msh, 3 dsh, 4 scos2, 5 st16, 6 qr
   localparam int ShadeModel = 2;  // msh
+  localparam bit EllRecurrence = 1'b0;  // B2: 0 analytic (tu_ellipse), 1 seed recurrences (tu_ellipse_rec)
 endpackage

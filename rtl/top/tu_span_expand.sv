@@ -2,7 +2,10 @@
 // ready), x0 first. Per pixel it provides the tu_persp inputs (seeds, increments, offset n; the
 // unit accumulates itself), the B1 accumulator q of the pixel (q0 + n G, exact, for tu_ellipse),
 // and the B2 numerators: nux, nvx constant along the row, nuy -= m, nvy -= nn per pixel (exact),
-// each rounded half up to s(EllNumW).EllNumF and saturated (ellipse::fx::round_num).
+// each rounded half up to s(EllNumW).EllNumF and saturated (ellipse::fx::round_num); and for the
+// recurrence ellipse (tu_ellipse_rec) the seed's other denominator factors q(x+1) = q + G and
+// q(y+1) = q + H (s(EllRecQW).PerspF), seeded per span (per scanline) at q0 + G, q0 + H and
+// advancing by + G per pixel (exact; unused, and removed by synthesis, with the analytic ellipse).
 `include "tu_assert.svh"
 module tu_span_expand #(
   parameter int SideW = 1
@@ -17,6 +20,7 @@ module tu_span_expand #(
   input  logic [tu_formats_pkg::PerspPW-1:0]  a_i,
   input  logic [tu_formats_pkg::PerspPW-1:0]  d_i,
   input  logic [tu_formats_pkg::PerspQW-1:0]  g_i,
+  input  logic [tu_formats_pkg::PerspQW-1:0]  h_i,
   input  logic [tu_formats_pkg::EllNxW-1:0]   nux_i,
   input  logic [tu_formats_pkg::EllNxW-1:0]   nvx_i,
   input  logic [tu_formats_pkg::EllNxW-1:0]   nuy_i,
@@ -37,6 +41,8 @@ module tu_span_expand #(
   output logic [tu_formats_pkg::PerspXyW-1:0] n_o,
   output logic [tu_formats_pkg::PerspXyW-1:0] x_o,
   output logic [tu_formats_pkg::PerspQW-1:0]  q_o,
+  output logic [tu_formats_pkg::EllRecQW-1:0] qg_o,
+  output logic [tu_formats_pkg::EllRecQW-1:0] qh_o,
   output logic [tu_formats_pkg::EllNumW-1:0]  nux_o,
   output logic [tu_formats_pkg::EllNumW-1:0]  nvx_o,
   output logic [tu_formats_pkg::EllNumW-1:0]  nuy_o,
@@ -47,6 +53,7 @@ module tu_span_expand #(
   localparam int OW  = tu_formats_pkg::EllNumW;
   localparam int Sh  = 2 * tu_formats_pkg::PerspF - tu_formats_pkg::EllNumF;
   localparam int RsW = NW - Sh + 1;
+  localparam int GW  = tu_formats_pkg::EllRecQW;
   localparam logic signed [RsW-1:0] OMax = (RsW'(1) <<< (OW - 1)) - RsW'(1);
   localparam logic signed [RsW-1:0] OMin = -(RsW'(1) <<< (OW - 1));
 
@@ -64,6 +71,12 @@ module tu_span_expand #(
   logic                                busy_q, fire, last;
   logic [tu_formats_pkg::PerspXyW-1:0] x_q, x0_q, x1_q;
   logic [tu_formats_pkg::PerspQW-1:0]  q_q;
+  logic [GW-1:0]                       qg_q, qh_q;
+  logic [GW-1:0]                       g_s, g_in_s, h_in_s, q0_s;
+  assign g_s    = GW'($signed(g_o));
+  assign g_in_s = GW'($signed(g_i));
+  assign h_in_s = GW'($signed(h_i));
+  assign q0_s   = GW'($signed(q0_i));
   logic [NW-1:0]                       nux_q, nvx_q, nuy_q, nvy_q, m_q, nn_q;
   assign fire        = busy_q && out_ready_i;
   assign last        = x_q == x1_q;
@@ -87,6 +100,8 @@ module tu_span_expand #(
       x0_q   <= x0_i;
       x1_q   <= x1_i;
       q_q    <= q0_i;
+      qg_q   <= q0_s + g_in_s;
+      qh_q   <= q0_s + h_in_s;
       nux_q  <= nux_i;
       nvx_q  <= nvx_i;
       nuy_q  <= nuy_i;
@@ -97,6 +112,8 @@ module tu_span_expand #(
     end else if (fire) begin
       x_q   <= x_q + 1'b1;
       q_q   <= q_q + g_o;
+      qg_q  <= qg_q + g_s;
+      qh_q  <= qh_q + g_s;
       nuy_q <= nuy_q - m_q;
       nvy_q <= nvy_q - nn_q;
     end
@@ -104,11 +121,13 @@ module tu_span_expand #(
   assign n_o   = x_q - x0_q;
   assign x_o   = x_q;
   assign q_o   = q_q;
+  assign qg_o  = qg_q;
+  assign qh_o  = qh_q;
   assign nux_o = round_num(nux_q);
   assign nvx_o = round_num(nvx_q);
   assign nuy_o = round_num(nuy_q);
   assign nvy_o = round_num(nvy_q);
 
   // valid/ready protocol checks (rtl/common/tu_assert.svh)
-  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {pu0_o, pv0_o, q0_o, a_o, d_o, g_o, n_o, x_o, q_o, nux_o, nvx_o, nuy_o, nvy_o, side_o})
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {pu0_o, pv0_o, q0_o, a_o, d_o, g_o, n_o, x_o, q_o, qg_o, qh_o, nux_o, nvx_o, nuy_o, nvy_o, side_o})
 endmodule

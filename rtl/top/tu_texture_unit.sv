@@ -26,12 +26,18 @@ module tu_texture_unit #(
   parameter int HasBilinear  = {31'b0, tu_unit_cfg_pkg::HasBilinear},
   parameter int HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
   parameter int HasNearest   = {31'b0, tu_unit_cfg_pkg::HasNearest},
-  // 1: relief stage (tu_relief_stage: POM, fixed or adaptive layers) between B1 and the filter
+  // 1: relief stage (tu_relief_stage) between B1 and the filter, with its POM march (fixed or
+  // adaptive layers) and iterative-parallax engines
   parameter int HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
   // 1: shading stage (tu_shade: one light, diffuse + the BRDF model ShadeModel, brdf::Model codes)
   // after the filter; every output pixel takes one word from the shade port
   parameter int HasShading  = {31'b0, tu_unit_cfg_pkg::HasShading},
   parameter int ShadeModel  = tu_unit_cfg_pkg::ShadeModel,
+  parameter int HasPom      = {31'b0, tu_unit_cfg_pkg::HasPom},
+  parameter int HasIterParallax = {31'b0, tu_unit_cfg_pkg::HasIterParallax},
+  // B2's Jacobian: 0 analytic (tu_ellipse), 1 the seed's forward-difference recurrences
+  // (tu_ellipse_rec: latency EllRecLatency > PerspLatency, so B1's output waits in a FIFO)
+  parameter int EllRecurrence = {31'b0, tu_unit_cfg_pkg::EllRecurrence},
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -75,6 +81,7 @@ module tu_texture_unit #(
   // material relief (POM): on, adaptive layers, layers (1..63), height scale S, depth map
   input  logic                                  rel_i,
   input  logic                                  radapt_i,
+  input  logic                                  riter_i,   // iterative parallax (cap = rlayers)
   input  logic [tu_formats_pkg::PomNW-1:0]      rlayers_i,
   input  logic [tu_formats_pkg::PomSW-1:0]      rscale_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]   hbase_i,
@@ -112,7 +119,9 @@ module tu_texture_unit #(
   output logic [4:0]                            flags_o,   // filter flags (tu_ewa, ewa::fx::Flag)
   output logic [4:0]                            eflags_o,  // B2 flags
   output logic [1:0]                            pflags_o,  // B1: {span set-up overflow, guard}
-  output logic [tu_formats_pkg::PomNW-1:0]      rn_o       // relief layers used (0: not shifted)
+  output logic [tu_formats_pkg::PomNW-1:0]      rn_o,      // relief layers used (0: not shifted)
+  output logic [tu_formats_pkg::PomNW-1:0]      rsteps_o,  // relief march steps or iterations
+  output logic [2:0]                            rflags_o   // relief::ReliefFlag bits
 );
   localparam int PW = tu_formats_pkg::PerspPW;
   localparam int QW = tu_formats_pkg::PerspQW;
@@ -123,7 +132,7 @@ module tu_texture_unit #(
   localparam int TriW  = tu_formats_pkg::TriW;     // tu_tri_t: per-triangle B2 fields
   localparam int PixW  = tu_formats_pkg::PixW;     // tu_pix_t: x, y, ovf, material, relief
   localparam int FPixW = tu_formats_pkg::FpixW;    // tu_fpix_t: after the relief stage
-  localparam int SpanW = 2 * PW + QW + 3 * XW + TriW + tu_formats_pkg::MaterialW + tu_formats_pkg::ReliefW;
+  localparam int SpanW = 2 * PW + 2 * QW + 3 * XW + TriW + tu_formats_pkg::MaterialW + tu_formats_pkg::ReliefW;
 
   // ---------------- span set-up: fork to B1 set-up and numerator set-up, join ----------------
   logic ps_in_ready, ns_in_ready, ps_valid, ns_valid, sj_valid, sj_ready;
@@ -152,13 +161,14 @@ module tu_texture_unit #(
     in_mat.filt    = filt_i;
     in_rel.rel     = rel_i;
     in_rel.radapt  = radapt_i;
+    in_rel.riter   = riter_i;
     in_rel.rlayers = rlayers_i;
     in_rel.rscale  = rscale_i;
     in_rel.hbase   = hbase_i;
     in_rel.hlw     = hlw_i;
     in_rel.hlh     = hlh_i;
   end
-  assign span_side = {a_i, d_i, g_i, x0_i, x1_i, y_i, in_tri, in_mat, in_rel};
+  assign span_side = {a_i, d_i, g_i, h_i, x0_i, x1_i, y_i, in_tri, in_mat, in_rel};
   assign in_ready_o = ps_in_ready && ns_in_ready;
 
   tu_persp_setup u_psetup (
@@ -178,12 +188,12 @@ module tu_texture_unit #(
 
   // unpack the span sideband
   logic [PW-1:0] s_a, s_d;
-  logic [QW-1:0] s_g;
+  logic [QW-1:0] s_g, s_h;
   logic [XW-1:0] s_x0, s_x1, s_y;
   tu_tri_t      s_tri;
   tu_material_t s_mat;
   tu_relief_t   s_rel;
-  assign {s_a, s_d, s_g, s_x0, s_x1, s_y, s_tri, s_mat, s_rel} = ns_side;
+  assign {s_a, s_d, s_g, s_h, s_x0, s_x1, s_y, s_tri, s_mat, s_rel} = ns_side;
   tu_pix_t s_pix;  // x: filled per pixel by the expander
   always_comb begin
     s_pix.fpix.x   = '0;
@@ -200,15 +210,16 @@ module tu_texture_unit #(
   logic [QW-1:0] ex_q0, ex_g, ex_q;
   logic [XW-1:0] ex_n, ex_x;
   logic [tu_formats_pkg::EllNumW-1:0] ex_nux, ex_nvx, ex_nuy, ex_nvy;
+  logic [tu_formats_pkg::EllRecQW-1:0] ex_qg, ex_qh;
   logic [ExSideW-1:0] ex_side;
   tu_span_expand #(.SideW(ExSideW)) u_expand (
     .clk_i, .rst_ni, .in_valid_i(sj_valid), .in_ready_o(sj_ready),
-    .pu0_i(ps_pu), .pv0_i(ps_pv), .q0_i(ps_q), .a_i(s_a), .d_i(s_d), .g_i(s_g),
+    .pu0_i(ps_pu), .pv0_i(ps_pv), .q0_i(ps_q), .a_i(s_a), .d_i(s_d), .g_i(s_g), .h_i(s_h),
     .nux_i(ns_nux), .nvx_i(ns_nvx), .nuy_i(ns_nuy), .nvy_i(ns_nvy), .m_i(ns_m), .nn_i(ns_nn),
     .x0_i(s_x0), .x1_i(s_x1), .side_i({s_tri, s_pix}),
     .out_valid_o(ex_valid), .out_ready_i(ex_ready),
     .pu0_o(ex_pu0), .pv0_o(ex_pv0), .q0_o(ex_q0), .a_o(ex_a), .d_o(ex_d), .g_o(ex_g), .n_o(ex_n),
-    .x_o(ex_x), .q_o(ex_q), .nux_o(ex_nux), .nvx_o(ex_nvx), .nuy_o(ex_nuy), .nvy_o(ex_nvy),
+    .x_o(ex_x), .q_o(ex_q), .qg_o(ex_qg), .qh_o(ex_qh), .nux_o(ex_nux), .nvx_o(ex_nvx), .nuy_o(ex_nuy), .nvy_o(ex_nvy),
     .side_o(ex_side)
   );
   tu_tri_t ex_tri;
@@ -236,25 +247,58 @@ module tu_texture_unit #(
   assign ex_ready = b1_in_ready && b2_in_ready && sb_in_ready;
   assign pj_valid = b1_valid && b2_valid && sb_valid;
 
+  // B1; with the recurrence ellipse its output waits in a FIFO for B2 (II = 1 kept: B1's
+  // pipeline plus the FIFO hold more pixels than B2's EllRecLatency)
+  logic          p1_valid, p1_ready;
+  logic [UW-1:0] p1_u, p1_v;
+  logic          p1_flag;
   tu_persp u_b1 (
     .clk_i, .rst_ni, .in_valid_i(ex_valid && b2_in_ready && sb_in_ready), .in_ready_o(b1_in_ready),
     .pu0_i(ex_pu0), .pv0_i(ex_pv0), .q0_i(ex_q0), .a_i(ex_a), .d_i(ex_d), .g_i(ex_g), .n_i(ex_n),
-    .out_valid_o(b1_valid), .out_ready_i(pj_ready && b2_valid && sb_valid),
-    .u_o(b1_u), .v_o(b1_v), .flag_o(b1_flag)
+    .out_valid_o(p1_valid), .out_ready_i(p1_ready),
+    .u_o(p1_u), .v_o(p1_v), .flag_o(p1_flag)
   );
-  tu_ellipse u_b2 (
-    .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && sb_in_ready), .in_ready_o(b2_in_ready),
-    .nux_i(ex_nux), .nvx_i(ex_nvx), .nuy_i(ex_nuy), .nvy_i(ex_nvy), .q_i(ex_q),
-    .dm_i(ex_tri.dm), .dexp_i(ex_tri.dexp), .laniso_i(ex_tri.laniso), .maxlod_i(ex_tri.maxlod),
-    .lbias_i(ex_tri.lbias), .lminlod_i(ex_tri.lminlod), .lmaxlod_i(ex_tri.lmaxlod),
-    .out_valid_o(b2_valid), .out_ready_i(pj_ready && b1_valid && sb_valid),
-    .ae_o(b2_ae), .be_o(b2_be), .ce_o(b2_ce), .eexp_o(b2_eexp), .fm_o(b2_fm), .fexp_o(b2_fexp),
-    .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_lod), .flags_o(b2_flags),
-    .lrho_o(b2_lrho), .tlod_o(b2_tlod), .tflags_o(b2_tflags)
-  );
+  localparam int EllB2Lat = (EllRecurrence != 0) ? tu_formats_pkg::EllRecLatency : tu_formats_pkg::EllLatency;
+  if (EllB2Lat > tu_formats_pkg::PerspLatency) begin : g_b1_fifo
+    tu_fifo #(.Width(2 * UW + 1), .Depth(4)) u_b1q (
+      .clk_i, .rst_ni, .in_valid_i(p1_valid), .in_ready_o(p1_ready), .in_data_i({p1_u, p1_v, p1_flag}),
+      .out_valid_o(b1_valid), .out_ready_i(pj_ready && b2_valid && sb_valid), .out_data_o({b1_u, b1_v, b1_flag})
+    );
+  end else begin : g_b1_direct
+    assign b1_valid = p1_valid;
+    assign p1_ready = pj_ready && b2_valid && sb_valid;
+    assign {b1_u, b1_v, b1_flag} = {p1_u, p1_v, p1_flag};
+  end
+  if (EllRecurrence != 0) begin : g_b2_rec
+    tu_ellipse_rec u_b2 (
+      .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && sb_in_ready), .in_ready_o(b2_in_ready),
+      .nux_i(ex_nux), .nvx_i(ex_nvx), .nuy_i(ex_nuy), .nvy_i(ex_nvy), .q_i(ex_q), .qg_i(ex_qg), .qh_i(ex_qh),
+      .laniso_i(ex_tri.laniso), .maxlod_i(ex_tri.maxlod),
+      .lbias_i(ex_tri.lbias), .lminlod_i(ex_tri.lminlod), .lmaxlod_i(ex_tri.lmaxlod),
+      .out_valid_o(b2_valid), .out_ready_i(pj_ready && b1_valid && sb_valid),
+      .ae_o(b2_ae), .be_o(b2_be), .ce_o(b2_ce), .eexp_o(b2_eexp), .fm_o(b2_fm), .fexp_o(b2_fexp),
+      .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_lod), .flags_o(b2_flags),
+      .lrho_o(b2_lrho), .tlod_o(b2_tlod), .tflags_o(b2_tflags)
+    );
+    logic unused_det3;
+    assign unused_det3 = ^{ex_tri.dm, ex_tri.dexp};  // det J is formed inside
+  end else begin : g_b2_analytic
+    tu_ellipse u_b2 (
+      .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && sb_in_ready), .in_ready_o(b2_in_ready),
+      .nux_i(ex_nux), .nvx_i(ex_nvx), .nuy_i(ex_nuy), .nvy_i(ex_nvy), .q_i(ex_q),
+      .dm_i(ex_tri.dm), .dexp_i(ex_tri.dexp), .laniso_i(ex_tri.laniso), .maxlod_i(ex_tri.maxlod),
+      .lbias_i(ex_tri.lbias), .lminlod_i(ex_tri.lminlod), .lmaxlod_i(ex_tri.lmaxlod),
+      .out_valid_o(b2_valid), .out_ready_i(pj_ready && b1_valid && sb_valid),
+      .ae_o(b2_ae), .be_o(b2_be), .ce_o(b2_ce), .eexp_o(b2_eexp), .fm_o(b2_fm), .fexp_o(b2_fexp),
+      .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_lod), .flags_o(b2_flags),
+      .lrho_o(b2_lrho), .tlod_o(b2_tlod), .tflags_o(b2_tflags)
+    );
+    logic unused_qgh;
+    assign unused_qgh = ^{ex_qg, ex_qh};  // the recurrence's denominators
+  end
   logic unused_b2;
   assign unused_b2 = ^{b2_lrho, b2_tflags};  // reported by the C model's record only
-  // Holds the sideband of every pixel inside B1/B2 (at most PerspLatency + 1).
+  // Holds the sideband of every pixel inside B1/B2 (at most max(PerspLatency, EllB2Lat) + 1).
   tu_fifo #(.Width(PixW), .Depth(16)) u_side (
     .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && b2_in_ready), .in_ready_o(sb_in_ready),
     .in_data_i(ex_pix_x), .out_valid_o(sb_valid), .out_ready_i(pj_ready && b1_valid && b2_valid),
@@ -271,16 +315,18 @@ module tu_texture_unit #(
   assign rs_in = {sb_pix.fpix, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_tlod, b2_flags};
   logic          rs_valid, rs_ready;
   logic [UW-1:0] rs_u, rs_v;
-  logic [tu_formats_pkg::PomNW-1:0] rs_n;
+  localparam int RrW = 2 * tu_formats_pkg::PomNW + 3;  // relief result: n, steps, flags
+  logic [tu_formats_pkg::PomNW-1:0] rs_n, rs_steps;
+  logic [2:0]                       rs_flags;
   if (HasRelief != 0) begin : g_relief
-    tu_relief_stage #(.SideW(RSideW)) u_relief (
+    tu_relief_stage #(.SideW(RSideW), .HasPom(HasPom), .HasIterParallax(HasIterParallax)) u_relief (
       .clk_i, .rst_ni, .in_valid_i(pj_valid), .in_ready_o(pj_ready),
       .u_i(b1_u), .v_i(b1_v), .lw_i(sb_pix.fpix.mat.tlw), .lh_i(sb_pix.fpix.mat.tlh), .rel_i(pj_rel.rel),
-      .guard_i(b1_flag), .adaptive_i(pj_rel.radapt), .layers_i(pj_rel.rlayers), .scale_i(pj_rel.rscale),
+      .guard_i(b1_flag), .adaptive_i(pj_rel.radapt), .iter_i(pj_rel.riter), .layers_i(pj_rel.rlayers), .scale_i(pj_rel.rscale),
       .hbase_i(pj_rel.hbase), .hlw_i(pj_rel.hlw), .hlh_i(pj_rel.hlh), .side_i(rs_in),
       .view_valid_i, .view_ready_o, .view_ok_i, .vx_i, .vy_i, .vz_i, .vc_i,
       .d_req_o, .d_addr_o, .d_data_i,
-      .out_valid_o(rs_valid), .out_ready_i(rs_ready), .u_o(rs_u), .v_o(rs_v), .n_o(rs_n),
+      .out_valid_o(rs_valid), .out_ready_i(rs_ready), .u_o(rs_u), .v_o(rs_v), .n_o(rs_n), .steps_o(rs_steps), .flags_o(rs_flags),
       .side_o(rs_out)
     );
   end else begin : g_no_relief
@@ -289,6 +335,8 @@ module tu_texture_unit #(
     assign rs_u         = b1_u;
     assign rs_v         = b1_v;
     assign rs_n         = '0;
+    assign rs_steps     = '0;
+    assign rs_flags     = '0;
     assign rs_out       = rs_in;
     assign view_ready_o = 1'b0;
     assign d_req_o      = 1'b0;
@@ -298,24 +346,24 @@ module tu_texture_unit #(
   end
 
   // ---------------- FIFO in front of the filter ----------------
-  localparam int FW = RSideW + 2 * UW + tu_formats_pkg::PomNW;
+  localparam int FW = RSideW + 2 * UW + RrW;
   logic          fq_valid, fq_ready;
   logic [FW-1:0] fq_data;
   tu_fifo #(.Width(FW), .Depth(FifoDepth)) u_fifo (
     .clk_i, .rst_ni, .in_valid_i(rs_valid), .in_ready_o(rs_ready),
-    .in_data_i({rs_out, rs_u, rs_v, rs_n}),
+    .in_data_i({rs_out, rs_u, rs_v, rs_n, rs_steps, rs_flags}),
     .out_valid_o(fq_valid), .out_ready_i(fq_ready), .out_data_o(fq_data)
   );
   tu_fpix_t      f_pix;
   tu_material_t  f_mat;
   logic          f_guard;
   logic [UW-1:0] f_u, f_v;
-  logic [tu_formats_pkg::PomNW-1:0] f_rn;
+  logic [RrW-1:0] f_rr;
   logic [tu_formats_pkg::EllCoefW-1:0] f_ae, f_ce, f_be;
   logic [tu_formats_pkg::EllLogW-1:0]  f_lmaj, f_lmin;
   logic [tu_formats_pkg::EllLodW-1:0]  f_lod, f_tlod;
   logic [4:0]                          f_eflags;
-  assign {f_pix, f_guard, f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_tlod, f_eflags, f_u, f_v, f_rn} = fq_data;
+  assign {f_pix, f_guard, f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_tlod, f_eflags, f_u, f_v, f_rr} = fq_data;
   assign f_mat = f_pix.mat;
 
   // ---------------- filter ----------------
@@ -325,7 +373,7 @@ module tu_texture_unit #(
   // all its pixels (cur_q: the engine of the pixels in flight, inflight_q: how many), so outputs
   // stay in order and only one engine drives the texel port. Switches happen at material changes
   // only (ewa::stream_cycles counts the drain).
-  localparam int OsW = 2 * XW + 2 + 5 + tu_formats_pkg::PomNW;
+  localparam int OsW = 2 * XW + 2 + 5 + RrW;
   // the filtered pixel before the shading stage
   logic          p_valid, p_ready;
   logic [XW-1:0] p_x, p_y;
@@ -334,7 +382,7 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::EwaCountW-1:0] p_visited, p_inside;
   logic [4:0]    p_flags, p_eflags;
   logic [1:0]    p_pflags;
-  logic [tu_formats_pkg::PomNW-1:0] p_rn;
+  logic [RrW-1:0] p_rr;  // relief n, steps, flags
   localparam logic [1:0] EngBil = tu_formats_pkg::EngBilinear, EngEwa = tu_formats_pkg::EngEwa,
                          EngTri = tu_formats_pkg::EngTrilinear, EngNst = tu_formats_pkg::EngNearest;
   localparam logic [1:0] EngFirst = (HasEwa != 0) ? EngEwa : (HasTriFilter != 0) ? EngTri :
@@ -376,7 +424,7 @@ module tu_texture_unit #(
   assign fire_flt  = fq_valid && fq_ready;
   tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
     .clk_i, .rst_ni, .in_valid_i(fq_valid && can_go && eng_ready), .in_ready_o(os_in_ready),
-    .in_data_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rn}), .out_valid_o(os_valid),
+    .in_data_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rr}), .out_valid_o(os_valid),
     .out_ready_i(p_ready && flt_valid), .out_data_o(os_data)
   );
   // cur_q is the engine of the oldest pixel in flight (set when it accepted its first).
@@ -385,7 +433,7 @@ module tu_texture_unit #(
   assign flt_valid   = valid_of[cur_q];
   assign p_valid     = flt_valid && os_valid;
   assign fire_out    = p_valid && p_ready;
-  assign {p_x, p_y, p_pflags, p_eflags, p_rn} = os_data;
+  assign {p_x, p_y, p_pflags, p_eflags, p_rr} = os_data;
   assign p_rgba      = cur_rgba;
   // Only the engine with pixels in flight reads texels.
   assign tex_req_o   = req_of[cur_q];
@@ -485,7 +533,7 @@ module tu_texture_unit #(
 
   // ---------------- shading ----------------
   // The filtered pixel joined with its shade word; every other output field rides along.
-  localparam int ShSideW = 2 * XW + 4 + 2 * tu_formats_pkg::EwaCountW + 5 + 5 + 2 + tu_formats_pkg::PomNW;
+  localparam int ShSideW = 2 * XW + 4 + 2 * tu_formats_pkg::EwaCountW + 5 + 5 + 2 + RrW;
   if (HasShading != 0) begin : g_shade
     logic sh_in_ready;
     assign p_ready       = sh_in_ready && shade_valid_i;
@@ -493,16 +541,16 @@ module tu_texture_unit #(
     tu_shade #(.Model(ShadeModel), .SideW(ShSideW)) u_shade (
       .clk_i, .rst_ni, .in_valid_i(p_valid && shade_valid_i), .in_ready_o(sh_in_ready),
       .rgba_i(p_rgba), .shade_i,
-      .side_i({p_x, p_y, p_level, p_visited, p_inside, p_flags, p_eflags, p_pflags, p_rn}),
+      .side_i({p_x, p_y, p_level, p_visited, p_inside, p_flags, p_eflags, p_pflags, p_rr}),
       .out_valid_o, .out_ready_i, .rgba_o,
-      .side_o({x_o, y_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o})
+      .side_o({x_o, y_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o, rsteps_o, rflags_o})
     );
   end else begin : g_no_shade
     assign p_ready       = out_ready_i;
     assign shade_ready_o = 1'b0;
     assign out_valid_o   = p_valid;
-    assign {x_o, y_o, rgba_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o} =
-           {p_x, p_y, p_rgba, p_level, p_visited, p_inside, p_flags, p_eflags, p_pflags, p_rn};
+    assign {x_o, y_o, rgba_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o, rsteps_o, rflags_o} =
+           {p_x, p_y, p_rgba, p_level, p_visited, p_inside, p_flags, p_eflags, p_pflags, p_rr};
     logic unused_shade;
     assign unused_shade = ^{shade_valid_i, shade_i};
   end
@@ -511,13 +559,13 @@ module tu_texture_unit #(
   assign unused = ^{b2_eexp, b2_fm, b2_fexp, ex_pix.fpix.x};  // x slot: filled per pixel
 
   // valid/ready protocol checks (rtl/common/tu_assert.svh)
-  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {x_o, y_o, rgba_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o})
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {x_o, y_o, rgba_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o, rsteps_o, rflags_o})
   // The span's fields in three groups: Verilator 5.006 emits broken C++ for the sampled copy of
   // one 1,300-bit value under --assert.
   `TU_ASSERT_HANDSHAKE(InHandshakeB1, in_valid_i, in_ready_o, {a_i, b_i, c_i, d_i, e_i, f_i, g_i, h_i, i_i, x0_i, x1_i, y_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeB2, in_valid_i, in_ready_o, {kux_i, kvx_i, kuy_i, kvy_i, m_i, nn_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, tclamp_i,
-                                                                 wsrc_i, cap_i, filt_i, rel_i, radapt_i, rlayers_i, rscale_i, hbase_i,
+                                                                 wsrc_i, cap_i, filt_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
                                                                  hlw_i, hlh_i})
   `TU_ASSERT_HANDSHAKE(ViewHandshake, view_valid_i, view_ready_o, {view_ok_i, vx_i, vy_i, vz_i, vc_i})
   `TU_ASSERT_HANDSHAKE(ShadeHandshake, shade_valid_i, shade_ready_o, {shade_i})

@@ -30,6 +30,10 @@ namespace tu::cosim {
 
 struct RtlRenderOptions {
   bool has_ewa = true;                         // false: the bilinear-only unit (every filter must be bilinear)
+  // The unit `texunit plan docs/scenes/corridor.json` writes (testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv:
+  // the EWA engine with the 1-D weight table and iterative parallax; no bilinear, trilinear, nearest
+  // or POM march) instead of the full unit.
+  bool corridor_unit = false;
   std::optional<scene::Filter> filter;         // overrides every material's filter (ewa or bilinear)
   bool relief = false;                         // apply each material's relief (POM methods; full unit)
   std::optional<scene::WeightSource> weights;  // overrides every material's EWA weight source
@@ -43,7 +47,7 @@ struct RtlRender {
   render::Frame frame;               // RTL pixels
   uint64_t spans = 0;
   uint64_t cycles = 0;               // measured: first span offered to the last pixel out
-  uint64_t predicted_cycles = 0;     // ewa::stream_cycles (no stalls); 0: not predicted (relief pixels)
+  uint64_t predicted_cycles = 0;     // ewa::texture_unit_cycles (full unit) / stream_cycles (no stalls)
   uint64_t mismatches = 0;           // pixels differing from render_cmodel (any field)
   std::string first_mismatch;
   bool hung = false;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ellipse/ellipse_fx.hpp"
+#include "reciprocal/reciprocal.hpp"
 
 namespace {
 using namespace tu;
@@ -248,6 +249,36 @@ TEST(EllipseFx, ForwardDifferenceDepartsByOnePlusGOverQ) {
   const auto fr = footprint(forward_difference(k, 0, 0), FootprintParams{});
   EXPECT_NEAR(fx::log_value(f1.lmaj), std::log2(fr.major), 0.003);
   EXPECT_NEAR(fx::lod_value(f1), fr.lod, 0.006);
+}
+
+// The recurrence variant (fx::recurrence, rtl/ellipse/tu_ellipse_rec.sv) runs the analytic back
+// end on J with q := 1: exact only if 1/q's mantissa R(1.0) is exactly 1 (then log2 q = 0 and
+// f = det J); and on the horizon of any of q, q + G, q + H it must flag and zero like analytic().
+TEST(EllipseFx, RecurrenceBackEndSeesQOne) {
+  EXPECT_EQ(recip::core(recip::Mant::from_raw(i128(1) << (fmt::kRecipMantW - 1))).raw(),
+            i128(1) << fmt::kRecipOutF);
+  std::mt19937_64 rng(11);
+  for (int i = 0; i < 2000; ++i) {
+    const auto l = fx::random_local(rng);
+    const auto in = fx::in_from_map(fx::local_map(l));
+    const int64_t qg = in.q + fx::q_code(l.g), qh = in.q + fx::q_code(l.h);
+    const auto f = fx::rec_front(in, qg, qh);
+    EXPECT_EQ(f.q, int64_t(1) << fmt::kPerspF);
+    const auto o = fx::recurrence(in, qg, qh);
+    // Fe' = (det J)^2: |f| = |det J| truncated to EllFmW bits
+    const double dj = std::ldexp(double(f.nux), -fmt::kEllNumF) * std::ldexp(double(f.nvy), -fmt::kEllNumF) -
+                      std::ldexp(double(f.nuy), -fmt::kEllNumF) * std::ldexp(double(f.nvx), -fmt::kEllNumF);
+    if (dj != 0) {
+      EXPECT_NEAR(std::sqrt(fx::fe_value(o)) / std::fabs(dj), 1.0, 1e-8);
+    }
+  }
+  const int64_t guard = int64_t(1) << (fmt::kPerspF - fmt::kPerspGuardLog2);
+  const auto in = fx::in_from_map(fx::local_map(local(0.01, 300, 6, 0.4)));
+  for (auto [qg, qh] : {std::pair{guard - 1, in.q}, std::pair{in.q, guard - 1}, std::pair{int64_t(0), in.q},
+                        std::pair{in.q, -(int64_t(1) << 44)}}) {
+    EXPECT_EQ(fx::recurrence(in, qg, qh), fx::Out{.flags = fx::kHorizon});
+  }
+  EXPECT_EQ(fx::recurrence(in, guard, guard).flags & fx::kHorizon, 0u);  // at the guard: not flagged
 }
 
 // Error / cost study for docs/blocks/ellipse.md (printed; bounds asserted): random local maps,

@@ -70,6 +70,16 @@ TEST(Scene, BadInputNamesFileAndField) {
   EXPECT_EQ(error_of("[1, 2]"), "s.json: /: expected an object");
 }
 
+// The B2 variant: "footprint" (default analytic), one of analytic | recurrence.
+TEST(Scene, FootprintVariant) {
+  EXPECT_EQ(default_scene().footprint, Footprint::Analytic);
+  const Scene r = parse(edited("\"texunit_scene\": 1", "\"texunit_scene\": 1, \"footprint\": \"recurrence\""), "s.json", ".");
+  EXPECT_EQ(r.footprint, Footprint::Recurrence);
+  EXPECT_STREQ(to_string(r.footprint), "recurrence");
+  EXPECT_EQ(error_of(edited("\"texunit_scene\": 1", "\"texunit_scene\": 1, \"footprint\": \"ewa\"")),
+            "s.json: /footprint: 'ewa' is not one of: analytic, recurrence");
+}
+
 TEST(Scene, MissingFileAndPngTextureRelativeToTheScene) {
   EXPECT_THROW(load("/nonexistent/scene.json"), SceneError);
   const auto dir = std::filesystem::temp_directory_path() / "tu_scene_test";

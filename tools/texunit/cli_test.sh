@@ -34,6 +34,20 @@ case $case in
     grep -q "unknown block 'recip' (known: reciprocal, persp" "$tmp/err" || fail "message: $(cat "$tmp/err")"
     [ ! -e "$tmp/r.json" ] || fail "partial output written"
     ;;
+  render_procedural)
+    # Procedural materials: an animation (one PNG per frame, the smoke moves), the PSNR against the
+    # truth, and the RTL engine's refusal (exit 2, nothing written).
+    "$tu" render docs/scenes/procedural.json --engine cmodel --frames 3 --dt 0.5 --out "$tmp/a" 2>/dev/null >/dev/null
+    for i in 0000 0001 0002; do [ -s "$tmp/a/cmodel_$i.png" ] || fail "frame $i missing"; done
+    ! cmp -s "$tmp/a/cmodel_0000.png" "$tmp/a/cmodel_0001.png" || fail "frames 0 and 1 are equal"
+    "$tu" render docs/scenes/procedural.json --engine cmodel --vs ref --out "$tmp/b" 2>/dev/null >"$tmp/b.txt"
+    grep -q "PSNR cmodel vs ref: .* dB over 2\?[0-9]* covered pixels; ground .* dB smoke .* dB" "$tmp/b.txt" || fail "$(cat "$tmp/b.txt")"
+    [ -s "$tmp/b/heat_cmodel_vs_ref.png" ] || fail "heat map missing"
+    rc=0; "$tu" render docs/scenes/procedural.json --engine rtl --out "$tmp/c" 2>"$tmp/err" >/dev/null || rc=$?
+    [ "$rc" = 2 ] || fail "rtl engine: exit $rc"
+    grep -q "/materials/marble/procedural: the noise unit is not in the RTL" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    [ ! -e "$tmp/c" ] || fail "partial output written"
+    ;;
   plan_default)
     "$tu" plan default --json --out "$tmp/cfg.sv" >"$tmp/p.json"
     [ "$(val "$tmp/p.json" "d['filter'], d['relief'], d['persp'].split('/')[0]")" = "('ewa', True, 'persp')" ] || fail "$(cat "$tmp/p.json")"
@@ -46,15 +60,15 @@ case $case in
     # A light: the shading stage with the cheapest model within max_brdf_mad (0.01: F_QR, MAD
     # 0.0082, the fewest cells); a tighter budget (0.002) needs F_ST16; a model the material names wins.
     "$tu" plan docs/scenes/shaded_sphere.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
-    [ "$(val "$tmp/p.json" "d['shading']['model']")" = "brdf/qr" ] || fail "$(cat "$tmp/p.json")"
+    [ "$(val "$tmp/p.json" "d['shading']['model'].split()[0]")" = "brdf/qr" ] || fail "$(cat "$tmp/p.json")"
     grep -q "localparam bit HasShading = 1'b1;" "$tmp/cfg.sv" || fail "HasShading"
     grep -q "localparam int ShadeModel = 6;" "$tmp/cfg.sv" || fail "ShadeModel"
     sed 's/"max_brdf_mad": 0.01/"max_brdf_mad": 0.002/' docs/scenes/shaded_sphere.json >"$tmp/tight.json"
     "$tu" plan "$tmp/tight.json" --json >"$tmp/p2.json"
-    [ "$(val "$tmp/p2.json" "d['shading']['model']")" = "brdf/st16" ] || fail "$(cat "$tmp/p2.json")"
+    [ "$(val "$tmp/p2.json" "d['shading']['model'].split()[0]")" = "brdf/st16" ] || fail "$(cat "$tmp/p2.json")"
     sed 's/"specular": {"n": 40/"specular": {"model": "dsh", "n": 40/' docs/scenes/shaded_sphere.json >"$tmp/pinned.json"
     "$tu" plan "$tmp/pinned.json" --json >"$tmp/p3.json"
-    [ "$(val "$tmp/p3.json" "d['shading']['model'], d['shading']['why']")" = "('brdf/dsh', 'named by the materials (MAD 0.00251)')" ] || fail "$(cat "$tmp/p3.json")"
+    [ "$(val "$tmp/p3.json" "d['shading']['model'].split()[0], d['shading']['why']")" = "('brdf/dsh', 'named by the materials (MAD 0.00251)')" ] || fail "$(cat "$tmp/p3.json")"
     ;;
   plan_ui_quad)
     # Head-on, magnified: bilinear instead of EWA, no relief hardware; fewer cells than the full unit.
@@ -70,12 +84,12 @@ case $case in
     # The package lints (-Wall) as the RTL top would read it.
     cat >"$tmp/tu_cfg_user.sv" <<'SV'
 module tu_cfg_user (
-  output logic [8:0]  has_o,
+  output logic [9:0]  has_o,
   output logic [2:0]  wsrc_o,
   output logic [31:0] sizes_o
 );
   assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasTriFilter, tu_unit_cfg_pkg::HasNearest, tu_unit_cfg_pkg::HasRelief,
-                  tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax, tu_unit_cfg_pkg::HasShading};
+                  tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax, tu_unit_cfg_pkg::HasShading, tu_unit_cfg_pkg::EllRecurrence};
   assign wsrc_o = tu_unit_cfg_pkg::WeightSources;
   assign sizes_o = tu_unit_cfg_pkg::PomMaxLayers + tu_unit_cfg_pkg::WtabLog2N + tu_unit_cfg_pkg::Wtab2dLog2N +
                    tu_unit_cfg_pkg::PerspLanes + tu_unit_cfg_pkg::ShadeModel;
@@ -89,7 +103,10 @@ SV
     diff -u rtl/0_pkg/tu_unit_cfg_pkg.sv "$tmp/full.sv" || fail "rtl/0_pkg/tu_unit_cfg_pkg.sv is not the full unit: texunit plan default --out-full rtl/0_pkg/tu_unit_cfg_pkg.sv"
     ;;
   plan_corridor)
-    "$tu" plan docs/scenes/corridor.json --json >"$tmp/p.json"
+    "$tu" plan docs/scenes/corridor.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
+    # The RTL co-simulation's corridor unit (TextureUnitRtl.CorridorPlannedUnit...) is this package.
+    diff -u testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv "$tmp/cfg.sv" ||
+      fail "testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv is stale: texunit plan docs/scenes/corridor.json --out testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv"
     [ "$(val "$tmp/p.json" "d['filter'], d['relief']")" = "('ewa', True)" ] || fail "$(cat "$tmp/p.json")"
     [ "$(val "$tmp/p.json" "any('iter_parallax' in b for b in d['specialised']['blocks'])")" = True ] || fail "iterative relief"
     ;;

@@ -243,6 +243,7 @@ json unit_json(const Unit& u) {
 struct Config {
   bool trilinear, ewa, bilinear, tri_filter, nearest, relief, pom, iter_parallax;
   int pom_max_layers, weight_sources, wtab_log2n, wtab2d_log2n, persp_lanes;
+  bool ell_recurrence = false;  // B2: the seed's recurrences (tu_ellipse_rec) instead of the analytic unit
   bool shading = false;
   brdf::Model shade_model = shading::kUnitModel;
 };
@@ -268,6 +269,8 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam bit HasShading = 1'b" << c.shading << ";  // shading stage (tu_shade) after the filter\n"
      << "  // brdf::Model code: 0 blinn, 1 schlick, 2 msh, 3 dsh, 4 scos2, 5 st16, 6 qr\n"
      << "  localparam int ShadeModel = " << static_cast<int>(c.shade_model) << ";  // " << brdf::name(c.shade_model) << "\n"
+     << "  localparam bit EllRecurrence = 1'b" << c.ell_recurrence
+     << ";  // B2: 0 analytic (tu_ellipse), 1 seed recurrences (tu_ellipse_rec)\n"
      << "endpackage\n";
   return sv.str();
 }
@@ -400,7 +403,9 @@ int run(const Options& opt) {
   spec.stages.push_back({{persp}});
   if (relief) spec.stages.push_back({relief_rows});
   const TRow *weights = nullptr, *clip = nullptr;
-  if (filter != "bilinear") spec.stages.push_back({{one("ellipse", "analytic")}});
+  // B2: the scene's footprint variant ("footprint": analytic | recurrence).
+  const bool ell_rec = s.footprint == scene::Footprint::Recurrence;
+  if (filter != "bilinear") spec.stages.push_back({{one("ellipse", ell_rec ? "recurrence" : "analytic")}});
   // Weight sources: PSNR of the bit-accurate C-model render (EWA with that source) against the
   // float EWA reference, on the texture path (relief off on both sides: the relief method is its
   // own block). Rows the engine does not implement keep their 20 log10(1/rms).
@@ -498,22 +503,24 @@ int run(const Options& opt) {
   };
   const std::string origin = "`texunit plan " + opt.scene + "` from " + report_name;
   const Config planned{has_tri, has_ewa, uses("bilinear"), uses("trilinear"), false, relief, pom, iterative, max_layers, weight_bit(weights),
-                       log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1};
+                       log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1,
+                       ell_rec && has_tri};
   // The full unit: everything in, relief up to the scene format's 256 layers.
   Config planned_shaded = planned;
   planned_shaded.shading = shade;
   if (brdf_row) planned_shaded.shade_model = shading::model_of(brdf_row->variant);
   // The full unit: F_MSH (the thesis's model) when the scene does not need another.
   const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n,
-                          planned.persp_lanes, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel};
+                          planned.persp_lanes, false, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel};
 
   // 5. Scene cycles of the RTL texture unit (texture path), from the exact cycle model
   //    ewa::stream_cycles on the bit-accurate C-model render's per-pixel work (equal to Verilator:
   //    TextureUnitRtl.CyclesMatchPrediction / MixedFiltersPerSpan): the specialised and the full
   //    unit with the plan's filter per material, and the full unit as authored.
   auto scene_cycles = [&](std::function<scene::Filter(const scene::Material&)> filter_of, bool relief_stage,
-                          std::optional<scene::WeightSource> weights) -> uint64_t {
+                          std::optional<scene::WeightSource> weights, bool rec) -> uint64_t {
     scene::Scene t = scene::without_relief(s);
+    t.footprint = rec ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
     for (auto& [name, m] : t.materials) m.filter = filter_of(m);
     render::CmodelOptions o = render::texture_path_only();
     o.weights = weights;
@@ -536,7 +543,7 @@ int run(const Options& opt) {
       }
       costs.push_back(c);
     }
-    return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage)));
+    return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage, rec)));
   };
   auto authored = [](const scene::Material& m) { return m.filter; };
   auto planned_filter = [&](const scene::Material& m) {
@@ -548,9 +555,9 @@ int run(const Options& opt) {
   // The shading stage (II = 1, fed one word per pixel) adds its latency once, at the end.
   const uint64_t spec_shade = shade ? static_cast<uint64_t>(brdf::shade::latency(planned_shaded.shade_model)) : 0;
   const uint64_t full_shade = static_cast<uint64_t>(brdf::shade::latency(everything.shade_model));
-  const uint64_t spec_cycles = scene_cycles(planned_filter, relief, planned_weights) + spec_shade;
-  const uint64_t full_cycles = scene_cycles(planned_filter, true, planned_weights) + full_shade;  // the same picture
-  const uint64_t authored_cycles = scene_cycles(authored, true, std::nullopt) + full_shade;
+  const uint64_t spec_cycles = scene_cycles(planned_filter, relief, planned_weights, planned.ell_recurrence) + spec_shade;
+  const uint64_t full_cycles = scene_cycles(planned_filter, true, planned_weights, false) + full_shade;  // the same picture
+  const uint64_t authored_cycles = scene_cycles(authored, true, std::nullopt, false) + full_shade;
 
   const size_t px = bil.pixels.size();
   json out = {{"scene", s.source},

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <iostream>
 #include <unistd.h>
 
@@ -41,9 +42,10 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
                 "--engine truth: box over the pixel square, or gauss (the EWA's pixel model over the unit disc)")
       ->check(CLI::IsMember({"box", "gauss"}));
   r->add_option("--rtl-unit", a.rtl_unit,
-                 "--engine rtl: the full unit (EWA, trilinear, bilinear and nearest engines, each material's filter per span) "
-                 "or the bilinear-only unit (HasEwa = 0)")
-      ->check(CLI::IsMember({"full", "bilinear"}));
+                 "--engine rtl: the full unit (EWA, trilinear, bilinear and nearest engines, each material's filter per span), "
+                 "the bilinear-only unit (HasEwa = 0) or docs/scenes/corridor.json's planned unit (EWA with the "
+                 "1-D weight table, iterative parallax: --filter ewa --weights table1d)")
+      ->check(CLI::IsMember({"full", "bilinear", "corridor"}));
   r->add_flag("--no-relief", a.no_relief,
               "leave every material's relief out (the texture path alone; every engine); the "
               "bilinear-only RTL unit has no relief stage and always renders without it");
@@ -54,6 +56,21 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
       ->check(CLI::IsMember(clip_choices()));
   r->add_option("--filter", a.filter, "override every material's filter")
       ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa"}));
+  r->add_flag("--no-footprint-limit", a.no_footprint_limit,
+              "procedural materials: keep every octave (footprint_limit false), the aliased field");
+  r->add_option("--vs", a.vs, "also render with this engine (same options) and print the PSNR over covered pixels "
+                "against it, per object too, and write heat_ENGINE_vs_VS.png (e.g. --engine cmodel --vs truth: the aliasing of "
+                "procedural materials)")
+      ->check(CLI::IsMember({"ref", "cmodel", "truth"}));
+  r->add_option("--frames", a.frames, "an animation of N frames, one PNG each (ENGINE_0000.png, ...): frame i "
+                "renders every procedural material at its time + i * --dt")
+      ->check(CLI::Range(1, 100000));
+  r->add_option("--dt", a.dt, "--frames: time step between frames (the procedural materials' time unit)")
+      ->check(CLI::Range(-1e6, 1e6));
+  r->add_option("--footprint", a.footprint,
+                "cmodel / rtl engines: override the scene's B2 variant (analytic tu_ellipse, or the seed's "
+                "recurrences tu_ellipse_rec; docs/blocks/ellipse.md)")
+      ->check(CLI::IsMember({"analytic", "recurrence"}));
   r->add_option("--threads", a.threads, "cmodel / rtl engines: threads for the C-model render (default 0: "
                 "every core); the image is the same for any count")
       ->check(CLI::Range(0, 4096));
@@ -62,7 +79,12 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
 
 int run_render(const RenderArgs& a) {
   scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  if (a.no_footprint_limit)
+    for (auto& [name, m] : s.materials)
+      if (m.procedural) m.procedural->footprint_limit = false;
   if (!a.clip.empty()) s = scene::with_clip(std::move(s), a.clip);
+  if (!a.footprint.empty())
+    s.footprint = a.footprint == "recurrence" ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
   std::optional<scene::Filter> f;
   if (a.filter == "nearest") f = scene::Filter::Nearest;
   if (a.filter == "bilinear") f = scene::Filter::Bilinear;
@@ -73,10 +95,18 @@ int run_render(const RenderArgs& a) {
   if (a.weights == "table1d") w = scene::WeightSource::Table1d;
   if (a.weights == "table2d") w = scene::WeightSource::Table2d;
   // Every output is checked before the render and written only when all succeed (Outputs).
+  if (a.frames > 1 && !a.dump.empty()) throw std::invalid_argument("--dump writes one frame: leave it out with --frames N > 1");
   Outputs outs;
   outs.make_dir(a.out_dir);
-  const std::string png = (std::filesystem::path(a.out_dir) / (a.engine + ".png")).string();
-  const std::string png_tmp = outs.stage(png);
+  auto frame_png = [&](int i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "_%04d.png", i);
+    return (std::filesystem::path(a.out_dir) / (a.engine + (a.frames > 1 ? name : ".png"))).string();
+  };
+  const std::string png = frame_png(0);
+  std::vector<std::string> png_tmps;
+  for (int i = 0; i < a.frames; ++i) png_tmps.push_back(outs.stage(frame_png(i)));
+  const std::string& png_tmp = png_tmps[0];
   const std::string dump_tmp = a.dump.empty() ? "" : outs.stage(a.dump);
   render::CmodelOptions opt;
   opt.progress = isatty(STDERR_FILENO);  // a bar on a terminal; none in a log
@@ -87,7 +117,8 @@ int run_render(const RenderArgs& a) {
   bool ok = true;
   if (a.engine == "rtl") {
     cosim::RtlRenderOptions ro;
-    ro.has_ewa = a.rtl_unit == "full";
+    ro.has_ewa = a.rtl_unit != "bilinear";
+    ro.corridor_unit = a.rtl_unit == "corridor";
     ro.filter = f;
     ro.weights = w;
     ro.relief = ro.has_ewa && !a.no_relief;
@@ -95,8 +126,8 @@ int run_render(const RenderArgs& a) {
     const auto r = cosim::render_rtl(s, ro);
     frame = r.frame;
     ok = r.ok();
-    std::printf("rtl %s unit%s: %zu pixels in %llu spans, %llu mismatches against the C model%s%s\n",
-                a.rtl_unit.c_str(), ro.relief ? " with relief" : " (texture path, no relief)", r.frame.pixels.size(), (unsigned long long)r.spans,
+    std::printf("rtl %s unit%s%s: %zu pixels in %llu spans, %llu mismatches against the C model%s%s\n",
+                a.rtl_unit.c_str(), s.footprint == scene::Footprint::Recurrence ? " (recurrence ellipse)" : "", ro.relief ? " with relief" : " (texture path, no relief)", r.frame.pixels.size(), (unsigned long long)r.spans,
                 (unsigned long long)r.mismatches, r.first_mismatch.empty() ? "" : "; first: ",
                 r.first_mismatch.c_str());
     const double n = static_cast<double>(std::max<size_t>(1, r.frame.pixels.size()));
@@ -120,6 +151,35 @@ int run_render(const RenderArgs& a) {
     frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt)
                                  : render::render_ref(a.no_relief ? scene::without_relief(s) : s, f);
   }
+  render::TruthOptions to;
+  to.ss = a.ss;
+  to.kernel = a.truth_kernel == "gauss" ? render::TruthKernel::Gaussian : render::TruthKernel::Box;
+  to.relief = !a.no_relief;
+  to.progress = opt.progress;
+  auto render_with = [&](const std::string& engine, const scene::Scene& si) {
+    return engine == "truth" ? render::render_truth(si, to)
+           : engine == "cmodel" ? render::render_cmodel(si, f, opt)
+                                : render::render_ref(a.no_relief ? scene::without_relief(si) : si, f);
+  };
+  auto render_at = [&](const scene::Scene& si) { return render_with(a.engine, si); };
+  if (a.engine != "rtl") frame = render_at(s);
+  std::optional<img::Rgba8Image> heat;  // --vs: |ENGINE - VS| per pixel, 64 levels = red
+  const std::string heat_png = (std::filesystem::path(a.out_dir) / ("heat_" + a.engine + "_vs_" + a.vs + ".png")).string();
+  if (!a.vs.empty()) {
+    const auto other = render_with(a.vs, s);
+    heat = render::error_heatmap(frame.image, other.image, 64);
+    std::printf("PSNR %s vs %s: %.2f dB over %zu covered pixels;", a.engine.c_str(), a.vs.c_str(),
+                render::psnr_covered(frame, other), frame.pixels.size());
+    for (size_t o = 0; o < s.objects.size(); ++o)
+      std::printf(" %s %.2f dB", s.objects[o].name.c_str(),
+                  render::psnr_covered(frame, other, [o](const render::PixelRecord& p) { return p.object == int(o); }));
+    std::printf("\n");
+  }
+  // Frames 1.. of an animation (frame 0 gives the flags and the dump). Time moves only the
+  // procedural materials, which the RTL unit rejects: its frames are all frame 0.
+  for (int i = 1; i < a.frames; ++i)
+    img::write_png_rgba(png_tmps[static_cast<size_t>(i)],
+                        a.engine == "rtl" ? frame.image : render_at(scene::at_time(s, i * a.dt)).image);
   {
     const auto& flags = render::pixel_flags();
     const auto counts = render::flag_counts(frame);
@@ -132,10 +192,14 @@ int run_render(const RenderArgs& a) {
   const std::string lp = (std::filesystem::path(a.out_dir) / "layers.png").string();
   if (layers) img::write_png_gray(outs.stage(lp), *layers);
   if (!a.dump.empty()) render::write_dump_csv(dump_tmp, frame);
+  if (heat) img::write_png_rgba(outs.stage(heat_png), *heat);
   outs.commit();
-  std::cerr << "wrote " << png << " (" << frame.pixels.size() << " covered pixels)\n";
+  std::cerr << "wrote " << png << " (" << frame.pixels.size() << " covered pixels)";
+  if (a.frames > 1) std::cerr << " and " << a.frames - 1 << " more frames to " << frame_png(a.frames - 1);
+  std::cerr << "\n";
   if (layers) std::cerr << "wrote " << lp << " (adaptive relief: N per pixel, (N - 4) / (Nmax - 4) as grey)\n";
   if (!a.dump.empty()) std::cerr << "wrote " << a.dump << "\n";
+  if (heat) std::cerr << "wrote " << heat_png << " (|" << a.engine << " - " << a.vs << "|, 64 levels = red)\n";
   return ok ? 0 : 1;
 }
 
@@ -155,6 +219,8 @@ std::string db(double v) {
 // The demo's C-model rows: every filter (EWA with each weight source) against both references.
 void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
 void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
+// The procedural scene (noise unit): footprint-limited octaves against all octaves.
+void demo_render_procedural(const std::string& out_dir, int threads);
 // The demo's RTL rows: the texture-unit top == the C-model engine on every pixel.
 // `relief`, `relief_refs`: the scene with its relief and its references (the relief row); `s`,
 // `refs`: the texture path.
@@ -210,8 +276,8 @@ bool demo_render(const std::string& out_dir, int threads) {
   const Refs flat_refs{ewa_flat, truth_flat}, relief_refs{ewa, truth};
   demo_render_cmodel(flat, flat_refs, out_dir, threads);
   demo_render_relief(s, relief_refs, out_dir, threads);
-  const bool rtl_ok = demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
-  return demo_render_shaded(out_dir, threads) && rtl_ok;
+  demo_render_procedural(out_dir, threads);
+  return demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
 }
 
 namespace {
@@ -272,6 +338,36 @@ void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::stri
               "ewa+relief", db(render::psnr_covered(fr, ewa_ref)).c_str(), db(render::psnr_covered(fr, refs.truth)).c_str(),
               db(render::psnr_covered(fr, ewa_ref, rel)).c_str(), db(render::psnr_covered(fr, refs.truth, rel)).c_str(),
               double(fr.pixels.size()) / sec, png.c_str());
+}
+
+void demo_render_procedural(const std::string& out_dir, int threads) {
+  const scene::Scene s = scene::procedural_scene();
+  scene::Scene all = s;
+  for (auto& [name, m] : all.materials) m.procedural->footprint_limit = false;
+  const auto truth = render::render_truth(s);
+  const auto ref = render::render_ref(s);
+  std::printf("\nprocedural scene (docs/scenes/procedural.json, %dx%d: fBm ground, smoke wall; noise unit, "
+              "docs/blocks/noise.md §5), PSNR over covered pixels against the float reference with the "
+              "footprint limit and the truth (16 x 16 samples of the unfiltered field):\n",
+              s.camera.width, s.camera.height);
+  std::printf("%-22s %12s %12s  %s\n", "engine", "vs ref", "vs truth", "image");
+  render::CmodelOptions opt;
+  opt.threads = threads;
+  struct Row {
+    const char* name;
+    render::Frame frame;
+  };
+  const Row rows[] = {{"ref_limited", ref},
+                      {"ref_all_octaves", render::render_ref(all)},
+                      {"cmodel_limited", render::render_cmodel(s, std::nullopt, opt)},
+                      {"cmodel_all_octaves", render::render_cmodel(all, std::nullopt, opt)},
+                      {"truth", truth}};
+  for (const auto& r : rows) {
+    const auto png = (std::filesystem::path(out_dir) / (std::string("procedural_") + r.name + ".png")).string();
+    img::write_png_rgba(png, r.frame.image);
+    std::printf("%-22s %12s %12s  %s\n", r.name, db(render::psnr_covered(r.frame, ref)).c_str(),
+                db(render::psnr_covered(r.frame, truth)).c_str(), png.c_str());
+  }
 }
 
 bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,

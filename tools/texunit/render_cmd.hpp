@@ -9,10 +9,15 @@ namespace tu::cli {
 struct RenderArgs {
   std::string scene, out_dir, dump, engine = "ref", filter, weights, rtl_unit = "full";
   std::string clip;  // overrides every material's EWA border weights (a clip variant or "off")
+  std::string footprint;  // overrides the scene's "footprint" (B2 variant): analytic | recurrence
   bool no_relief = false;
   int ss = 16;                      // --engine truth: samples per pixel side
   std::string truth_kernel = "box";  // --engine truth: box | gauss
   int threads = 0;  // C-model render and visibility (<= 0: every core)
+  bool no_footprint_limit = false;  // procedural materials: every octave, unfiltered
+  std::string vs;                   // print the PSNR against this engine's render (ref | cmodel | truth)
+  int frames = 1;   // an animation: frame i at every procedural material's time + i * dt
+  double dt = 0.04;
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);

@@ -452,6 +452,8 @@ std::vector<Spec> registry_specs() {
       {"persp", "klane4", "persp_k4", rtl_or_null("persp_k4"), "tu_persp_klane", "texels (item = 4 pixels)"},
       {"persp_setup", "setup", "persp_setup", rtl_or_null("persp_setup"), "tu_persp_setup", "seed value (0: exact)"},
       {"ellipse", "analytic", "ellipse", rtl_or_null("ellipse"), "tu_ellipse", "LOD (mip levels)"},
+      {"ellipse", "recurrence", "ellipse_rec", rtl_or_null("ellipse_rec"), "tu_ellipse_rec",
+       "LOD (mip levels) against the analytic float Jacobian"},
       {"pom_layers", "pom_layers", "pom_layers", rtl_or_null("pom_layers"), "tu_pom_layers", "layers"},
       {"pom_march", "pom_march", "pom_march", rtl_or_null("pom_march"), "tu_pom_march", "march steps"},
       {"iter_parallax", "iter_parallax", "iter_parallax", rtl_or_null("iter_parallax"), "tu_iter_parallax",

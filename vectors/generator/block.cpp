@@ -17,7 +17,9 @@ Block make_persp();       // persp_block.cpp
 Block make_persp_k4();    // persp_block.cpp
 Block make_persp_setup(); // persp_block.cpp
 Block make_ellipse();     // ellipse_block.cpp
+Block make_ellipse_rec(); // ellipse_block.cpp
 Block make_ewa();         // ewa_block.cpp
+Block make_ewa_border();  // ewa_border_block.cpp
 std::vector<Block> make_brdf_blocks();  // brdf_block.cpp
 std::vector<Block> make_perlin_blocks();  // perlin_block.cpp
 
@@ -34,7 +36,9 @@ const std::vector<Block>& all() {
     b.push_back(make_persp_k4());
     b.push_back(make_persp_setup());
     b.push_back(make_ellipse());
+    b.push_back(make_ellipse_rec());
     b.push_back(make_ewa());
+    b.push_back(make_ewa_border());
     for (auto& m : make_brdf_blocks()) b.push_back(std::move(m));
     for (auto& p : make_perlin_blocks()) b.push_back(std::move(p));
     return b;

@@ -107,7 +107,10 @@ std::vector<Row> stiff_inputs() {
   return rows;
 }
 
-std::vector<Row> random_inputs(uint64_t count, uint64_t seed) {
+// Random local maps (fx::random_local), 1/8 with a random anisotropy limit and 1/8 with a random
+// max_lod, each turned into a row by `to_row` (local, laniso, max_lod).
+using LocalRow = Row (*)(const fx::Local&, uint32_t, uint32_t);
+std::vector<Row> random_rows(uint64_t count, uint64_t seed, LocalRow to_row) {
   std::mt19937_64 rng(seed);
   std::vector<Row> rows;
   rows.reserve(count);
@@ -116,18 +119,72 @@ std::vector<Row> random_inputs(uint64_t count, uint64_t seed) {
     const uint64_t k = rng() % 8;
     const uint32_t la = k == 0 ? static_cast<uint32_t>(rng() % (11u << fmt::kEllLogF)) : kAniso16;
     const uint32_t ml = k == 1 ? static_cast<uint32_t>(rng() % 16) : 12;
-    rows.push_back(from_local(l, la, ml));
+    rows.push_back(to_row(l, la, ml));
   }
   return rows;
 }
+std::vector<Row> random_inputs(uint64_t count, uint64_t seed) { return random_rows(count, seed, from_local); }
 
-std::vector<Row> golden_inputs() {
+// Every fifth stiff row and 12 random ones.
+std::vector<Row> golden_of(const std::vector<Row>& stiff, std::vector<Row> random) {
   std::vector<Row> rows;
-  const auto s = stiff_inputs();
-  for (size_t i = 0; i < s.size(); i += 5) rows.push_back(s[i]);
-  const auto r = random_inputs(12, 99);
-  rows.insert(rows.end(), r.begin(), r.end());
+  for (size_t i = 0; i < stiff.size(); i += 5) rows.push_back(stiff[i]);
+  rows.insert(rows.end(), random.begin(), random.end());
   return rows;
+}
+std::vector<Row> golden_inputs() { return golden_of(stiff_inputs(), random_inputs(12, 99)); }
+
+std::string sf(int w, int f) { return "s" + std::to_string(w) + "." + std::to_string(f); }
+std::string uf(int w, int f) { return "u" + std::to_string(w) + "." + std::to_string(f); }
+std::string num_format() { return sf(fmt::kEllNumW, fmt::kEllNumF); }
+// Outputs and float references shared by both variants (fx::Out).
+void add_out_fields(Block* b) {
+  using vec::Role;
+  for (const auto& f : {field("ae", Role::Out, uf(fmt::kEllCoefW, 0)), field("be", Role::Out, sf(fmt::kEllCoefW, 0)),
+                        field("ce", Role::Out, uf(fmt::kEllCoefW, 0)), field("eexp", Role::Out, uf(fmt::kEllEexpW, 0)),
+                        field("fm", Role::Out, uf(fmt::kEllFmW, fmt::kEllFmW - 1)),
+                        field("fexp", Role::Out, sf(fmt::kEllFexpW, 0)),
+                        field("lmaj", Role::Out, sf(fmt::kEllLogW, fmt::kEllLogF)),
+                        field("lmin", Role::Out, sf(fmt::kEllLogW, fmt::kEllLogF)),
+                        field("lod", Role::Out, uf(fmt::kEllLodW, fmt::kEllLodF)), field("flags", Role::Out, uf(5, 0)),
+                        field("lrho", Role::Out, sf(fmt::kEllLogW, fmt::kEllLogF)), field("lod_ref", Role::Ref, "f64"),
+                        field("lmaj_ref", Role::Ref, "f64"), field("lmin_ref", Role::Ref, "f64")})
+    b->fields.push_back(f);
+}
+Row out_row(const fx::Out& o) {
+  return Row{o.ae,
+             static_cast<uint64_t>(o.be),
+             o.ce,
+             o.eexp,
+             o.fm,
+             bits(o.fexp, fmt::kEllFexpW),
+             bits(o.lmaj, fmt::kEllLogW),
+             bits(o.lmin, fmt::kEllLogW),
+             o.lod,
+             o.flags,
+             bits(o.lrho, fmt::kEllLogW)};
+}
+Row footprint_row(const ellipse::Jacobian& j, const fx::In& in) {
+  ellipse::FootprintParams p;
+  p.max_aniso = std::exp2(std::ldexp(double(in.laniso), -fmt::kEllLogF));
+  p.max_lod = in.max_lod;
+  const auto f = ellipse::footprint(j, p);
+  return {vec::f64_bits(f.lod), vec::f64_bits(std::log2(f.major)), vec::f64_bits(std::log2(f.minor_clamped))};
+}
+ErrPoint lod_error(const Row& out, const Row& ref) {
+  ErrPoint e;
+  const double lod = std::ldexp(double(out[8]), -fmt::kEllLodF);
+  e.abs = std::fabs(lod - vec::bits_f64(ref[0]));
+  e.ulp = std::ldexp(e.abs, fmt::kEllLodF);
+  return e;
+}
+// Horizon rows must be flagged with every output 0 (out[9] flags, out[8] lod); then unmeasured.
+ErrPoint horizon_error(bool hz, const Row& out) {
+  ErrPoint e;
+  const bool ok = hz && out[9] == fx::kHorizon && out[8] == 0;
+  e.valid = !ok;
+  e.abs = e.ulp = ok ? 0 : INFINITY;
+  return e;
 }
 
 bool horizon(const fx::In& in) { return in.q < (int64_t(1) << (fmt::kPerspF - fmt::kPerspGuardLog2)); }
@@ -137,11 +194,7 @@ Row ref_of(const Row& r) {
   if (horizon(in)) return {vec::f64_bits(NAN), vec::f64_bits(NAN), vec::f64_bits(NAN)};
   const double q = std::ldexp(double(in.q), -fmt::kPerspF), q2 = q * q;
   auto j = [&](int64_t n) { return std::ldexp(double(n), -fmt::kEllNumF) / q2; };
-  ellipse::FootprintParams p;
-  p.max_aniso = std::exp2(std::ldexp(double(in.laniso), -fmt::kEllLogF));
-  p.max_lod = in.max_lod;
-  const auto f = ellipse::footprint({j(in.nux), j(in.nvx), j(in.nuy), j(in.nvy)}, p);
-  return {vec::f64_bits(f.lod), vec::f64_bits(std::log2(f.major)), vec::f64_bits(std::log2(f.minor_clamped))};
+  return footprint_row({j(in.nux), j(in.nvx), j(in.nuy), j(in.nvy)}, in);
 }
 }  // namespace
 
@@ -151,66 +204,27 @@ Block make_ellipse() {
   b.description =
       "pixel footprint (analytic, q^4-scaled EWA ellipse): Ae', Be', Ce', Fe', axes, anisotropy "
       "clamp, mip LOD; II = 1";
-  auto F = [](const char* n, vec::Role r, const std::string& f) {
-    return vec::Field{n, r, vec::FieldFormat::parse(f)};
-  };
-  auto sf = [](int w, int f) { return "s" + std::to_string(w) + "." + std::to_string(f); };
-  auto uf = [](int w, int f) { return "u" + std::to_string(w) + "." + std::to_string(f); };
-  const std::string nf = sf(fmt::kEllNumW, fmt::kEllNumF);
   using vec::Role;
-  b.fields = {F("nux", Role::In, nf),
-              F("nvx", Role::In, nf),
-              F("nuy", Role::In, nf),
-              F("nvy", Role::In, nf),
-              F("q", Role::In, sf(fmt::kPerspQW, fmt::kPerspF)),
-              F("dm", Role::In, sf(fmt::kEllDetW, 0)),
-              F("dexp", Role::In, sf(fmt::kEllDetExpW, 0)),
-              F("laniso", Role::In, uf(fmt::kEllAnisoW, fmt::kEllLogF)),
-              F("maxlod", Role::In, uf(fmt::kEllMaxLodW, 0)),
-              F("ae", Role::Out, uf(fmt::kEllCoefW, 0)),
-              F("be", Role::Out, sf(fmt::kEllCoefW, 0)),
-              F("ce", Role::Out, uf(fmt::kEllCoefW, 0)),
-              F("eexp", Role::Out, uf(fmt::kEllEexpW, 0)),
-              F("fm", Role::Out, uf(fmt::kEllFmW, fmt::kEllFmW - 1)),
-              F("fexp", Role::Out, sf(fmt::kEllFexpW, 0)),
-              F("lmaj", Role::Out, sf(fmt::kEllLogW, fmt::kEllLogF)),
-              F("lmin", Role::Out, sf(fmt::kEllLogW, fmt::kEllLogF)),
-              F("lod", Role::Out, uf(fmt::kEllLodW, fmt::kEllLodF)),
-              F("flags", Role::Out, uf(5, 0)),
-              F("lrho", Role::Out, sf(fmt::kEllLogW, fmt::kEllLogF)),
-              F("lod_ref", Role::Ref, "f64"),
-              F("lmaj_ref", Role::Ref, "f64"),
-              F("lmin_ref", Role::Ref, "f64")};
+  b.fields = {field("nux", Role::In, num_format()), field("nvx", Role::In, num_format()),
+              field("nuy", Role::In, num_format()), field("nvy", Role::In, num_format()),
+              field("q", Role::In, sf(fmt::kPerspQW, fmt::kPerspF)),
+              field("dm", Role::In, sf(fmt::kEllDetW, 0)),
+              field("dexp", Role::In, sf(fmt::kEllDetExpW, 0)),
+              field("laniso", Role::In, uf(fmt::kEllAnisoW, fmt::kEllLogF)),
+              field("maxlod", Role::In, uf(fmt::kEllMaxLodW, 0))};
+  add_out_fields(&b);
   b.sets = {"golden", "stiff", "random"};
   b.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
     if (set == "golden") return golden_inputs();
     if (set == "stiff") return stiff_inputs();
     return random_inputs(count, seed);
   };
-  b.model = [](const Row& r) {
-    const auto o = fx::analytic(in_of(r));
-    return Row{o.ae,
-               static_cast<uint64_t>(o.be),
-               o.ce,
-               o.eexp,
-               o.fm,
-               bits(o.fexp, fmt::kEllFexpW),
-               bits(o.lmaj, fmt::kEllLogW),
-               bits(o.lmin, fmt::kEllLogW),
-               o.lod,
-               o.flags,
-               bits(o.lrho, fmt::kEllLogW)};
-  };
+  b.model = [](const Row& r) { return out_row(fx::analytic(in_of(r))); };
   b.ref = ref_of;
   b.error = [](const Row& in, const Row& out, const Row& ref) {
-    ErrPoint e;
     const bool hz = horizon(in_of(in));
-    if (hz || (out[9] & fx::kHorizon)) {  // must agree; flagged outputs are not measured
-      const bool ok = hz && out[9] == fx::kHorizon && out[8] == 0;
-      e.valid = !ok;
-      e.abs = e.ulp = ok ? 0 : INFINITY;
-      return e;
-    }
+    if (hz || (out[9] & fx::kHorizon)) return horizon_error(hz, out);  // must agree
+    ErrPoint e;
     // Rows whose det3 is not the determinant of the numerators (nUx nVy - nUy nVx = det3 q) are
     // no projective map (the format-extreme rows of the stiff set): bit-exact only, not measured.
     const fx::In x = in_of(in);
@@ -221,12 +235,136 @@ Block make_ellipse() {
       e.valid = false;
       return e;
     }
-    const double lod = std::ldexp(double(out[8]), -fmt::kEllLodF);
-    e.abs = std::fabs(lod - vec::bits_f64(ref[0]));
-    e.ulp = std::ldexp(e.abs, fmt::kEllLodF);
-    return e;
+    return lod_error(out, ref);
   };
   b.latency_cycles = fmt::kEllLatency;
+  b.ii_cycles = 1;
+  b.err_metric = "max_lod_err";
+  return b;
+}
+
+namespace {
+// Recurrence variant (tu_ellipse_rec): in = nux, nvx, nuy, nvy, q, qg = q + G, qh = q + H, laniso,
+// maxlod (no det3: det J is formed inside).
+struct RecIn {
+  fx::In in;
+  int64_t qg = 0, qh = 0;
+};
+Row rec_row(const fx::In& in, int64_t qg, int64_t qh) {
+  return {bits(in.nux, fmt::kEllNumW), bits(in.nvx, fmt::kEllNumW), bits(in.nuy, fmt::kEllNumW),
+          bits(in.nvy, fmt::kEllNumW), bits(in.q, fmt::kPerspQW),   bits(qg, fmt::kEllRecQW),
+          bits(qh, fmt::kEllRecQW),    in.laniso,                   in.max_lod};
+}
+RecIn rec_of(const Row& r) {
+  RecIn x;
+  x.in.nux = vec::sext(r[0], fmt::kEllNumW);
+  x.in.nvx = vec::sext(r[1], fmt::kEllNumW);
+  x.in.nuy = vec::sext(r[2], fmt::kEllNumW);
+  x.in.nvy = vec::sext(r[3], fmt::kEllNumW);
+  x.in.q = vec::sext(r[4], fmt::kPerspQW);
+  x.qg = vec::sext(r[5], fmt::kEllRecQW);
+  x.qh = vec::sext(r[6], fmt::kEllRecQW);
+  x.in.laniso = static_cast<uint32_t>(r[7]);
+  x.in.max_lod = static_cast<uint32_t>(r[8]);
+  return x;
+}
+// A local map with its G, H (q + G, q + H codes as the span walk forms them).
+Row rec_from_local(const fx::Local& l, uint32_t laniso = kAniso16, uint32_t max_lod = 12) {
+  const fx::In in = fx::in_from_map(fx::local_map(l), laniso, max_lod);
+  return rec_row(in, in.q + fx::q_code(l.g), in.q + fx::q_code(l.h));
+}
+bool rec_horizon(const RecIn& x) {
+  const int64_t g = int64_t(1) << (fmt::kPerspF - fmt::kPerspGuardLog2);
+  return x.in.q < g || x.qg < g || x.qh < g;
+}
+
+// The analytic block's stiff set with G = H = 0, then the recurrence's own extremes: q + G or
+// q + H at / below the guard while q is not, strong G/q and H/q (the 1 + G/q departure), the
+// largest q + G.
+std::vector<Row> rec_stiff_inputs() {
+  std::vector<Row> rows;
+  for (const Row& r : stiff_inputs()) {
+    const fx::In in = in_of(r);
+    rows.push_back(rec_row(in, in.q, in.q));
+  }
+  const int64_t guard = int64_t(1) << (fmt::kPerspF - fmt::kPerspGuardLog2);
+  const fx::In base = fx::in_from_map(fx::local_map(local(0.01, 300, 6, 0.4)));
+  for (int64_t dq : {int64_t(-1), int64_t(0), int64_t(1)}) {
+    rows.push_back(rec_row(base, guard + dq, base.q));  // q + G at the guard
+    rows.push_back(rec_row(base, base.q, guard + dq));  // q + H at the guard
+  }
+  rows.push_back(rec_row(base, 0, base.q));
+  rows.push_back(rec_row(base, base.q, -(int64_t(1) << (fmt::kEllRecQW - 1))));
+  for (double gq : {-0.5, -0.25, 0.25, 0.5, 1.0, 4.0})
+    for (int axis = 0; axis < 2; ++axis)
+      rows.push_back(rec_from_local(local(0.05, 64, 8, 0.3 + axis, axis ? 0 : 0.05 * gq, axis ? 0.05 * gq : 0)));
+  {  // largest q and q + G, q + H; largest numerators
+    const int64_t qmax = (int64_t(1) << (fmt::kPerspQW - 1)) - 1;
+    const int64_t gmax = (int64_t(1) << (fmt::kEllRecQW - 1)) - 1;
+    const int64_t big = -(int64_t(1) << (fmt::kEllNumW - 1)), top = (int64_t(1) << (fmt::kEllNumW - 1)) - 1;
+    rows.push_back(rec_row(fx::In{big, big, big, big, qmax, 0, 0, kAniso16, 15}, gmax, gmax));
+    rows.push_back(rec_row(fx::In{top, big, big, top, guard, 0, 0, kAniso16, 15}, guard, guard));
+    rows.push_back(rec_row(fx::In{top, big, big, top, qmax, 0, 0, 16383, 15}, guard, gmax));
+    rows.push_back(rec_row(fx::In{1, 0, 0, 1, guard, 0, 0, kAniso16, 15}, guard, guard));
+  }
+  return rows;
+}
+std::vector<Row> rec_random_inputs(uint64_t count, uint64_t seed) { return random_rows(count, seed, rec_from_local); }
+std::vector<Row> rec_golden_inputs() { return golden_of(rec_stiff_inputs(), rec_random_inputs(12, 99)); }
+// The analytic float Jacobian of the same codes, J = n / q^2 (what both variants approximate):
+// the error then holds the forward difference's departure log2(1 + G/q) as well as the widths'.
+Row rec_ref_of(const Row& r) {
+  const RecIn x = rec_of(r);
+  if (rec_horizon(x)) return {vec::f64_bits(NAN), vec::f64_bits(NAN), vec::f64_bits(NAN)};
+  Row row = row_of(x.in);  // (dm, dexp unused by the analytic reference)
+  return ref_of(row);
+}
+}  // namespace
+
+Block make_ellipse_rec() {
+  Block b;
+  b.name = "ellipse_rec";
+  b.description =
+      "pixel footprint, recurrence variant (seed 001: forward differences over q (q+G), q (q+H)), "
+      "then the analytic unit on J; II = 1";
+  using vec::Role;
+  const std::string qf = sf(fmt::kEllRecQW, fmt::kPerspF);
+  b.fields = {field("nux", Role::In, num_format()), field("nvx", Role::In, num_format()),
+              field("nuy", Role::In, num_format()), field("nvy", Role::In, num_format()),
+              field("q", Role::In, sf(fmt::kPerspQW, fmt::kPerspF)),
+              field("qg", Role::In, qf),
+              field("qh", Role::In, qf),
+              field("laniso", Role::In, uf(fmt::kEllAnisoW, fmt::kEllLogF)),
+              field("maxlod", Role::In, uf(fmt::kEllMaxLodW, 0))};
+  add_out_fields(&b);
+  b.sets = {"golden", "stiff", "random"};
+  b.inputs = [](const std::string& set, uint64_t count, uint64_t seed) {
+    if (set == "golden") return rec_golden_inputs();
+    if (set == "stiff") return rec_stiff_inputs();
+    return rec_random_inputs(count, seed);
+  };
+  b.model = [](const Row& r) {
+    const RecIn x = rec_of(r);
+    return out_row(fx::recurrence(x.in, x.qg, x.qh));
+  };
+  b.ref = rec_ref_of;
+  b.error = [](const Row& in, const Row& out, const Row& ref) {
+    const RecIn x = rec_of(in);
+    const bool hz = rec_horizon(x);
+    if (hz || (out[9] & fx::kHorizon)) return horizon_error(hz, out);  // must agree
+    // Rows whose Jacobian leaves s(EllNumW).EllNumF (the format-extreme rows) saturate: bit-exact
+    // only, not measured.
+    const fx::In j = fx::rec_front(x.in, x.qg, x.qh);
+    const int64_t lim = (int64_t(1) << (fmt::kEllNumW - 1)) - 1;
+    for (int64_t c : {j.nux, j.nvx, j.nuy, j.nvy})
+      if (c >= lim || c <= -lim) {
+        ErrPoint e;
+        e.valid = false;
+        return e;
+      }
+    return lod_error(out, ref);
+  };
+  b.latency_cycles = fmt::kEllRecLatency;
   b.ii_cycles = 1;
   b.err_metric = "max_lod_err";
   return b;

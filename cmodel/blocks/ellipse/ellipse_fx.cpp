@@ -365,34 +365,35 @@ Out analytic(const In& in) {
   return o;
 }
 
-Out forward_difference(const In& in, int64_t g, int64_t h) {
-  Out o;
-  if (in.q < kGuard || in.q + g < kGuard || in.q + h < kGuard) {
-    o.flags = kHorizon;
-    return o;
+In rec_front(const In& in, int64_t qg, int64_t qh) {
+  In f = in;
+  if (in.q < kGuard || qg < kGuard || qh < kGuard) {
+    f.q = 0;  // the back end's horizon guard: Out{flags = kHorizon}
+    return f;
   }
   // U = n * 2^(2 PerspF) / dX, dX = q (q + G) (2 PerspF fraction bits): n R 2^(2 PF - 24 - e)
   auto col = [&](int64_t qq, int64_t n1, int64_t n2, int64_t* u1, int64_t* u2) {
     int e;
     const uint64_t r = recip_of(static_cast<u128>(i128(in.q) * qq), &e);
-    const int sh = fmt::kRecipOutF + e - 2 * kPF;  // >= 4 for every unguarded q
+    const int sh = fmt::kRecipOutF + e - 2 * kPF;  // in [4, 30] for every unguarded q
     *u1 = static_cast<int64_t>(sat(rnd(i128(n1) * r, sh), fmt::kEllNumW));
     *u2 = static_cast<int64_t>(sat(rnd(i128(n2) * r, sh), fmt::kEllNumW));
   };
-  int64_t ux, vx, uy, vy;
-  col(in.q + g, in.nux, in.nvx, &ux, &vx);
-  col(in.q + h, in.nuy, in.nvy, &uy, &vy);
-  const Ell el = ellipse_of(ux, vx, uy, vy);
-  set_ellipse(el, &o);
-  const i128 det = i128(ux) * vy - i128(uy) * vx;  // 2 NumF fraction bits
-  const u128 ad = static_cast<u128>(det < 0 ? -det : det);
-  int64_t lf = 0;
-  if (ad != 0) {
-    set_f(ad, -2 * kNF, &o);
-    lf = log2_fx(ad) - int64_t(2 * kNF) * (1 << kL1);
-  }
-  lod_unit(in, el, ad == 0, lf, 0, &o);
-  return o;
+  col(qg, in.nux, in.nvx, &f.nux, &f.nvx);
+  col(qh, in.nuy, in.nvy, &f.nuy, &f.nvy);
+  f.q = int64_t(1) << kPF;  // q := 1: log2 q = 0, 1/q = R(1.0) = 1 exactly
+  det_norm(i128(f.nux) * f.nvy - i128(f.nuy) * f.nvx, 2 * kNF, &f.dm, &f.dexp);
+  return f;
+}
+
+Out recurrence(const In& in, int64_t qg, int64_t qh) { return analytic(rec_front(in, qg, qh)); }
+
+Out forward_difference(const In& in, int64_t g, int64_t h) { return recurrence(in, in.q + g, in.q + h); }
+
+Out pixel(const Coefs& c, int x, int y, uint32_t laniso, uint32_t max_lod, bool recurrence) {
+  const In in = make_in(c, x, y, laniso, max_lod);
+  return recurrence ? forward_difference(in, static_cast<int64_t>(c.g.raw()), static_cast<int64_t>(c.h.raw()))
+                    : analytic(in);
 }
 
 double lod_value(const Out& o) { return std::ldexp(double(o.lod), -fmt::kEllLodF); }

@@ -111,9 +111,30 @@ Local random_local(std::mt19937_64& rng);
 
 // Production (analytic) unit.
 Out analytic(const In& in);
-// Forward-difference unit (corrected seed recurrences): same inputs plus G, H of the triangle
-// (s44.40); n* of `in` are the same numerators.
+// Forward-difference unit (corrected seed recurrences, rtl/ellipse/tu_ellipse_rec.sv): same
+// inputs plus q(x+1) = q + G and q(y+1) = q + H (s(EllRecQW).PerspF, the span walk's registers);
+// n* of `in` are the same numerators (dm, dexp unused). Structure, as the RTL:
+//   front (rec_front): horizon guard on q, q+G, q+H (< 2^-PerspGuardLog2, incl. <= 0);
+//     dX = q (q+G), dY = q (q+H) exact (u(EllRecDW), 2 PerspF frac), each normalised to the
+//     RecipMantW-bit truncated mantissa and inverted by recip::core (R u25.24, faithful);
+//     Ux = round_half_up(nUx R 2^-(RecipOutF + e - 2 PerspF)), saturated to s(EllNumW).EllNumF
+//     (the same for Vx with dX, Uy, Vy with dY); det J = Ux Vy - Uy Vx exact (s(EllRecJdW),
+//     2 EllNumF frac) normalised to the det3 float format (dm truncated); a guarded pixel goes
+//     on with q := 0;
+//   back end: analytic() on (J, q := 1, det J): log2 q = 0 and 1/q = R(1.0) = 1 exactly, so
+//     Ae.. are the unscaled ellipse of J, f = det J, log2 major from J alone.
+// Error: the departure log2(1 + G/q) of the forward difference from the derivative (documented
+// in docs/blocks/ellipse.md) plus the analytic unit's bounds; every width is exact except the
+// faithful reciprocal (2^-24 relative) and the rounding of J to EllNumF bits.
+// The back end's input (q := 0 on the horizon: analytic() flags it and zeroes every output).
+In rec_front(const In& in, int64_t qg, int64_t qh);
+Out recurrence(const In& in, int64_t qg, int64_t qh);
+// The same with G, H of the triangle (s44.40): recurrence(in, in.q + g, in.q + h).
 Out forward_difference(const In& in, int64_t g, int64_t h);
+// The unit on pixel (x, y) of a triangle, as the texture unit runs it: numerators, q and det3 of
+// the quantised coefficients (make_in), analytic or (recurrence) the seed's forward differences
+// with q + G, q + H.
+Out pixel(const Coefs& c, int x, int y, uint32_t laniso, uint32_t max_lod, bool recurrence);
 
 // Log2 unit: x > 0 -> log2(x) with EllLogF + 1 fraction bits (truncating squarings).
 // log2_fx_serial is the hardware's algorithm (EllLogF + 1 truncating squarings of the

@@ -234,8 +234,14 @@ Border border(const PixelSetup& su, int64_t q, int64_t xi, int64_t eta) {
   }
   // g = K^T (xi, eta): 2 EwaKF + EwaPosF fraction bits exact, floored to EwaGradF.
   constexpr int kGSh = 2 * fmt::kEwaKF + fmt::kEwaPosF - fmt::kEwaGradF;
-  b.gu = static_cast<int32_t>((int64_t(su.kxu) * xi + int64_t(su.kyu) * eta) >> kGSh);
-  b.gv = static_cast<int32_t>((int64_t(su.kxv) * xi + int64_t(su.kyv) * eta) >> kGSh);
+  // Wrapped to EwaGradW bits as the RTL registers them (a no-op on a walk: |g| < 2^(GradW-1)
+  // there, EwaBorder.DistanceWithinOneLsbOfDouble; other inputs of the vector block wrap alike).
+  auto wrap = [](int64_t x) {
+    const uint64_t m = (uint64_t(1) << fmt::kEwaGradW) - 1, u = static_cast<uint64_t>(x) & m;
+    return static_cast<int32_t>(static_cast<int64_t>(u << (64 - fmt::kEwaGradW)) >> (64 - fmt::kEwaGradW));
+  };
+  b.gu = wrap((int64_t(su.kxu) * xi + int64_t(su.kyu) * eta) >> kGSh);
+  b.gv = wrap((int64_t(su.kxv) * xi + int64_t(su.kyv) * eta) >> kGSh);
   b.g = static_cast<uint32_t>(ellipse::fx::isqrt(static_cast<u128>(int64_t(b.gu) * b.gu + int64_t(b.gv) * b.gv)));
   // r = floor(sqrt Q): Q has 2 (EwaKF + EwaPosF) = 2 EwaGradF fraction bits.
   static_assert(kQF == 2 * fmt::kEwaGradF, "r = isqrt(Q) lands on EwaGradF fraction bits");
@@ -255,16 +261,21 @@ Border border(const PixelSetup& su, int64_t q, int64_t xi, int64_t eta) {
   return b;
 }
 
+uint32_t apply_border(const Border& b, int64_t q, uint32_t w, const clip::Variant& v) {
+  constexpr int64_t kOne = int64_t(1) << kQF;
+  if (b.zone == Zone::Outside) return 0;
+  if (b.zone == Zone::Inside) return w;
+  // The boundary weight outside (w(1) = 2^-8 of the formula and the 1-D table exactly).
+  constexpr uint32_t kEdgeW = uint32_t(1) << (fmt::kGaussSqF - 8);
+  const uint64_t wb = q < kOne ? w : kEdgeW;
+  return static_cast<uint32_t>((wb * clip::eval(v, b.d) + (uint64_t(1) << (fmt::kClipOutF - 1))) >> fmt::kClipOutF);
+}
+
 uint32_t border_weight(const PixelSetup& su, const Config& cfg, int64_t q, int64_t xi, int64_t eta) {
   const Border b = border(su, q, xi, eta);
   constexpr int64_t kOne = int64_t(1) << kQF;
-  if (b.zone == Zone::Outside) return 0;
-  if (b.zone == Zone::Inside) return weight_of(cfg.weights, static_cast<uint64_t>(q), xi, eta);
-  // The boundary weight outside (w(1) = 2^-8 of the formula and the 1-D table exactly).
-  constexpr uint32_t kEdgeW = uint32_t(1) << (fmt::kGaussSqF - 8);
-  const uint32_t w = q < kOne ? weight_of(cfg.weights, static_cast<uint64_t>(q), xi, eta) : kEdgeW;
-  const uint64_t v = clip::eval(*cfg.clip, b.d);
-  return static_cast<uint32_t>((uint64_t(w) * v + (uint64_t(1) << (fmt::kClipOutF - 1))) >> fmt::kClipOutF);
+  const uint32_t w = b.zone != Zone::Outside && q < kOne ? weight_of(cfg.weights, static_cast<uint64_t>(q), xi, eta) : 0;
+  return apply_border(b, q, w, *cfg.clip);
 }
 
 namespace {

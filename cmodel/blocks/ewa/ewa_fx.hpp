@@ -117,6 +117,9 @@ Border border(const PixelSetup& su, int64_t q, int64_t xi, int64_t eta);
 // The border weight of a texel: zone, d and the weight source's w (w(Q) inside, 2^-8 outside),
 // (w v(d) + 2^15) >> 16 in the band (u17.16).
 uint32_t border_weight(const PixelSetup& su, const Config& cfg, int64_t q, int64_t xi, int64_t eta);
+// The same from a computed Border and the weight source's w at Q (used for Q < 1 only): the
+// datapath after d (block ewa_border, rtl/ewa/tu_ewa_border.sv).
+uint32_t apply_border(const Border& b, int64_t q, uint32_t w, const clip::Variant& v);
 // Box growth of the border walk: 1/2 texel per side (EwaPosF codes).
 inline constexpr uint32_t kBorderGrow = 1u << (fmt::kEwaPosF - 1);
 

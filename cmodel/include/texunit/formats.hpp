@@ -147,6 +147,13 @@
   X(EllRhoW, 96, "GL LOD sums Px' = nUx^2 + nVx^2, Py' = nUy^2 + nVy^2 (by screen axis): exact, unsigned, 2 EllNumF frac") \
   X(TexLodBiasW, 14, "trilinear lod bias: signed, TexLodF fraction bits (|bias| <= 16 levels)")  \
   X(EllLatency, 5, "analytic ellipse/LOD pipeline latency in cycles, II = 1")               \
+  /* Recurrence (forward-difference) ellipse, seed 001 sec. 2 (tu_ellipse_rec, docs/blocks/ellipse.md) */ \
+  X(EllRecQW, kPerspQW + 1, "q(x+1) = q + G, q(y+1) = q + H (span-walk registers): signed, PerspF frac") \
+  X(EllRecDW, 2 * kPerspQW + 1, "denominators q (q+G), q (q+H): unsigned, 2 PerspF frac, exact (guarded > 0)") \
+  X(EllRecPW, kEllNumW + kRecipOutW, "n * R before rounding to a Jacobian entry: signed, exact") \
+  X(EllRecJdW, 2 * kEllNumW + 1, "det J = Ux Vy - Uy Vx: signed, 2 EllNumF frac, exact; -> det3 float format") \
+  X(EllRecFrontLatency, 6, "Jacobian front: reciprocal core (4) + J register + det J register") \
+  X(EllRecLatency, kEllRecFrontLatency + kEllLatency, "recurrence ellipse/LOD latency in cycles, II = 1") \
   /* EWA filter, bit-accurate (docs/blocks/ewa.md) */                                          \
   X(EwaCordW, 24, "CORDIC x, y datapath: signed; d = Ae'-Ce', b = Be' block-normalised to W-3 bits") \
   X(EwaCordIter, 16, "CORDIC iterations (vectoring and rotation)")                            \

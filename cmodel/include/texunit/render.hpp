@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "brdf/brdf_common.hpp"
+#include "ellipse/ellipse_ref.hpp"
 #include "ewa/ewa_cycles.hpp"
+#include "noise/noise_proc.hpp"
 #include "texunit/image.hpp"
 #include "texunit/scene.hpp"
 
@@ -76,6 +78,9 @@ struct CmodelOptions {
   // the tu_pom_unit / tu_iter_parallax arithmetic) before uv_shift and the filter. false: the
   // texture path alone, as the RTL texture-unit top (no relief stage yet) computes it.
   bool relief = true;
+  // Procedural materials take their colour from the noise unit (false: their texture, as the RTL
+  // texture-unit top, which has no noise unit yet, renders them).
+  bool procedural = true;
   // Threads for visibility and the pixels (rows; <= 0: every core). The frame is the same for
   // any count; a render with a uv_shift hook runs on one thread.
   int threads = 0;
@@ -87,6 +92,7 @@ struct CmodelOptions {
 inline CmodelOptions texture_path_only() {
   CmodelOptions o;
   o.relief = false;
+  o.procedural = false;
   return o;
 }
 // log2(max anisotropy) as B2's laniso input (u(EllAnisoW).EllLogF, rounded, saturated); the RTL
@@ -97,6 +103,15 @@ uint32_t laniso_code(double max_aniso);
 ewa::Engine engine_of(scene::Filter f);
 Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter = {},
                     const CmodelOptions& opt = {});
+
+// Procedural materials (docs/blocks/noise.md §5): the material's noise description in noise
+// units (its texture of width tex_w fixes the uv grid), and the float reference's colour at level-0
+// texel (u, v) with the pixel's Jacobian (the GL rule's rho limits the octaves).
+noise::ProcParams procedural_params(const scene::Material& m, int tex_w);
+// Per object: its material's parameters when procedural (texs: the objects' textures).
+std::vector<std::optional<noise::ProcParams>> procedural_objects(const scene::Scene& s,
+                                                                 const std::vector<tex::Texture>& texs);
+img::Rgba8 procedural_ref(const noise::ProcParams& p, double u, double v, const ellipse::Jacobian& j);
 
 // Ground truth (docs/blocks/texture.md "Ground truth"): per covered pixel, ss x ss stratified
 // jittered samples (deterministic) of the surface seen at the pixel centre, each the level-0 texel

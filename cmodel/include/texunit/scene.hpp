@@ -24,6 +24,9 @@ struct SceneError : std::runtime_error {
 enum class Filter { Nearest, Bilinear, Trilinear, Ewa };
 using WeightSource = schema::WeightSource;  // EWA weight source: its RTL code is the enum value
 enum class ReliefMethod { PomFixed, PomAdaptive, Iterative, DistanceMap, DistanceMapRefined };
+// B2's Jacobian (docs/blocks/ellipse.md): analytic (tu_ellipse) or the seed's forward-difference
+// recurrences (tu_ellipse_rec, unit configuration EllRecurrence). One per unit, so per scene.
+enum class Footprint { Analytic, Recurrence };
 
 struct Relief {
   std::string height_texture;  // its first channel is the height (255 = top)
@@ -31,6 +34,23 @@ struct Relief {
   ReliefMethod method = ReliefMethod::PomAdaptive;
   int layers = 16;             // PomFixed: N; PomAdaptive: Nmax (Nmin = 4); Iterative, DistanceMap*: cap
   int map_layers = 16;         // DistanceMap*: the distance map's layers D
+};
+
+// A procedural colour source (docs/scene-format.md "procedural"; docs/blocks/noise.md §5): the
+// unit evaluates Perlin noise at the pixel's (u, v[, t]) instead of sampling the texture.
+enum class ProceduralKind { Fbm, Smoke, Water };
+struct Procedural {
+  ProceduralKind kind = ProceduralKind::Fbm;
+  int octaves = 4;          // K, 1..NoiseOctaves
+  double frequency = 8;     // lattice cells per texture repeat
+  int seed = 0;             // lattice shift (37 s, 91 s) mod 256 cells
+  double time = 0;          // t of frame 0 (render --frames N --dt T adds frame * T)
+  double speed = 0;         // time as the third noise dimension z = speed * t (0: 2-D noise)
+  bool footprint_limit = true;  // fade out the octaves above the footprint's Nyquist frequency
+  double threshold = 0.2, gain = 2;  // smoke: opacity = clamp((turbulence - threshold) * gain, 0, 1)
+  double amplitude = 0.5;            // water: height amplitude (cells per unit of the octave sum)
+  std::array<double, 3> light{0.4, 0.3, 0.866};  // water: tangent-space light direction
+  std::array<double, 3> color0{0, 0, 0}, color1{255, 255, 255};  // value 0 -> color0, 1 -> color1
 };
 
 // The material's specular lobe for the shading stage (docs/blocks/brdf.md "In the unit").
@@ -53,6 +73,7 @@ struct Material {
   // [min_lod, max_lod] (levels), then to the pyramid.
   double lod_bias = 0, min_lod = 0, max_lod = 12;
   std::optional<Relief> relief;
+  std::optional<Procedural> procedural;  // colour from noise; `texture` still fixes the uv grid
   std::optional<Specular> specular;  // absent: diffuse only (when the scene has a light)
 };
 
@@ -100,6 +121,7 @@ struct Scene {
   std::vector<Object> objects;
   Budget budget;
   std::vector<Light> lights;  // at most one (the shading stage's); empty: no shading
+  Footprint footprint = Footprint::Analytic;  // "footprint": "analytic" | "recurrence"
   std::vector<std::string> warnings;  // e.g. zero-area triangles dropped (load() prints them)
 };
 
@@ -115,6 +137,10 @@ Scene load(const std::string& path);  // also prints the scene's warnings to std
 // brick wall with relief (grazing angles and strong anisotropy on purpose).
 const std::string& default_scene_json();
 Scene default_scene();
+// docs/scenes/procedural.json embedded (the demo's procedural materials): the default scene's
+// ground with fBm and its wall with smoke, 128 x 96.
+const std::string& procedural_scene_json();
+Scene procedural_scene();
 // The same scene with every material's relief removed (the texture path alone).
 Scene without_relief(Scene s);
 // The same scene with every material's EWA border weights set to the clip variant `clip`
@@ -127,5 +153,9 @@ tex::Texture build_texture(const Scene& s, const std::string& name);
 const char* to_string(Filter f);
 const char* to_string(WeightSource w);
 const char* to_string(ReliefMethod m);
+const char* to_string(ProceduralKind k);
+// The scene at time t: every procedural material's time set to its own time + t (frames).
+Scene at_time(Scene s, double t);
+const char* to_string(Footprint f);
 
 }  // namespace tu::scene
