@@ -309,10 +309,13 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
       r.fail_at("height", "unknown texture '" + rel.height_texture + "'");
     rel.scale = r.num("scale", 0, 1, 0.05);
     const auto meth = r.str("method", std::string("pom_adaptive"),
-                            {"pom_fixed", "pom_adaptive", "iterative"});
+                            {"pom_fixed", "pom_adaptive", "iterative", "distance_map", "distance_map_refined"});
     rel.method = meth == "pom_fixed" ? ReliefMethod::PomFixed
-                 : meth == "iterative" ? ReliefMethod::Iterative : ReliefMethod::PomAdaptive;
+                 : meth == "iterative" ? ReliefMethod::Iterative
+                 : meth == "distance_map" ? ReliefMethod::DistanceMap
+                 : meth == "distance_map_refined" ? ReliefMethod::DistanceMapRefined : ReliefMethod::PomAdaptive;
     rel.layers = r.integer("layers", 1, 256, 32);
+    rel.map_layers = r.integer("map_layers", 1, 255, 16);
     r.finish();
     m.relief = rel;
   }
@@ -598,7 +601,8 @@ const char* to_string(Footprint f) { return f == Footprint::Recurrence ? "recurr
 
 const char* to_string(ReliefMethod m) {
   return m == ReliefMethod::PomFixed ? "pom_fixed" : m == ReliefMethod::PomAdaptive ? "pom_adaptive"
-                                                                                    : "iterative";
+         : m == ReliefMethod::Iterative ? "iterative" : m == ReliefMethod::DistanceMap ? "distance_map"
+                                                                                        : "distance_map_refined";
 }
 
 }  // namespace tu::scene

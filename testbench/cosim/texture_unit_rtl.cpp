@@ -127,6 +127,11 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (m.procedural)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/procedural: the noise unit is not in the RTL "
                                   "texture unit yet (docs/blocks/noise.md §5); render it with --engine cmodel or ref");
+  for (const auto& [name, m] : s.materials)
+    if (o.relief && m.relief &&
+        (m.relief->method == scene::ReliefMethod::DistanceMap || m.relief->method == scene::ReliefMethod::DistanceMapRefined))
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/relief/method: the distance-map tracer is not in "
+                                  "the RTL texture unit yet; render with --engine cmodel or without relief (--no-relief)");
   // The full unit shades (HasShading); a light needs it, and a model the materials name must be its.
   const bool shade_unit = o.has_ewa && !o.corridor_unit;  // the corridor plan has no lights
   if (!shade_unit && !s.lights.empty())

@@ -38,6 +38,34 @@ case $case in
     expect 2 "gamma" "$tu" complexity in.png out.png --gamma nan
     "$tu" --help >/dev/null || fail "--help must succeed"
     ;;
+  distance_map)
+    # Good run: raw + header + slices, memory printed; bad images, sizes and options: exit 2,
+    # the file or option named, nothing written.
+    python3 -c "
+import zlib, struct
+def png(w, h, rows):
+    raw = b''.join(b'\\x00' + bytes(r) for r in rows)
+    def chunk(t, d): return struct.pack('>I', len(d)) + t + d + struct.pack('>I', zlib.crc32(t + d) & 0xffffffff)
+    return b'\\x89PNG\\r\\n\\x1a\\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, 0, 0, 0, 0)) + chunk(b'IDAT', zlib.compress(raw)) + chunk(b'IEND', b'')
+open('$tmp/h16.png', 'wb').write(png(16, 16, [[(x * 37 + y * 11) % 256 for x in range(16)] for y in range(16)]))
+open('$tmp/h12.png', 'wb').write(png(12, 12, [[0] * 12] * 12))
+"
+    "$tu" distance-map "$tmp/h16.png" "$tmp/ok" --depth 4 --scale 0.25 --slices "$tmp/sl" >"$tmp/out" 2>"$tmp/err" ||
+      fail "distance-map failed: $(cat "$tmp/err")"
+    grep -q "memory 1024 bytes" "$tmp/out" || fail "memory not printed: $(cat "$tmp/out")"
+    [ "$(stat -c %s "$tmp/ok.raw")" = 1024 ] || fail "raw size"
+    grep -q '"layers": 4' "$tmp/ok.json" || fail "header"
+    [ -f "$tmp/sl/layer_003.png" ] || fail "slices"
+    expect 2 "h12.png: .*power of two" "$tu" distance-map "$tmp/h12.png" "$tmp/bad" --depth 4 --scale 0.5
+    expect 2 "scale" "$tu" distance-map "$tmp/h16.png" "$tmp/bad" --depth 4 --scale 0.01
+    expect 2 "depth" "$tu" distance-map "$tmp/h16.png" "$tmp/bad" --depth 0
+    expect 2 "depth" "$tu" distance-map "$tmp/h16.png" "$tmp/bad" --depth 256
+    printf 'not a png' >"$tmp/junk.png"
+    expect 2 "junk.png" "$tu" distance-map "$tmp/junk.png" "$tmp/bad" --depth 4
+    expect 2 "missing.png" "$tu" distance-map "$tmp/missing.png" "$tmp/bad" --depth 4
+    [ ! -e "$tmp/bad.raw" ] && [ ! -e "$tmp/bad.json" ] || fail "partial output"
+    no_tmp_left "$tmp"
+    ;;
   stall_nan)
     "$tu" vectors --block reciprocal --set golden --out "$tmp/r.vec" 2>/dev/null
     expect 2 "stall-prob" "$tu" cosim --block reciprocal --vectors "$tmp/r.vec" --stall-prob nan

@@ -11,6 +11,7 @@
 #include "cli_checks.hpp"
 #include "output.hpp"
 #include "complexity/complexity.hpp"
+#include "distmap/distance_map.hpp"
 #include "pom/relief_quality.hpp"
 #include "cosim.hpp"
 #include "merge.hpp"
@@ -134,6 +135,47 @@ int cmd_complexity(const std::string& in, const std::string& out, const tu::comp
   outs.commit();
   std::cerr << "wrote " << c.width << "x" << c.height << " complexity map (" << p.levels
             << " levels, gamma " << p.gamma << ", dilate " << p.dilate << ") to " << out << "\n";
+  return 0;
+}
+
+// Distance map (docs/blocks/relief.md §13): HEIGHT.png -> OUT.raw + OUT.json (+ PNG slices).
+int cmd_distance_map(const std::string& in, const std::string& out, const std::string& slices,
+                     const tu::dm::Params& p) {
+  tu::cli::Outputs outs;
+  const std::string raw = out + ".raw", hdr = out + ".json";
+  const std::string raw_tmp = outs.stage(raw), hdr_tmp = outs.stage(hdr);
+  std::vector<std::string> slice_tmp;
+  if (!slices.empty()) {
+    outs.make_dir(slices);
+    for (int k = 0; k < p.layers; ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "/layer_%03d.png", k);
+      slice_tmp.push_back(outs.stage(slices + name));
+    }
+  }
+  tu::img::Gray8 h = tu::img::read_png_channel0(in);
+  for (auto& x : h.px) x = static_cast<uint8_t>(255 - x);  // height 255 = top -> depth 0
+  tu::dm::Map m;
+  try {
+    m = tu::dm::build(h, p);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(in + ": " + e.what());
+  }
+  if (!(std::ofstream(raw_tmp, std::ios::binary)
+            .write(reinterpret_cast<const char*>(m.code.data()), static_cast<std::streamsize>(m.code.size()))))
+    throw std::runtime_error(raw + ": cannot write the file");
+  if (!(std::ofstream(hdr_tmp, std::ios::binary) << tu::dm::header_json(m, fs::path(raw).filename().string())))
+    throw std::runtime_error(hdr + ": cannot write the file");
+  for (size_t k = 0; k < slice_tmp.size(); ++k) tu::img::write_png_gray(slice_tmp[k], tu::dm::slice(m, static_cast<int>(k)));
+  outs.commit();
+  size_t nonzero = 0;
+  for (auto c : m.code) nonzero += c != 0;
+  std::cout << "distance map " << m.w << "x" << m.h << "x" << m.layers << (m.refined ? " (refined, " : " (classic, ")
+            << "depth " << m.depth_texels << " texels, margin " << m.margin << " texel";
+  if (m.refined) std::cout << ", " << m.directions << " directions";
+  std::cout << "): memory " << m.bytes() << " bytes; " << nonzero << " voxels with a step > 0\n";
+  std::cerr << "wrote " << raw << ", " << hdr << (slices.empty() ? "" : " and " + std::to_string(p.layers) + " slices in " + slices)
+            << "\n";
   return 0;
 }
 
@@ -269,6 +311,20 @@ int main(int argc, char** argv) {
   cpx->add_option("--gamma", cx.gamma, "gamma exponent")->check(tu::cli::finite_in(1e-6, 16.0));
   cpx->add_option("--dilate", cx.dilate, "odd max-filter size (1 = none)")->check(tu::cli::odd_in(1, 255));
 
+  std::string dm_in, dm_out, dm_slices;
+  tu::dm::Params dmp;
+  auto* dmc = app.add_subcommand("distance-map", "3-D distance map of a height map for sphere-traced relief (seed 003)");
+  dmc->add_option("HEIGHT", dm_in, "height map PNG (first channel, 255 = top; square, power of two up to 512)")->required();
+  dmc->add_option("OUT", dm_out, "output base name: writes OUT.raw (voxels) and OUT.json (header)")->required();
+  dmc->add_option("--depth", dmp.layers, "layers D of the map (1..255)")->required()->check(CLI::Range(1, tu::dm::kMaxLayers));
+  dmc->add_option("--scale", dmp.scale, "relief depth in texture repeats (the material's scale)")
+      ->check(tu::cli::finite_in(1e-6, 0.99));
+  dmc->add_flag("--refined", dmp.refined, "the visibility-refined map (seed 003 chapter 4)");
+  dmc->add_option("--direction-step", dmp.direction_step_deg, "refined: degrees between view directions")
+      ->check(tu::cli::finite_in(1.0, 45.0));
+  dmc->add_option("--slices", dm_slices, "write one PNG per layer here");
+  dmc->add_option("--threads", dmp.threads, threads_help)->check(CLI::Range(0, 4096));
+
   tu::pom::QualityParams rq;
   auto* rqc = app.add_subcommand("relief-quality", "POM / iterative parallax PSNR vs steps (docs/blocks/relief.md)");
   rqc->add_option("--size", rq.side, "texture and image side (power of two)")->check(CLI::IsMember({16, 32, 64, 128, 256, 512}));
@@ -277,6 +333,11 @@ int main(int argc, char** argv) {
                   "power of two, 16..512) instead of the procedural maps; its side replaces --size")
       ->check(CLI::ExistingFile);
   rqc->add_option("--debug-dir", rq.debug_dir, "write layer-count debug PNGs here")->check(CLI::ExistingDirectory);
+  rqc->add_flag("--compare", rq.compare, "also linear+binary search and the distance maps (classic, refined), "
+                "PSNR against the exact intersection, and the fbm/gravel/bark/stone maps");
+  rqc->add_option("--dm-layers", rq.dm_layers, "distance-map layers (--compare)")->check(CLI::Range(1, tu::dm::kMaxLayers));
+  rqc->add_option("--dm-step", rq.dm_step_deg, "refined map direction step in degrees (--compare)")
+      ->check(tu::cli::finite_in(1.0, 45.0));
 
   tu::report::Options ro;
   bool no_yosys = false;
@@ -359,6 +420,7 @@ int main(int argc, char** argv) {
     if (*rtf) return cmd_rtl_files(root, rtl_top, rtl_list);
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*rqc) return cmd_relief_quality(rq);
+    if (*dmc) return cmd_distance_map(dm_in, dm_out, dm_slices, dmp);
     if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000, demo_out, threads);
   } catch (const fs::filesystem_error& e) {
     std::cerr << "texunit: error: " << tu::cli::fs_message(e.path1().string(), "access the file", e.code()) << "\n";

@@ -710,6 +710,7 @@ std::vector<std::string> groups() {
     if (std::find(g.begin(), g.end(), s.group) == g.end() && s.group != "pom_setup" && s.group != "pom_refine")
       g.push_back(s.group);  // pom_setup, pom_refine: rows of pom_unit (report_relief.cpp)
   g.insert(g.begin() + 3, kGauss.begin(), kGauss.end());  // after reciprocal, persp, ellipse: B1 .. B5 order
+  g.push_back("distance_map");  // C model only (report_relief.cpp)
   return g;
 }
 

@@ -10,6 +10,7 @@
 
 #include "block.hpp"
 #include "cosim.hpp"
+#include "distmap/dm_trace.hpp"
 #include "pom/relief_quality.hpp"
 #include "pom_vec_common.hpp"
 
@@ -52,6 +53,59 @@ Row measured_row(const std::string& variant, const vec::VectorFile& vf, bool per
   return r;
 }
 
+// Distance-map tracer (C model only, docs/blocks/relief.md §13): the bricks 64x64 tile at 60 deg,
+// S = 0.125, 16 layers, with the finish; error = |uv - float reference| in uv LSB; cycles modelled
+// (one map or depth read per clock), no RTL yet.
+Row dm_row(bool refined) {
+  constexpr int kSide = 64;
+  const img::Gray8 depth = pom::map_bricks(kSide);
+  dm::Params p;
+  p.layers = 16;
+  p.scale = 0.125;
+  p.refined = refined;
+  const dm::Map m = dm::build(depth, p);
+  const double th = 60 * M_PI / 180, ph = 30 * M_PI / 180;
+  pom::View v;
+  v.vx = static_cast<int32_t>(std::lround(std::sin(th) * std::cos(ph) * (1 << fmt::kPomVzF)));
+  v.vy = static_cast<int32_t>(std::lround(std::sin(th) * std::sin(ph) * (1 << fmt::kPomVzF)));
+  v.vz = static_cast<int32_t>(std::lround(std::cos(th) * (1 << fmt::kPomVzF)));
+  v.scale = m.scale_code;
+  double max_e = 0, se = 0, steps = 0, cycles = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int y = 0; y < kSide; ++y)
+    for (int x = 0; x < kSide; ++x) {
+      const int64_t u = (int64_t(2 * x + 1) << fmt::kPomUvF) / (2 * kSide), w = (int64_t(2 * y + 1) << fmt::kPomUvF) / (2 * kSide);
+      const auto o = dm::trace(m, depth, u, w, v, fmt::kDmCap, fmt::kDmFinish);
+      const auto r = dm::trace_ref(m, depth, std::ldexp(double(u), -fmt::kPomUvF), std::ldexp(double(w), -fmt::kPomUvF),
+                                   std::ldexp(v.vx, -fmt::kPomVzF), std::ldexp(v.vy, -fmt::kPomVzF),
+                                   std::ldexp(v.vz, -fmt::kPomVzF), m.scale, fmt::kDmCap, fmt::kDmFinish);
+      for (double e : {double(o.u) - r.u * 65536, double(o.v) - r.v * 65536}) {
+        max_e = std::max(max_e, std::abs(e));
+        se += e * e;
+      }
+      steps += o.steps + o.finish_steps;
+      cycles += o.steps + 1 + o.finish_steps;
+    }
+  const double n = double(kSide) * kSide;
+  Row row;
+  row.block = "distance_map";
+  row.variant = refined ? "refined_60deg" : "classic_60deg";
+  row.scheme = refined ? "sphere trace, visibility-refined map + linear/binary finish" : "sphere trace, classic map + linear/binary finish";
+  row.max_abs_err = max_e;
+  row.rms_err = std::sqrt(se / (2 * n));
+  row.err_unit = "uv LSB (2^-16) vs the float tracer";
+  row.latency_cycles = -1;
+  row.ii_cycles = cycles / n;
+  row.cycles_source = "estimated (model: one map or depth read per clock, k + 1 + finish; no RTL)";
+  row.memory_bits = static_cast<int64_t>(m.bytes()) * 8;
+  row.cmodel_ns_per_item =
+      std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / n / 2;  // 2 tracers
+  char b[160];
+  std::snprintf(b, sizeof b, "bricks 64x64, S 0.125, 16 layers (%zu bytes): %.3f reads/px", m.bytes(), steps / n);
+  row.notes = b;
+  return row;
+}
+
 std::string mean_steps(const vec::VectorFile& vf, int out_col) {
   const int c = vf.indices(vec::Role::Out)[static_cast<size_t>(out_col)];
   double k = 0;
@@ -63,7 +117,7 @@ std::string mean_steps(const vec::VectorFile& vf, int out_col) {
 }  // namespace
 
 bool is_relief_block(const std::string& b) {
-  return b == "pom_layers" || b == "pom_march" || b == "iter_parallax" || b == "pom_unit";
+  return b == "pom_layers" || b == "pom_march" || b == "iter_parallax" || b == "pom_unit" || b == "distance_map";
 }
 
 std::vector<Row> relief_rows(const std::vector<std::string>& blocks_) {
@@ -91,6 +145,9 @@ std::vector<Row> relief_rows(const std::vector<std::string>& blocks_) {
       for (double deg : {45.0, 80.0})
         for (int n : {4, 8, 16, 24, 32, 0})
           scene("pom_unit", std::to_string(int(deg)) + "deg_" + (n ? "N" + std::to_string(n) : "adaptive"), deg, n, 2);
+    } else if (b == "distance_map") {
+      rows.push_back(dm_row(false));
+      rows.push_back(dm_row(true));
     } else {
       throw std::invalid_argument("report: '" + b + "' is not a relief block");
     }

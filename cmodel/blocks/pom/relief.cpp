@@ -7,6 +7,7 @@
 #include "texunit/formats.hpp"
 
 #include "complexity/complexity.hpp"
+#include "distmap/dm_trace.hpp"
 #include "pom/pom_layers.hpp"
 
 namespace tu::relief {
@@ -50,11 +51,24 @@ Maps make_maps(const scene::Scene& s, const std::string& material) {
     for (size_t i = 0; i < im.px.size(); ++i) g.px[i] = im.px[i].r;
     return g;
   }();
+  Maps m;
   try {
-    return make_maps(height);
+    m = make_maps(height);
   } catch (const std::invalid_argument& e) {
     throw scene::SceneError(s.source + ": /materials/" + material + "/relief/height: " + e.what());
   }
+  if (rel.method == Method::DistanceMap || rel.method == Method::DistanceMapRefined) {
+    dm::Params p;
+    p.layers = rel.map_layers;
+    p.scale = rel.scale;
+    p.refined = rel.method == Method::DistanceMapRefined;
+    try {
+      m.dist = std::make_shared<const dm::Map>(dm::build(m.depth, p));
+    } catch (const std::invalid_argument& e) {
+      throw scene::SceneError(s.source + ": /materials/" + material + "/relief: " + e.what());
+    }
+  }
+  return m;
 }
 
 bool tangent_view(const persp::Triangle& t, const double eye[3], double s, double r,
@@ -119,6 +133,23 @@ FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, 
   // The march works inside one texture repeat; the integer part is put back afterwards.
   const int64_t iu = u & ~(pom::kUvOne - 1), iv = v & ~(pom::kUvOne - 1);
   FxShift o;
+  if (method == Method::DistanceMap || method == Method::DistanceMapRefined) {
+    if (!m.dist) throw std::invalid_argument("relief::shift_uv_fx: a distance-map method without its map");
+    o.n = static_cast<uint32_t>(std::clamp(layers, 1, 255));
+    const auto r = dm::trace(*m.dist, m.depth, u - iu, v - iv, view, o.n, fmt::kDmFinish);
+    o.steps = r.steps + r.finish_steps;
+    o.vz_guard = r.clamped;
+    o.back = r.back;
+    if (wrap) {
+      o.u = iu + (r.u & (pom::kUvOne - 1));
+      o.v = iv + (r.v & (pom::kUvOne - 1));
+    } else {
+      o.u = iu + r.u;
+      o.v = iv + r.v;
+      o.discard = r.u < 0 || r.u > pom::kUvOne || r.v < 0 || r.v > pom::kUvOne;
+    }
+    return o;
+  }
   if (method == Method::Iterative) {
     const auto r = pom::iter_parallax(m.depth, u - iu, v - iv, pom::ipx_dir_normalised(view), n);
     o.u = iu + r.u;

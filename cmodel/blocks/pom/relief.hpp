@@ -12,8 +12,10 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "distmap/distance_map.hpp"
 #include "persp/persp.hpp"
 #include "pom/pom_march.hpp"
 #include "texunit/image.hpp"
@@ -27,11 +29,12 @@ using Method = scene::ReliefMethod;
 // Sides must be powers of two (std::invalid_argument otherwise).
 struct Maps {
   img::Gray8 depth, complexity;
+  std::shared_ptr<const dm::Map> dist;  // DistanceMap methods: built by make_maps(scene, material)
 };
 Maps make_maps(const img::Gray8& height);
 // The maps of a material's relief: the builtin bricks texture gives its height map, any other
 // texture its first channel (level 0). A SceneError names the material's field when the sides
-// are not powers of two.
+// are not powers of two (or, for a distance map, not square, or scale * side < 1 texel).
 Maps make_maps(const scene::Scene& s, const std::string& material);
 
 // Tangent-space view (unit vector, towards the eye) at the point p0 + s e1 + r e2 of triangle t
@@ -68,7 +71,8 @@ uint32_t layers_at(const Maps& m, int64_t u, int64_t v, const pom::View& view, M
 // In : u, v  texture coordinates in texture repeats, PomUvF (16) fraction bits, any integer part
 //      view  pom::View (s16.14 tangent-space view, S u0.16), e.g. quantise(tangent_view(...))
 //      method, layers: PomFixed N = layers; PomAdaptive Nmin = 4, Nmax = layers, N from
-//      pom::layers(Vz, complexity at (u, v)); Iterative: cap = layers, direction (P, 1).
+//      pom::layers(Vz, complexity at (u, v)); Iterative: cap = layers, direction (P, 1);
+//      DistanceMap*: dm::trace through m.dist, cap = layers (1..255), finish DmFinish steps.
 //      layers is clamped to 1..63 (the unit's PomNW bits).
 // Out: u, v  shifted coordinates (same units; the integer part of the input is kept, so a
 //      REPEAT texture lookup is unchanged by the wrap of the march), steps = march steps or

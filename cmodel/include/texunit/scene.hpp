@@ -23,7 +23,7 @@ struct SceneError : std::runtime_error {
 
 enum class Filter { Nearest, Bilinear, Trilinear, Ewa };
 using WeightSource = schema::WeightSource;  // EWA weight source: its RTL code is the enum value
-enum class ReliefMethod { PomFixed, PomAdaptive, Iterative };
+enum class ReliefMethod { PomFixed, PomAdaptive, Iterative, DistanceMap, DistanceMapRefined };
 // B2's Jacobian (docs/blocks/ellipse.md): analytic (tu_ellipse) or the seed's forward-difference
 // recurrences (tu_ellipse_rec, unit configuration EllRecurrence). One per unit, so per scene.
 enum class Footprint { Analytic, Recurrence };
@@ -32,13 +32,28 @@ struct Relief {
   std::string height_texture;  // its first channel is the height (255 = top)
   double scale = 0.05;         // depth of the relief in texture-space units (uv of the texture)
   ReliefMethod method = ReliefMethod::PomAdaptive;
-  int layers = 16;             // PomFixed: N; PomAdaptive: Nmax (Nmin = 4); Iterative: cap
+  int layers = 16;             // PomFixed: N; PomAdaptive: Nmax (Nmin = 4); Iterative, DistanceMap*: cap
+  int map_layers = 16;         // DistanceMap*: the distance map's layers D
 };
 
 // A procedural colour source (docs/scene-format.md "procedural"; docs/blocks/noise.md §5): the
 // unit evaluates Perlin noise at the pixel's (u, v[, t]) instead of sampling the texture.
 enum class ProceduralKind { Fbm, Smoke, Water };
 struct Procedural {
+  ProceduralKind kind = ProceduralKind::Fbm;
+  int octaves = 4;          // K, 1..NoiseOctaves
+  double frequency = 8;     // lattice cells per texture repeat
+  int seed = 0;             // lattice shift (37 s, 91 s) mod 256 cells
+  double time = 0;          // t of frame 0 (render --frames N --dt T adds frame * T)
+  double speed = 0;         // time as the third noise dimension z = speed * t (0: 2-D noise)
+  bool footprint_limit = true;  // fade out the octaves above the footprint's Nyquist frequency
+  double threshold = 0.2, gain = 2;  // smoke: opacity = clamp((turbulence - threshold) * gain, 0, 1)
+  double amplitude = 0.5;            // water: height amplitude (cells per unit of the octave sum)
+  std::array<double, 3> light{0.4, 0.3, 0.866};  // water: tangent-space light direction
+  std::array<double, 3> color0{0, 0, 0}, color1{255, 255, 255};  // value 0 -> color0, 1 -> color1
+};
+
+truct Procedural {
   ProceduralKind kind = ProceduralKind::Fbm;
   int octaves = 4;          // K, 1..NoiseOctaves
   double frequency = 8;     // lattice cells per texture repeat
