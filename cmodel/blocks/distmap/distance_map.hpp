@@ -1,5 +1,5 @@
 // Distance maps for sphere-traced relief (seed 003 §7, Donnelly, GPU Gems 2 ch. 8;
-// docs/blocks/relief.md §12). Units: texels of the (square) depth map; the relief depth
+// docs/blocks/relief.md §13). Units: texels of the (square) depth map; the relief depth
 // Z = scale * W texels, so the tangent-space geometry is isotropic.
 //
 // Solid V (what the tracer must not enter): voxel (i, j, k), k = 0..D-1 the layer from the top,
@@ -112,7 +112,7 @@ double exact_dist(const Map& m, double x, double y, double z);
 double exact_free_length(const Map& m, double x, double y, double z, const Dir& d, double max_t = 1024);
 bool exact_reaches(const Map& m, double x, double y, double z, const Dir& d);
 
-// The JSON header of the file format (docs/blocks/relief.md §12): the raw file holds Map::code.
+// The JSON header of the file format (docs/blocks/relief.md §13): the raw file holds Map::code.
 std::string header_json(const Map& m, const std::string& raw_name);
 // Layer k as a grey image (code as grey), for viewing.
 img::Gray8 slice(const Map& m, int k);

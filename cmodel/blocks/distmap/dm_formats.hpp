@@ -1,4 +1,4 @@
-// Formats of the distance-map relief (docs/blocks/relief.md §12). C model only for now: they move
+// Formats of the distance-map relief (docs/blocks/relief.md §13). C model only for now: they move
 // into texunit/formats.hpp (and so into tu_formats_pkg.sv) with the RTL tracer stage.
 #pragma once
 

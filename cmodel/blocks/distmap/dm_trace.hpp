@@ -1,4 +1,4 @@
-// Sphere tracing through a distance map (docs/blocks/relief.md §12), bit-accurate and float.
+// Sphere tracing through a distance map (docs/blocks/relief.md §13), bit-accurate and float.
 //
 // Ray (POM's): from the surface point T (depth 0) along -V, position T - D P at depth D, with
 // P = pom::parallax(view) (a = max(|Vz|, PomVzMin): the Vz -> 0 guard; Vz < 0 mirrored). In map
