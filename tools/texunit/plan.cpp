@@ -265,6 +265,34 @@ std::string package(const Config& c, const std::string& origin) {
 
 }  // namespace
 
+uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::Filter(const scene::Material&)>& filter_of,
+                           bool relief_stage, std::optional<scene::WeightSource> weights) {
+  scene::Scene t = scene::without_relief(s);
+  for (auto& [name, m] : t.materials) m.filter = filter_of(m);
+  render::CmodelOptions o = render::texture_path_only();
+  o.weights = weights;
+  const render::Frame fr = render::render_cmodel(t, std::nullopt, o);
+  const auto wl = sysmodel::scene_workload(t, fr);
+  std::vector<int> top_level;  // per object: its texture's top mip level
+  for (const auto& ob : t.objects)
+    top_level.push_back(scene::build_texture(t, t.materials.at(ob.material).texture).num_levels() - 1);
+  std::vector<ewa::PixelCost> costs;
+  for (size_t i = 0; i < wl.pixels.size(); ++i) {
+    const auto& w = wl.pixels[i];
+    const auto& rec = fr.pixels[i];
+    const size_t obj = static_cast<size_t>(rec.object);
+    const scene::Filter f = t.materials.at(t.objects[obj].material).filter;
+    ewa::PixelCost c = sysmodel::cost_of(w);
+    c.engine = render::engine_of(f);
+    if (c.engine == ewa::Engine::Trilinear) {
+      // A B1-guard pixel is recorded with 1 texel (the workload's guard is EWA's: no level tried).
+      c.one_level = ewa::trilinear_one_level(rec.texels == 1, static_cast<int>(std::floor(rec.lod)), top_level[obj]);
+    }
+    costs.push_back(c);
+  }
+  return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage)));
+};
+
 int run(const Options& opt) {
   const scene::Scene s = opt.scene == "default" ? scene::default_scene() : scene::load(opt.scene);
   const auto table = load_table(opt.report);
@@ -453,31 +481,8 @@ int run(const Options& opt) {
   //    TextureUnitRtl.CyclesMatchPrediction / MixedFiltersPerSpan): the specialised and the full
   //    unit with the plan's filter per material, and the full unit as authored.
   auto scene_cycles = [&](std::function<scene::Filter(const scene::Material&)> filter_of, bool relief_stage,
-                          std::optional<scene::WeightSource> weights) -> uint64_t {
-    scene::Scene t = scene::without_relief(s);
-    for (auto& [name, m] : t.materials) m.filter = filter_of(m);
-    render::CmodelOptions o = render::texture_path_only();
-    o.weights = weights;
-    const render::Frame fr = render::render_cmodel(t, std::nullopt, o);
-    const auto wl = sysmodel::scene_workload(t, fr);
-    std::vector<int> top_level;  // per object: its texture's top mip level
-    for (const auto& ob : t.objects)
-      top_level.push_back(scene::build_texture(t, t.materials.at(ob.material).texture).num_levels() - 1);
-    std::vector<ewa::PixelCost> costs;
-    for (size_t i = 0; i < wl.pixels.size(); ++i) {
-      const auto& w = wl.pixels[i];
-      const auto& rec = fr.pixels[i];
-      const size_t obj = static_cast<size_t>(rec.object);
-      const scene::Filter f = t.materials.at(t.objects[obj].material).filter;
-      ewa::PixelCost c = sysmodel::cost_of(w);
-      c.engine = render::engine_of(f);
-      if (c.engine == ewa::Engine::Trilinear) {
-        // A B1-guard pixel is recorded with 1 texel (the workload's guard is EWA's: no level tried).
-        c.one_level = ewa::trilinear_one_level(rec.texels == 1, static_cast<int>(std::floor(rec.lod)), top_level[obj]);
-      }
-      costs.push_back(c);
-    }
-    return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage)));
+                          std::optional<scene::WeightSource> weights) {
+    return scene_stream_cycles(s, filter_of, relief_stage, weights);
   };
   auto authored = [](const scene::Material& m) { return m.filter; };
   auto planned_filter = [&](const scene::Material& m) {

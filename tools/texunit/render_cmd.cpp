@@ -13,6 +13,7 @@
 #include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
+#include "objspace/objspace.hpp"
 
 namespace tu::cli {
 
@@ -47,7 +48,27 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
   r->add_option("--threads", a.threads, "cmodel / rtl engines: threads for the C-model render (default 0: "
                 "every core); the image is the same for any count")
       ->check(CLI::Range(0, 4096));
+  r->add_option("--pipeline", a.pipeline,
+                "screen: B1 -> B2 -> filter per pixel; object-space: each triangle rotated parallel to the "
+                "screen, textured on a sample grid (one mip level per polygon), samples rotated back, projected "
+                "and splatted (docs/blocks/objspace.md; ref and cmodel engines)")
+      ->check(CLI::IsMember({"screen", "object-space"}));
+  r->add_option("--os-spacing", a.os_spacing, "object-space: sample spacing in pixels at the plane's distance")
+      ->check(CLI::Range(0.05, 64.0));
+  r->add_option("--max-samples", a.max_samples, "object-space: cap on the render's samples (more: exit 2)")
+      ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
   return r;
+}
+
+static void print_objspace_stats(const objspace::Stats& st) {
+  std::printf("object space: %llu triangles, %llu tiles, %llu samples (%.2f per covered pixel), %llu off screen, "
+              "%llu guarded, %llu splats, %llu foreign-surface splats dropped; %llu covered pixels: %llu holes, "
+              "%llu overlaps (sum s > 4), max sum s %.1f, %llu accumulator saturations\n",
+              (unsigned long long)st.triangles, (unsigned long long)st.tiles, (unsigned long long)st.samples,
+              st.samples_per_pixel(), (unsigned long long)st.off_screen, (unsigned long long)st.guarded,
+              (unsigned long long)st.splats, (unsigned long long)st.foreign, (unsigned long long)st.covered,
+              (unsigned long long)st.holes, (unsigned long long)st.overlaps, st.max_weight,
+              (unsigned long long)st.acc_saturated);
 }
 
 int run_render(const RenderArgs& a) {
@@ -64,7 +85,7 @@ int run_render(const RenderArgs& a) {
   // Every output is checked before the render and written only when all succeed (Outputs).
   Outputs outs;
   outs.make_dir(a.out_dir);
-  const std::string png = (std::filesystem::path(a.out_dir) / (a.engine + ".png")).string();
+  const std::string png = (std::filesystem::path(a.out_dir) / ((a.pipeline == "object-space" ? "objspace_" : "") + a.engine + ".png")).string();
   const std::string png_tmp = outs.stage(png);
   const std::string dump_tmp = a.dump.empty() ? "" : outs.stage(a.dump);
   render::CmodelOptions opt;
@@ -74,7 +95,14 @@ int run_render(const RenderArgs& a) {
   opt.threads = a.threads;
   render::Frame frame;
   bool ok = true;
-  if (a.engine == "rtl") {
+  if (a.pipeline == "object-space") {
+    if (a.engine != "ref" && a.engine != "cmodel")
+      throw std::invalid_argument("render --pipeline object-space: --engine must be ref or cmodel (not " + a.engine + ")");
+    const objspace::Options oo{a.os_spacing, a.max_samples};
+    auto r = a.engine == "cmodel" ? objspace::render_cmodel(s, oo) : objspace::render_ref(s, oo);
+    frame = std::move(r.frame);
+    print_objspace_stats(r.stats);
+  } else if (a.engine == "rtl") {
     cosim::RtlRenderOptions ro;
     ro.has_ewa = a.rtl_unit == "full";
     ro.filter = f;

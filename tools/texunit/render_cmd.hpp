@@ -11,6 +11,9 @@ struct RenderArgs {
   int ss = 16;                      // --engine truth: samples per pixel side
   std::string truth_kernel = "box";  // --engine truth: box | gauss
   int threads = 0;  // C-model render and visibility (<= 0: every core)
+  std::string pipeline = "screen";  // screen | object-space (docs/blocks/objspace.md)
+  double os_spacing = 1;            // object-space: sample spacing, pixels at the plane distance
+  uint64_t max_samples = 1ull << 28;  // object-space: sample cap of the render
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);
