@@ -2,6 +2,7 @@
 # Generic Yosys synthesis of one RTL top: prints one JSON object with the $mul count (before
 # techmap, flattened), the total cell count and the flip-flop count after `synth`.
 # Usage: scripts/yosys_area.sh TOP FILE.sv...   (files in dependency order, package first)
+# TU_YOSYS_PARAMS="Name Value ..." overrides parameters of TOP (Yosys chparam), e.g. "HasPom 0".
 set -euo pipefail
 top=${1:?usage: yosys_area.sh TOP FILES...}; shift
 command -v yosys >/dev/null || { echo '{"error": "yosys not installed"}'; exit 3; }
@@ -9,7 +10,10 @@ rtl=$(cd "$(dirname "$0")/../rtl" && pwd)
 inc="-I$rtl/common -I$rtl/generated"  # `include files (rtl/manifest.json include_dirs)
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-yosys -q -l "$log" -p "read_verilog -sv $inc $*; hierarchy -top $top; proc; flatten; opt; wreduce; opt_clean; tee -o /dev/stdout stat; synth -flatten -top $top; tee -o /dev/stdout stat" >/dev/null
+chparam=""
+params=(${TU_YOSYS_PARAMS:-})
+for ((i = 0; i + 1 < ${#params[@]}; i += 2)); do chparam+="chparam -set ${params[i]} ${params[i+1]} $top; "; done
+yosys -q -l "$log" -p "read_verilog -sv $inc $*; $chparam hierarchy -top $top; proc; flatten; opt; wreduce; opt_clean; tee -o /dev/stdout stat; synth -flatten -top $top; tee -o /dev/stdout stat" >/dev/null
 python3 - "$log" "$top" <<'PY'
 import json, re, sys
 text = open(sys.argv[1]).read()

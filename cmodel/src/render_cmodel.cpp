@@ -12,6 +12,7 @@
 #include "texture/trilinear_lod.hpp"
 #include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
+#include "texunit/shading.hpp"
 
 namespace tu::render {
 
@@ -91,7 +92,16 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
                           ? std::optional(relief::make_maps(s, o.material))
                           : std::nullopt);
   const auto mats = object_materials(s);
+  std::vector<std::optional<noise::ProcCodes>> procs;  // per procedural object: the unit's constants
+  for (const auto& p : procedural_objects(s, texs))
+    procs.push_back(opt.procedural && p ? std::optional(noise::quantise(*p)) : std::nullopt);
   const persp::RayCaster rays(s.camera);
+  const shading::Setup shade(s, opt.shade_model.value_or(shading::kUnitModel));
+  // The shading stage after the filter (brdf::shade::eval): every covered pixel of a lit scene.
+  auto shaded = [&](const Cover& c, int x, int y, img::Rgba8 t) {
+    if (!shade.active()) return t;
+    return brdf::shade::eval(shade.model(c.object), shade.fx_in(rays, c.object, c.triangle, x, y), t).rgba;
+  };
   // Rows on opt.threads threads, each into its own list, joined in row order. The uv_shift hook
   // may keep state (its call order is part of its contract): one thread then.
   std::vector<std::vector<PixelRecord>> rows(static_cast<size_t>(h));
@@ -120,12 +130,22 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       rec.u = std::ldexp(double(in.u), -fmt::kTexUvF);
       rec.v = std::ldexp(double(in.v), -fmt::kTexUvF);
       rec.b2_flags = in.b2.flags;
+      if (const auto& pc = procs[static_cast<size_t>(c.object)]) {
+        // The noise unit at B1's (u, v) with B2's lrho; beyond the B1 guard the footprint spans
+        // every octave: all weights 0, the field's mean.
+        rec.color = shaded(c, x, y, noise::proc_color_fx(*pc, noise::proc_value_fx(*pc, in.u, in.v, px.flag ? noise::kNoFootprint : in.b2.lrho)));
+        rec.texels = 0;
+        f.image.at(x, y) = rec.color;
+        pixels.push_back(rec);
+        continue;
+      }
       if (px.flag) {
         // B1 guard (q < 2^-PerspGuardLog2, beyond 1024x the unit distance): no texture
         // coordinates. The footprint there spans the texture: its mean, the 1x1 top level.
         rec.color = tx.levels.back().at(0, 0);
         rec.lod = top;
         rec.texels = 1;
+        rec.color = shaded(c, x, y, rec.color);
         f.image.at(x, y) = rec.color;
         pixels.push_back(rec);
         continue;
@@ -149,7 +169,8 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           break;
         }
         case scene::Filter::Ewa: {
-          const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels});
+          const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels,
+                                                  m.clip.empty() ? nullptr : &clip::variant(m.clip)});
           rec.color = r.color;
           rec.lod = r.level;
           rec.texels = static_cast<int>(r.texels_visited);
@@ -159,6 +180,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           break;
         }
       }
+      rec.color = shaded(c, x, y, rec.color);
       f.image.at(x, y) = rec.color;
       pixels.push_back(rec);
     }

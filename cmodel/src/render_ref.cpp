@@ -14,6 +14,7 @@
 #include "texture/trilinear_lod.hpp"
 #include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
+#include "texunit/shading.hpp"
 #include "texunit/convert.hpp"
 
 namespace tu::render {
@@ -98,7 +99,7 @@ std::vector<const scene::Material*> object_materials(const scene::Scene& s) {
   return m;
 }
 
-Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
+Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std::optional<brdf::Model> shade_model) {
   const int w = s.camera.width, h = s.camera.height;
   Frame f;
   f.image = img::Rgba8Image(w, h, kBackground);
@@ -116,7 +117,9 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
     reliefs.push_back(s.materials.at(o.material).relief ? std::optional(relief::make_maps(s, o.material))
                                                         : std::nullopt);
   const auto mats = object_materials(s);
+  const auto procs = procedural_objects(s, texs);
   const persp::RayCaster rays(s.camera);
+  const shading::Setup shade(s, shade_model.value_or(shading::kUnitModel));
   f.pixels.reserve(covered(cov));
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
@@ -135,6 +138,14 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
       const auto foot = ellipse::footprint(j, fp);
       rec.aniso = foot.aniso;
       rec.footprint_lod = foot.lod;
+      if (const auto& pp = procs[static_cast<size_t>(c.object)]) {
+        rec.color = procedural_ref(*pp, u, v, j);  // the noise instead of a texture fetch, then the shading
+        if (brdf::shade::RefIn si; shade.ref_in(rays, c.object, c.triangle, x, y, &si))
+          rec.color = brdf::shade::ref(shade.model(c.object), si, rec.color);
+        f.image.at(x, y) = rec.color;
+        f.pixels.push_back(rec);
+        continue;
+      }
       switch (filter.value_or(m.filter)) {
         case scene::Filter::Nearest:
           rec.color = tx.fetch(0, floor_i64(u), floor_i64(v));
@@ -151,13 +162,15 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter) {
           rec.texels = 8;
           break;
         case scene::Filter::Ewa: {
-          const auto r = ewa::filter_ref(tx, u, v, j, {m.max_aniso, ewa::kDefaultMaxTexels});
+          const auto r = ewa::filter_ref(tx, u, v, j, {m.max_aniso, ewa::kDefaultMaxTexels, !m.clip.empty()});
           rec.color = to8(r.color);
           rec.lod = r.level;
           rec.texels = r.texels_visited;
           break;
         }
       }
+      if (brdf::shade::RefIn si; shade.ref_in(rays, c.object, c.triangle, x, y, &si))
+        rec.color = brdf::shade::ref(shade.model(c.object), si, rec.color);
       f.image.at(x, y) = rec.color;
       f.pixels.push_back(rec);
     }

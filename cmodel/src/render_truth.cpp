@@ -8,6 +8,7 @@
 #include "pom/relief.hpp"
 #include "pom/relief_exact.hpp"
 #include "texunit/render.hpp"
+#include "texunit/shading.hpp"
 
 namespace tu::render {
 
@@ -62,9 +63,15 @@ Frame render_truth(const scene::Scene& s, const TruthOptions& opt) {
     reliefs.push_back(opt.relief && m.relief ? std::optional(ReliefCtx{relief::make_maps(s, o.material), m.relief->scale})
                                              : std::nullopt);
   }
+  // Procedural materials: the unfiltered field (all K octaves) at every sample.
+  auto procs = procedural_objects(s, texs);
+  for (auto& p : procs)
+    if (p) p->limit = false;
   // Sample offsets from the pixel centre: box = the pixel square, Gaussian = the EWA's pixel
   // model over the unit disc, w = (1 - r^2 / 2)^8 for r < 1 (ewa_ref.hpp).
   const bool gauss = opt.kernel == TruthKernel::Gaussian;
+  const shading::Setup shade(s);  // lit scenes: the float shading of the centre's surface point
+  const persp::RayCaster rays(s.camera);
   const double span = gauss ? 2.0 : 1.0;
   for (int y = 0; y < h; ++y) {
     if (opt.progress && (y % 8 == 0 || y == h - 1))
@@ -107,6 +114,12 @@ Frame render_truth(const scene::Scene& s, const TruthOptions& opt) {
               v = hit.v * H;
             }
           }
+          if (const auto& pp = procs[oi]) {
+            const auto pc = noise::proc_color_ref(*pp, noise::proc_value_ref(*pp, u, v, 0));
+            for (size_t ch = 0; ch < 4; ++ch) acc[ch] += wt * pc[ch];
+            wsum += wt;
+            continue;
+          }
           if (std::fabs(u) > 0x1p52 || std::fabs(v) > 0x1p52) continue;  // no integer texel
           const img::Rgba8 t = tx.fetch(0, static_cast<int64_t>(std::floor(u)), static_cast<int64_t>(std::floor(v)));
           acc[0] += wt * t.r, acc[1] += wt * t.g, acc[2] += wt * t.b, acc[3] += wt * t.a;
@@ -118,12 +131,19 @@ Frame render_truth(const scene::Scene& s, const TruthOptions& opt) {
       persp::eval_ref(k, x, y, &rec.u, &rec.v, &rec.lod);
       rec.lod = 0;
       rec.texels = n * n;
+      auto to8 = [&](double a) { return static_cast<uint8_t>(std::clamp(std::lround(a / wsum), 0L, 255L)); };
       if (wsum > 0) {
-        auto to8 = [&](double a) { return static_cast<uint8_t>(std::clamp(std::lround(a / wsum), 0L, 255L)); };
         rec.color = {to8(acc[0]), to8(acc[1]), to8(acc[2]), to8(acc[3])};
+      } else if (auto pp = procs[oi]) {  // every sample beyond the horizon: the field's mean
+        pp->limit = true;
+        const auto pc = noise::proc_color_ref(*pp, noise::proc_value_ref(*pp, 0, 0, INFINITY));
+        wsum = 1;
+        rec.color = {to8(pc[0]), to8(pc[1]), to8(pc[2]), to8(pc[3])};
       } else {
         rec.color = tx.levels.back().at(0, 0);  // every sample beyond the horizon: the texture mean
       }
+      if (brdf::shade::RefIn si; shade.ref_in(rays, c.object, c.triangle, x, y, &si))
+        rec.color = brdf::shade::ref(shade.model(c.object), si, rec.color);
       f.image.at(x, y) = rec.color;
       f.pixels.push_back(rec);
     }

@@ -1,5 +1,7 @@
 #include "texunit/scene.hpp"
 
+#include "gauss/clip.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -9,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "texunit/formats.hpp"
 #include "texunit/text.hpp"
 
 namespace tu::scene {
@@ -128,6 +131,11 @@ class Node {
                      std::to_string(hi) + "]");
     return static_cast<int>(x);
   }
+  bool boolean(const std::string& k) {
+    const json& v = raw(k);
+    if (!v.is_boolean()) fail_at(k, "expected true or false");
+    return v.get<bool>();
+  }
   std::string str(const std::string& k, std::optional<std::string> def = {},
                   const std::vector<std::string>& allowed = {}) {
     if (!has(k) && def) return used_.insert(k), *def;
@@ -238,6 +246,41 @@ TextureSpec parse_texture(Node n, const std::string& name, const std::string& ba
   return t;
 }
 
+Procedural parse_procedural(Node p) {
+  Procedural pr;
+  const auto kind = p.str("kind", {}, {"fbm", "smoke", "water"});
+  pr.kind = kind == "smoke" ? ProceduralKind::Smoke : kind == "water" ? ProceduralKind::Water : ProceduralKind::Fbm;
+  pr.octaves = p.integer("octaves", 1, fmt::kNoiseOctaves, fmt::kNoiseOctaves);
+  // f / texture width < 256 keeps the frequency code in u32.24 (docs/blocks/noise.md §5).
+  pr.frequency = p.num("frequency", 1.0 / 256, 128, 8.0);
+  pr.seed = p.integer("seed", 0, 255, 0);
+  pr.time = p.num("time", -1e6, 1e6, 0.0);
+  pr.speed = p.num("speed", 0, 256, pr.kind == ProceduralKind::Smoke ? 1.0 : 0.0);
+  pr.footprint_limit = p.has("footprint_limit") ? p.boolean("footprint_limit") : true;
+  if (pr.kind == ProceduralKind::Smoke) {
+    pr.threshold = p.num("threshold", 0, 0.99, pr.threshold);
+    pr.gain = p.num("gain", 0, 255, pr.gain);
+  }
+  if (pr.kind == ProceduralKind::Water) {
+    pr.amplitude = p.num("amplitude", 0, 16, pr.amplitude);
+    if (p.has("light")) {
+      const auto l = p.vec("light", 3, 1e6);
+      if (!(std::hypot(l[0], l[1], l[2]) > 0)) p.fail_at("light", "is the zero vector");
+      for (size_t i = 0; i < 3; ++i) pr.light[i] = l[i];
+    }
+  }
+  for (const char* k : {"color0", "color1"}) {
+    if (!p.has(k)) continue;
+    const auto c = p.vec(k, 3, 255);
+    for (size_t i = 0; i < 3; ++i)
+      if (c[i] < 0) p.fail_at(std::string(k) + "/" + std::to_string(i), "value is out of range [0, 255]");
+    auto& dst = std::string(k) == "color0" ? pr.color0 : pr.color1;
+    for (size_t i = 0; i < 3; ++i) dst[i] = c[i];
+  }
+  p.finish();
+  return pr;
+}
+
 Material parse_material(Node n, const std::string& name, const Scene& s) {
   Material m;
   m.name = name;
@@ -249,6 +292,10 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
   const auto w = n.str("weights", std::string("formula"), {"formula", "table1d", "table2d"});
   m.weights = w == "table1d" ? WeightSource::Table1d : w == "table2d" ? WeightSource::Table2d
                                                                       : WeightSource::Formula;
+  std::vector<std::string> clips{"off"};
+  for (const auto& v : clip::variants()) clips.push_back(v.name);
+  m.clip = n.str("clip", std::string("off"), clips);
+  if (m.clip == "off") m.clip.clear();
   m.max_aniso = n.num("max_aniso", 1, 64, 16.0);
   m.lod_bias = n.num("lod_bias", -16, 16, 0.0);
   m.min_lod = n.num("min_lod", 0, 12, 0.0);
@@ -269,6 +316,20 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
     r.finish();
     m.relief = rel;
   }
+  if (n.has("procedural")) m.procedural = parse_procedural(n.obj("procedural"));
+  if (n.has("specular")) {
+    Node sp = n.obj("specular");
+    Specular spec;
+    spec.model = sp.str("model", std::string("auto"), {"auto", "blinn", "schlick", "msh", "dsh", "scos2", "st16", "qr"});
+    spec.n = sp.integer("n", 1, 1000, 32);
+    const auto c = sp.vec("color", 3, 2, {{1, 1, 1}});
+    for (int k = 0; k < 3; ++k) {
+      if (c[static_cast<size_t>(k)] < 0) sp.fail_at("color/" + std::to_string(k), "is negative");
+      spec.color[k] = c[static_cast<size_t>(k)];
+    }
+    sp.finish();
+    m.specular = spec;
+  }
   n.finish();
   return m;
 }
@@ -287,6 +348,18 @@ Object parse_object(Node n, const Scene& s, int index, std::vector<std::string>*
     n.fail_at("vertices", "expected " + std::to_string(nv) + " vertices for a " + type);
   if (!uvs.is_array() || uvs.size() != nv)
     n.fail_at("uv", "expected " + std::to_string(nv) + " uv pairs for a " + type);
+  std::array<std::array<double, 3>, 4> normal{};
+  const bool has_normals = n.has("normals");
+  if (has_normals) {
+    const json& ns = n.raw("normals");
+    if (!ns.is_array() || ns.size() != nv)
+      n.fail_at("normals", "expected " + std::to_string(nv) + " normals for a " + type);
+    for (size_t i = 0; i < nv; ++i) {
+      const auto q = n.numbers(ns[i], "normals/" + std::to_string(i), 3, kMaxCoord);
+      if (!(std::hypot(q[0], q[1], q[2]) > 0)) n.fail_at("normals/" + std::to_string(i), "is the zero vector");
+      for (size_t k = 0; k < 3; ++k) normal[i][k] = q[k];
+    }
+  }
   persp::Vertex v[4];
   for (size_t i = 0; i < nv; ++i) {
     const auto p = n.numbers(vs[i], "vertices/" + std::to_string(i), 3, kMaxCoord);
@@ -310,6 +383,7 @@ Object parse_object(Node n, const Scene& s, int index, std::vector<std::string>*
       return;
     }
     o.triangles.push_back(t);
+    if (has_normals) o.normals.push_back({normal[static_cast<size_t>(a)], normal[static_cast<size_t>(b)], normal[static_cast<size_t>(c)]});
   };
   if (nv == 3) tri(0, 1, 2, "");
   else tri(0, 1, 2, "#0"), tri(0, 2, 3, "#1");
@@ -351,7 +425,29 @@ Scene parse(const std::string& text, const std::string& source, const std::strin
     Node b = root.obj("error_budget");
     s.budget.max_texel_err = b.num("max_texel_err", 1e-6, 16, s.budget.max_texel_err);
     s.budget.min_psnr_db = b.num("min_psnr_db", 0, 100, s.budget.min_psnr_db);
+    s.budget.max_brdf_mad = b.num("max_brdf_mad", 1e-6, 1, s.budget.max_brdf_mad);
     b.finish();
+  }
+  if (root.has("lights")) {
+    const json& ls = root.raw("lights");
+    if (!ls.is_array() || ls.size() > 1) root.fail_at("lights", "expected an array of at most one light (one shading pass)");
+    for (size_t i = 0; i < ls.size(); ++i) {
+      Node l(ls[i], "/lights/" + std::to_string(i), s.source);
+      Light light;
+      if (l.has("position") == l.has("direction")) l.fail("give exactly one of 'position' or 'direction'");
+      light.positional = l.has("position");
+      const auto p = light.positional ? l.vec("position", 3, kMaxCoord) : l.vec("direction", 3, kMaxCoord);
+      if (!light.positional && !(std::hypot(p[0], p[1], p[2]) > 0)) l.fail_at("direction", "is the zero vector");
+      for (int k = 0; k < 3; ++k) (light.positional ? light.position : light.direction)[k] = p[static_cast<size_t>(k)];
+      const auto c = l.vec("color", 3, 2, {{1, 1, 1}});
+      for (int k = 0; k < 3; ++k) {
+        if (c[static_cast<size_t>(k)] < 0) l.fail_at("color/" + std::to_string(k), "is negative");
+        light.color[k] = c[static_cast<size_t>(k)];
+      }
+      light.ambient = l.num("ambient", 0, 2, 0.2);
+      l.finish();
+      s.lights.push_back(light);
+    }
   }
   root.finish();
   return s;
@@ -404,8 +500,49 @@ const std::string& default_scene_json() {
 
 Scene default_scene() { return parse(default_scene_json(), "<default scene>", "."); }
 
+const std::string& procedural_scene_json() {
+  // docs/scenes/procedural.json, byte for byte (NoiseProc.DocsSceneIsTheEmbeddedOne).
+  static const std::string text = R"({
+  "texunit_scene": 1,
+  "camera": {"position": [0, 1.5, 0], "look_at": [0.6, 1.0, -10], "up": [0, 1, 0],
+             "fovy_deg": 60, "width": 128, "height": 96, "z_near": 0.1},
+  "textures": {
+    "grid": {"builtin": "checkerboard", "size": 256, "cells": 8, "wrap": "repeat"}
+  },
+  "materials": {
+    "marble": {"texture": "grid",
+               "procedural": {"kind": "fbm", "octaves": 4, "frequency": 8, "seed": 3,
+                              "color0": [40, 30, 20], "color1": [240, 220, 190]}},
+    "smoke": {"texture": "grid",
+              "procedural": {"kind": "smoke", "octaves": 4, "frequency": 4, "seed": 7, "time": 0,
+                             "speed": 0.5, "threshold": 0.15, "gain": 2.5,
+                             "color0": [30, 40, 90], "color1": [230, 230, 230]}}
+  },
+  "objects": [
+    {"name": "ground", "type": "quad", "material": "marble",
+     "vertices": [[-20, 0, -0.5], [20, 0, -0.5], [20, 0, -160], [-20, 0, -160]],
+     "uv": [[0, 0], [4, 0], [4, 16], [0, 16]]},
+    {"name": "smoke", "type": "quad", "material": "smoke",
+     "vertices": [[2.5, 0, -1.5], [3.5, 0, -40], [3.5, 4, -40], [2.5, 4, -1.5]],
+     "uv": [[0, 1], [8, 1], [8, 0], [0, 0]]}
+  ],
+  "error_budget": {"max_texel_err": 0.0625, "min_psnr_db": 35}
+}
+)";
+  return text;
+}
+
+Scene procedural_scene() { return parse(procedural_scene_json(), "<procedural scene>", "."); }
+
 Scene without_relief(Scene s) {
   for (auto& [name, m] : s.materials) m.relief.reset();
+  return s;
+}
+
+Scene with_clip(Scene s, const std::string& clip) {
+  const std::string c = clip == "off" ? std::string() : clip;
+  if (!c.empty()) clip::variant(c);  // validates the name
+  for (auto& [name, m] : s.materials) m.clip = c;
   return s;
 }
 
@@ -445,6 +582,16 @@ const char* to_string(Filter f) {
 const char* to_string(WeightSource w) {
   return w == WeightSource::Formula ? "formula" : w == WeightSource::Table1d ? "table1d" : "table2d";
 }
+const char* to_string(ProceduralKind k) {
+  return k == ProceduralKind::Smoke ? "smoke" : k == ProceduralKind::Water ? "water" : "fbm";
+}
+
+Scene at_time(Scene s, double t) {
+  for (auto& [name, m] : s.materials)
+    if (m.procedural) m.procedural->time += t;
+  return s;
+}
+
 const char* to_string(ReliefMethod m) {
   return m == ReliefMethod::PomFixed ? "pom_fixed" : m == ReliefMethod::PomAdaptive ? "pom_adaptive"
                                                                                     : "iterative";

@@ -108,6 +108,11 @@ package tu_formats_pkg;
   localparam int TexRamLog2Words = 20;  // simulation texel RAM of the texture-unit top: 2^N RGBA8 words
   localparam int PerspLatency = 8;  // per-pixel pipeline latency in cycles, II = 1
   localparam int PerspSetupLatency = 2;  // per-scanline set-up (tu_persp_setup) latency in cycles, II = 1
+  localparam int ObjSplatWF = 16;  // splat weight: fraction bits (product of two PerspUvF fractions)
+  localparam int ObjSplatWW = 17;  // splat weight code 0..2^ObjSplatWF: unsigned, exact
+  localparam int ObjAccWW = 40;  // pixel weight sum: unsigned, ObjSplatWF frac (< 2^24 samples), saturating
+  localparam int ObjAccCW = 48;  // pixel colour sum per channel: unsigned, ObjSplatWF frac, saturating
+  localparam int ObjUvCoefF = 32;  // uv plane coefficients u0, ui, uj (level-0 texels): signed int64, frac bits
   localparam int EllNumW = 48;  // derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac
   localparam int EllNumF = 32;
   localparam int EllNxW = 112;  // exact numerators (span set-up, tu_texture_unit): signed, 2 PerspF frac, |n| < 2^30
@@ -149,6 +154,9 @@ package tu_formats_pkg;
   localparam int EwaWsumW = 33;  // weight sum: unsigned, GaussSqF fraction bits (exact)
   localparam int EwaAccW = 41;  // per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)
   localparam int EwaNrmW = 23;  // weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1
+  localparam int EwaGradW = 24;  // border distance (clip on): g = K^T (xi, eta) = grad Q / 2, floor: signed, EwaGradF frac; band only
+  localparam int EwaGradF = 22;
+  localparam int EwaRootW = 24;  // border: r = floor(sqrt Q), |g| = floor(sqrt(gu^2 + gv^2)): unsigned, EwaGradF frac
   localparam int BrdfCW = 22;  // c = N.H input: signed, BrdfCF fraction bits; clamped to [0, 1] (c > 1 flags)
   localparam int BrdfCF = 20;
   localparam int BrdfClW = 21;  // clamped c and t = 1 - c (exact): unsigned, BrdfCF fraction bits
@@ -177,6 +185,14 @@ package tu_formats_pkg;
   localparam int BrdfQrLatency = 2;  // front + 1 - 0.786u, c w; II = 1
   localparam int BrdfBlinnLatency = 11;  // front, 10 square-and-multiply stages; II = 1
   localparam int BrdfDshLatency = 11;  // front, c^8 / (c+0.1)^8 squarings, w^2, E, two reciprocals; II = 1
+  localparam int ShadeVecW = 22;  // unit vectors N, L, H per pixel: signed, ShadeVecF fraction bits, nearest
+  localparam int ShadeVecF = 20;  //   (c = N.H to BrdfCF = 20 fraction bits: note 8.4)
+  localparam int ShadeDotW = 47;  // N.L, N.H: sum of three exact products, signed, 2 ShadeVecF fraction bits
+  localparam int ShadeColW = 9;  // light colour, specular colour ks*lc, ambient: unsigned, ShadeColF fraction
+  localparam int ShadeColF = 8;  //   bits (0 .. 511/256), round to nearest
+  localparam int ShadeDiffW = 9;  // diffuse d = clamp(N.L, 0, 1): unsigned, ShadeColF fraction bits, half up
+  localparam int ShadeEW = 10;  // E = ambient + lc d (lc d rounded half up to ShadeColF): unsigned, ShadeColF
+  localparam int ShadeWordW = 320;  // shade port word: {on, N, L, H, n, c_cut, ks*lc rgb, lc rgb, ambient}
   localparam int EwaDrainCycles = 5;  // tu_ewa_walk: clocks from the last texel to the accumulated sums
   localparam int EwaNormCycles = 6;  // tu_ewa_walk normalisation: mantissa, 4 reciprocal stages, round
   // filter engine of a span (schema.hpp TU_ENGINE_CODES)
@@ -209,9 +225,9 @@ package tu_formats_pkg;
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
   localparam int MaterialW = 56;  // material fields of a pixel
-  localparam int ReliefW = 58;  // material relief fields
+  localparam int ReliefW = 59;  // material relief fields
   localparam int TriW = 104;  // per-triangle footprint constants
   localparam int FpixW = 81;  // pixel on its way to the filter
-  localparam int PixW = 139;  // pixel before the relief stage
+  localparam int PixW = 140;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

@@ -15,4 +15,7 @@ package tu_unit_cfg_pkg;
   localparam int WtabLog2N = 8;
   localparam int Wtab2dLog2N = 5;
   localparam int PerspLanes = 1;
+  localparam bit HasShading = 1'b1;  // shading stage (tu_shade) after the filter
+  // brdf::Model code: 0 blinn, 1 schlick, 2 msh, 3 dsh, 4 scos2, 5 st16, 6 qr
+  localparam int ShadeModel = 2;  // msh
 endpackage

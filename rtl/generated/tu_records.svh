@@ -18,6 +18,7 @@ typedef struct packed {
 typedef struct packed {
   logic rel;  // POM relief on
   logic radapt;  // adaptive layer count
+  logic riter;  // iterative parallax (cap = rlayers)
   logic [tu_formats_pkg::PomNW-1:0] rlayers;  // layers (1..63)
   logic [tu_formats_pkg::PomSW-1:0] rscale;  // height scale S
   logic [tu_formats_pkg::TexAddrW-1:0] hbase;  // depth map: base word address

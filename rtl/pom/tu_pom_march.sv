@@ -49,7 +49,6 @@ module tu_pom_march #(
   localparam int UvW = tu_formats_pkg::PomUvW;
   localparam int NW = tu_formats_pkg::PomNW;
   localparam int TexLsb = tu_formats_pkg::PomUvF - 6;
-  localparam int TexAW = tu_formats_pkg::TexAddrW;
 
   typedef enum logic {Idle, Run} state_e;
   state_e state_q;
@@ -115,38 +114,11 @@ module tu_pom_march #(
   assign rd = fire_in || (state_q == Run && go);
 
   if (DepthPort != 0) begin : g_ram
-    logic [TexAW-1:0] base_q;
-    logic [3:0]       lw_q, lh_q;
-    logic [TexAW-1:0] base_a;
-    logic [3:0]       lw_a, lh_a;
-    logic [UvW-1:0]   ua, va;
-    logic [15:0]      tx, ty;
-    logic             rd_q;      // d_data_i answers last cycle's read
-    logic [7:0]       hold_q;    // the last read's data, while no new read is issued
-    always_comb begin
-      if (take_in) begin
-        ua = u_i; va = v_i; base_a = base_i; lw_a = lw_i; lh_a = lh_i;
-      end else begin
-        ua = nu; va = nv; base_a = base_q; lw_a = lw_q; lh_a = lh_q;
-      end
-      // floor(u * 2^lw) mod 2^lw: bits [PomUvF-1 : PomUvF-lw] of u (lw <= 15 < PomUvF)
-      tx = 16'(ua >> (5'(tu_formats_pkg::PomUvF) - 5'(lw_a))) & ((16'd1 << lw_a) - 16'd1);
-      ty = 16'(va >> (5'(tu_formats_pkg::PomUvF) - 5'(lh_a))) & ((16'd1 << lh_a) - 16'd1);
-    end
-    assign d_req_o  = rd;
-    assign d_addr_o = base_a + (TexAW'(ty) << lw_a) + TexAW'(tx);
-    assign h = rd_q ? d_data_i : hold_q;
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        base_q <= '0; lw_q <= '0; lh_q <= '0; rd_q <= 1'b0; hold_q <= '0;
-      end else begin
-        rd_q <= rd;
-        hold_q <= h;
-        if (fire_in) begin
-          base_q <= base_i; lw_q <= lw_i; lh_q <= lh_i;
-        end
-      end
-    end
+    tu_depth_port u_port (
+      .clk_i, .rst_ni, .take_i(take_in), .fire_i(fire_in), .rd_i(rd),
+      .u_i, .v_i, .base_i, .lw_i, .lh_i, .nu_i(nu), .nv_i(nv),
+      .d_req_o, .d_addr_o, .d_data_i, .h_o(h)
+    );
     logic unused_rom;
     assign unused_rom = ^{ax, ay};
   end else begin : g_rom

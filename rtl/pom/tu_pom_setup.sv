@@ -4,7 +4,8 @@
 //                reciprocal; S*Vx, S*Vy (exact)
 //   stages 1-4 : two tu_recip_core (1/a and 1/N)
 //   stage 5    : P  = round_half_up(S*Vxy * R_a >> (p_a + RecipOutF))
-//   stage 6    : dT = round_half_up(P * R_n >> (p_n + RecipOutF))
+//   stage 6    : dT = round_half_up(P * R_n >> (p_n + RecipOutF)); P itself on pu_o, pv_o (the
+//                iterative parallax's direction (P, 1), pom::ipx_dir_normalised)
 // side_i is carried along unchanged (the unit passes the pixel's T and wrap through it).
 `include "tu_assert.svh"
 module tu_pom_setup #(
@@ -24,6 +25,8 @@ module tu_pom_setup #(
   input  logic                                out_ready_i,
   output logic [tu_formats_pkg::PomUvW-1:0]   du_o,
   output logic [tu_formats_pkg::PomUvW-1:0]   dv_o,
+  output logic [tu_formats_pkg::PomUvW-1:0]   pu_o,
+  output logic [tu_formats_pkg::PomUvW-1:0]   pv_o,
   output logic [tu_formats_pkg::PomNW-1:0]    n_o,
   output logic                                back_o,
   output logic                                clamped_o,
@@ -119,7 +122,7 @@ module tu_pom_setup #(
   // ---- Stage 5: P = S*Vxy / a;  stage 6: dT = P / N ------------------------------------------
   logic [6:0]            sh_a, sh_n;
   logic signed [UvW-1:0] pu_q, pv_q;
-  logic [UvW-1:0]        du_q, dv_q;
+  logic [UvW-1:0]        du_q, dv_q, pu6_q, pv6_q;
   assign sh_a = 7'(pa_q[CoreLat]) + 7'(RF);
   assign sh_n = 7'(pn_q[CoreLat+1]) + 7'(RF);
 
@@ -130,11 +133,15 @@ module tu_pom_setup #(
       rn_q5 <= rn;
       du_q  <= mul_rsh(XsW'(pu_q), rn_q5, sh_n);
       dv_q  <= mul_rsh(XsW'(pv_q), rn_q5, sh_n);
+      pu6_q <= pu_q;
+      pv6_q <= pv_q;
     end
   end
 
   assign du_o      = du_q;
   assign dv_o      = dv_q;
+  assign pu_o      = pu6_q;
+  assign pv_o      = pv6_q;
   assign n_o       = n_q[Lat-1];
   assign back_o    = back_q[Lat-1];
   assign clamped_o = clamped_q[Lat-1];
@@ -144,5 +151,5 @@ module tu_pom_setup #(
   assign unused_stage_valid = ^stage_valid;
 
   // valid/ready protocol checks (rtl/common/tu_assert.svh)
-  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {du_o, dv_o, n_o, back_o, clamped_o, side_o})
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {du_o, dv_o, pu_o, pv_o, n_o, back_o, clamped_o, side_o})
 endmodule

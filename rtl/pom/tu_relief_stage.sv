@@ -4,17 +4,24 @@
 //   * B1 codes (TexUvF fraction, level-0 texels of a 2^lw x 2^lh colour texture) become texture
 //     repeats with PomUvF bits: the fraction of one repeat, f = (u << PomUvF-TexUvF) >> lw, is
 //     marched; the repeat part (u with its low lw + PomUvF - TexUvF bits cleared) is kept aside.
-//   * tu_pom_layers (N for pom_adaptive; the material's layers for pom_fixed) -> tu_pom_unit
-//     (DepthPort = 1: the depth map in the external RAM, wrap = 1).
+//   * tu_pom_layers (N for pom_adaptive; the material's layers for pom_fixed and the iteration cap
+//     of iterative parallax) -> tu_pom_unit (DepthPort = 1: the depth map in the external RAM,
+//     wrap = 1; its march engine for POM pixels, its iterative-parallax engine for iter_i pixels,
+//     HasPom / HasIterParallax from the unit configuration leave one out).
 //   * Back: u' = repeat part | (T'' << lw) >> (PomUvF - TexUvF) (floored when lw > 8: the
 //     shift_code of the C model).
 // Order: every pixel enters a sideband FIFO; shifted ones also enter the POM path. The output
 // joins the FIFO head with the POM result when the head is shifted (head-of-line), so pixels
 // without a shift stream at 1 pixel / clock and wait only for older shifted pixels.
 // Stream cycles without back-pressure: relief::stage_cycles (same structure, cycle by cycle).
+// flags_o: relief::ReliefFlag bits {back (POM), nonconv (iterative), Vz guard}; steps_o: march
+// steps or iterations (0 when not shifted).
 `include "tu_assert.svh"
 module tu_relief_stage #(
   parameter int SideW = 1,
+  // Relief engines (the texture-unit top passes tu_unit_cfg_pkg's HasPom / HasIterParallax)
+  parameter int HasPom = 1,
+  parameter int HasIterParallax = 1,
   // Sideband FIFO entries: more than the pixels the POM path holds (3 + 7 + 2 + 7), so a
   // full POM path never stalls the pixels behind it for lack of FIFO room.
   parameter int FifoDepth = 32
@@ -30,6 +37,7 @@ module tu_relief_stage #(
   input  logic                                 rel_i,
   input  logic                                 guard_i,
   input  logic                                 adaptive_i,
+  input  logic                                 iter_i,
   input  logic [tu_formats_pkg::PomNW-1:0]     layers_i,
   input  logic [tu_formats_pkg::PomSW-1:0]     scale_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]  hbase_i,
@@ -51,6 +59,8 @@ module tu_relief_stage #(
   output logic [tu_formats_pkg::PerspUvW-1:0]  u_o,
   output logic [tu_formats_pkg::PerspUvW-1:0]  v_o,
   output logic [tu_formats_pkg::PomNW-1:0]     n_o,
+  output logic [tu_formats_pkg::PomNW-1:0]     steps_o,
+  output logic [2:0]                           flags_o,
   output logic [SideW-1:0]                     side_o
 );
   localparam int UvW  = tu_formats_pkg::PerspUvW;
@@ -86,7 +96,7 @@ module tu_relief_stage #(
   endfunction
 
   // ---- Layers N (3 stages; its side data moves in lockstep under an identical controller) ----
-  localparam int LW = 2 * PF + 3 * VW + SW + NW + 1 + AW + 8;
+  localparam int LW = 2 * PF + 3 * VW + SW + NW + 2 + AW + 8;
   logic          l_valid, l_out_valid, l_en, m_ready;
   logic [NW-1:0] l_n;
   logic [LL-1:0] l_stage_valid;
@@ -105,7 +115,7 @@ module tu_relief_stage #(
   always_ff @(posedge clk_i) begin
     if (l_en) begin
       l_side_q[0] <= {frac(u_i, lw_i), frac(v_i, lh_i), vx_i, vy_i, vz_i, scale_i, layers_i,
-                      adaptive_i, hbase_i, hlw_i, hlh_i};
+                      adaptive_i && !iter_i, iter_i, hbase_i, hlw_i, hlh_i};
       for (int k = 1; k < LL; k++) l_side_q[k] <= l_side_q[k-1];
     end
   end
@@ -113,10 +123,10 @@ module tu_relief_stage #(
   logic [VW-1:0] m_vx, m_vy, m_vz;
   logic [SW-1:0] m_s;
   logic [NW-1:0] m_layers, m_n;
-  logic          m_adaptive;
+  logic          m_adaptive, m_iter;
   logic [AW-1:0] m_hbase;
   logic [3:0]    m_hlw, m_hlh;
-  assign {m_fu, m_fv, m_vx, m_vy, m_vz, m_s, m_layers, m_adaptive, m_hbase, m_hlw, m_hlh} =
+  assign {m_fu, m_fv, m_vx, m_vy, m_vz, m_s, m_layers, m_adaptive, m_iter, m_hbase, m_hlw, m_hlh} =
       l_side_q[LL-1];
   assign m_n = m_adaptive ? l_n : m_layers;
 
@@ -125,15 +135,16 @@ module tu_relief_stage #(
   logic [PUvW-1:0] p_u, p_v;
   logic [NW-1:0]   p_n, p_steps;
   logic [tu_formats_pkg::PomWW-1:0] p_w;
-  logic            p_discard, p_back, p_clamped;
-  tu_pom_unit #(.DepthPort(1), .SideW(NW)) u_pom (
+  logic            p_discard, p_back, p_clamped, p_nonconv, p_iter;
+  tu_pom_unit #(.DepthPort(1), .SideW(NW + 1), .HasMarch(HasPom), .HasIter(HasIterParallax)) u_pom (
     .clk_i, .rst_ni, .in_valid_i(l_out_valid), .in_ready_o(m_ready),
     .u_i(PUvW'(m_fu)), .v_i(PUvW'(m_fv)), .vx_i(m_vx), .vy_i(m_vy), .vz_i(m_vz), .s_i(m_s),
-    .n_i(m_n), .wrap_i(1'b1), .base_i(m_hbase), .lw_i(m_hlw), .lh_i(m_hlh), .side_i(m_n),
+    .n_i(m_n), .wrap_i(1'b1), .iter_i(m_iter), .base_i(m_hbase), .lw_i(m_hlw), .lh_i(m_hlh),
+    .side_i({m_iter, m_n}),
     .d_req_o, .d_addr_o, .d_data_i,
     .out_valid_o(p_valid), .out_ready_i(p_ready),
     .u_o(p_u), .v_o(p_v), .steps_o(p_steps), .w_o(p_w), .discard_o(p_discard),
-    .back_o(p_back), .clamped_o(p_clamped), .side_o(p_n)
+    .back_o(p_back), .clamped_o(p_clamped), .nonconv_o(p_nonconv), .side_o({p_iter, p_n})
   );
 
   // ---- Output: FIFO head, joined with the POM result when shifted ---------------------------
@@ -155,14 +166,17 @@ module tu_relief_stage #(
   assign u_o = h_shift ? put_back(h_u, p_u[PF-1:0], h_lw) : h_u;
   assign v_o = h_shift ? put_back(h_v, p_v[PF-1:0], h_lh) : h_v;
   assign n_o = h_shift ? p_n : '0;
+  assign steps_o = h_shift ? p_steps : '0;
+  // relief::ReliefFlag: the back flag is POM's (the iterative method reports no mirroring)
+  assign flags_o = h_shift ? {p_back && !p_iter, p_nonconv, p_clamped} : 3'b0;
 
-  // T'' is in [0, 1) (wrap); steps, weight and flags are the unit's diagnostics, discard is
-  // never raised with wrap; the layers controller twins tu_pom_layers' own.
+  // T'' is in [0, 1) (wrap); the weight is the unit's diagnostic, discard is never raised with
+  // wrap; the layers controller twins tu_pom_layers' own.
   logic unused;
-  assign unused = ^{p_u[PUvW-1:PF], p_v[PUvW-1:PF], p_steps, p_w, p_discard, p_back, p_clamped,
+  assign unused = ^{p_u[PUvW-1:PF], p_v[PUvW-1:PF], p_w, p_discard,
                     l_neg, l_ctrl_ready, l_ctrl_valid, l_stage_valid};
 
   // valid/ready protocol checks (rtl/common/tu_assert.svh)
-  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, n_o, side_o})
-  `TU_ASSERT_HANDSHAKE(InHandshake, in_valid_i, in_ready_o, {u_i, v_i, lw_i, lh_i, rel_i, guard_i, adaptive_i, layers_i, scale_i, hbase_i, hlw_i, hlh_i, side_i})
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, n_o, steps_o, flags_o, side_o})
+  `TU_ASSERT_HANDSHAKE(InHandshake, in_valid_i, in_ready_o, {u_i, v_i, lw_i, lh_i, rel_i, guard_i, adaptive_i, iter_i, layers_i, scale_i, hbase_i, hlw_i, hlh_i, side_i})
 endmodule

@@ -18,6 +18,7 @@ module tu_relief_stage_sim #(
   input  logic                                 rel_i,
   input  logic                                 guard_i,
   input  logic                                 adaptive_i,
+  input  logic                                 iter_i,
   input  logic [tu_formats_pkg::PomNW-1:0]     layers_i,
   input  logic [tu_formats_pkg::PomSW-1:0]     scale_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]  hbase_i,
@@ -38,6 +39,8 @@ module tu_relief_stage_sim #(
   output logic [tu_formats_pkg::PerspUvW-1:0]  u_o,
   output logic [tu_formats_pkg::PerspUvW-1:0]  v_o,
   output logic [tu_formats_pkg::PomNW-1:0]     n_o,
+  output logic [tu_formats_pkg::PomNW-1:0]     steps_o,
+  output logic [2:0]                           flags_o,
   output logic [SideW-1:0]                     side_o
 );
   logic                                d_req;
@@ -48,10 +51,10 @@ module tu_relief_stage_sim #(
 
   tu_relief_stage #(.SideW(SideW)) u_stage (
     .clk_i, .rst_ni, .in_valid_i, .in_ready_o, .u_i, .v_i, .lw_i, .lh_i, .rel_i, .guard_i,
-    .adaptive_i, .layers_i, .scale_i, .hbase_i, .hlw_i, .hlh_i, .side_i,
+    .adaptive_i, .iter_i, .layers_i, .scale_i, .hbase_i, .hlw_i, .hlh_i, .side_i,
     .view_valid_i(view_valid), .view_ready_o(view_ready), .view_ok_i, .vx_i, .vy_i, .vz_i, .vc_i,
     .d_req_o(d_req), .d_addr_o(d_addr), .d_data_i(d_word[7:0]),
-    .out_valid_o, .out_ready_i, .u_o, .v_o, .n_o, .side_o
+    .out_valid_o, .out_ready_i, .u_o, .v_o, .n_o, .steps_o, .flags_o, .side_o
   );
   tu_texel_ram #(.Words(Words)) u_ram (
     .clk_i, .rd_en_i(d_req), .rd_addr_i(d_addr), .rd_data_o(d_word),

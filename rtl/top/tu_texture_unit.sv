@@ -1,5 +1,5 @@
-// Texture unit top: B1 perspective divide -> B2 footprint -> B5 filter, one output per covered
-// pixel, valid/ready throughout (docs/blocks/ewa.md "RTL").
+// Texture unit top: B1 perspective divide -> B2 footprint -> B5 filter -> shading, one output per
+// covered pixel, valid/ready throughout (docs/blocks/ewa.md "RTL"; shading: docs/blocks/brdf.md §6).
 //
 //   span in ─► fork ─► tu_persp_setup (2) ─┐                ┌─► tu_persp (8) ──┐
 //                  └─► tu_num_setup (2) ───┴► join ─► tu_span_expand ─► fork ─┼─► tu_ellipse (5) ─┼► join ─► tu_fifo ─► filter ─► pixel out
@@ -10,6 +10,9 @@
 // log2 size, wrap), EWA weight source and texel cap. The fixed-latency B1/B2 pipelines stall as a
 // whole; the FIFO in front of the data-dependent filter lets them run ahead by FifoDepth pixels.
 // The filter reads texels through a port with 1-cycle read latency (tu_texel_ram in simulation).
+// With HasShading the filtered pixel is joined with its word from the shade port (the shader's
+// N, L, H, exponent, cut-off and colours, brdf::shade::pack) and shaded by tu_shade (II = 1, the
+// model's latency) on its way out.
 // Per-pixel records: tu_records.svh (generated from cmodel/include/texunit/schema.hpp).
 `include "tu_records.svh"
 `include "tu_assert.svh"
@@ -23,8 +26,15 @@ module tu_texture_unit #(
   parameter int HasBilinear  = {31'b0, tu_unit_cfg_pkg::HasBilinear},
   parameter int HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
   parameter int HasNearest   = {31'b0, tu_unit_cfg_pkg::HasNearest},
-  // 1: relief stage (tu_relief_stage: POM, fixed or adaptive layers) between B1 and the filter
+  // 1: relief stage (tu_relief_stage) between B1 and the filter, with its POM march (fixed or
+  // adaptive layers) and iterative-parallax engines
   parameter int HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
+  // 1: shading stage (tu_shade: one light, diffuse + the BRDF model ShadeModel, brdf::Model codes)
+  // after the filter; every output pixel takes one word from the shade port
+  parameter int HasShading  = {31'b0, tu_unit_cfg_pkg::HasShading},
+  parameter int ShadeModel  = tu_unit_cfg_pkg::ShadeModel,
+  parameter int HasPom      = {31'b0, tu_unit_cfg_pkg::HasPom},
+  parameter int HasIterParallax = {31'b0, tu_unit_cfg_pkg::HasIterParallax},
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -68,6 +78,7 @@ module tu_texture_unit #(
   // material relief (POM): on, adaptive layers, layers (1..63), height scale S, depth map
   input  logic                                  rel_i,
   input  logic                                  radapt_i,
+  input  logic                                  riter_i,   // iterative parallax (cap = rlayers)
   input  logic [tu_formats_pkg::PomNW-1:0]      rlayers_i,
   input  logic [tu_formats_pkg::PomSW-1:0]      rscale_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]   hbase_i,
@@ -85,6 +96,10 @@ module tu_texture_unit #(
   output logic                                  d_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   d_addr_o,
   input  logic [7:0]                            d_data_i,
+  // per-pixel shade word (brdf::shade::pack), one per output pixel in pixel order (HasShading)
+  input  logic                                  shade_valid_i,
+  output logic                                  shade_ready_o,
+  input  logic [tu_formats_pkg::ShadeWordW-1:0] shade_i,
   // texel port (1-cycle read latency)
   output logic                                  tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   tex_addr_o,
@@ -101,7 +116,9 @@ module tu_texture_unit #(
   output logic [4:0]                            flags_o,   // filter flags (tu_ewa, ewa::fx::Flag)
   output logic [4:0]                            eflags_o,  // B2 flags
   output logic [1:0]                            pflags_o,  // B1: {span set-up overflow, guard}
-  output logic [tu_formats_pkg::PomNW-1:0]      rn_o       // relief layers used (0: not shifted)
+  output logic [tu_formats_pkg::PomNW-1:0]      rn_o,      // relief layers used (0: not shifted)
+  output logic [tu_formats_pkg::PomNW-1:0]      rsteps_o,  // relief march steps or iterations
+  output logic [2:0]                            rflags_o   // relief::ReliefFlag bits
 );
   localparam int PW = tu_formats_pkg::PerspPW;
   localparam int QW = tu_formats_pkg::PerspQW;
@@ -141,6 +158,7 @@ module tu_texture_unit #(
     in_mat.filt    = filt_i;
     in_rel.rel     = rel_i;
     in_rel.radapt  = radapt_i;
+    in_rel.riter   = riter_i;
     in_rel.rlayers = rlayers_i;
     in_rel.rscale  = rscale_i;
     in_rel.hbase   = hbase_i;
@@ -260,16 +278,18 @@ module tu_texture_unit #(
   assign rs_in = {sb_pix.fpix, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_tlod, b2_flags};
   logic          rs_valid, rs_ready;
   logic [UW-1:0] rs_u, rs_v;
-  logic [tu_formats_pkg::PomNW-1:0] rs_n;
+  localparam int RrW = 2 * tu_formats_pkg::PomNW + 3;  // relief result: n, steps, flags
+  logic [tu_formats_pkg::PomNW-1:0] rs_n, rs_steps;
+  logic [2:0]                       rs_flags;
   if (HasRelief != 0) begin : g_relief
-    tu_relief_stage #(.SideW(RSideW)) u_relief (
+    tu_relief_stage #(.SideW(RSideW), .HasPom(HasPom), .HasIterParallax(HasIterParallax)) u_relief (
       .clk_i, .rst_ni, .in_valid_i(pj_valid), .in_ready_o(pj_ready),
       .u_i(b1_u), .v_i(b1_v), .lw_i(sb_pix.fpix.mat.tlw), .lh_i(sb_pix.fpix.mat.tlh), .rel_i(pj_rel.rel),
-      .guard_i(b1_flag), .adaptive_i(pj_rel.radapt), .layers_i(pj_rel.rlayers), .scale_i(pj_rel.rscale),
+      .guard_i(b1_flag), .adaptive_i(pj_rel.radapt), .iter_i(pj_rel.riter), .layers_i(pj_rel.rlayers), .scale_i(pj_rel.rscale),
       .hbase_i(pj_rel.hbase), .hlw_i(pj_rel.hlw), .hlh_i(pj_rel.hlh), .side_i(rs_in),
       .view_valid_i, .view_ready_o, .view_ok_i, .vx_i, .vy_i, .vz_i, .vc_i,
       .d_req_o, .d_addr_o, .d_data_i,
-      .out_valid_o(rs_valid), .out_ready_i(rs_ready), .u_o(rs_u), .v_o(rs_v), .n_o(rs_n),
+      .out_valid_o(rs_valid), .out_ready_i(rs_ready), .u_o(rs_u), .v_o(rs_v), .n_o(rs_n), .steps_o(rs_steps), .flags_o(rs_flags),
       .side_o(rs_out)
     );
   end else begin : g_no_relief
@@ -278,6 +298,8 @@ module tu_texture_unit #(
     assign rs_u         = b1_u;
     assign rs_v         = b1_v;
     assign rs_n         = '0;
+    assign rs_steps     = '0;
+    assign rs_flags     = '0;
     assign rs_out       = rs_in;
     assign view_ready_o = 1'b0;
     assign d_req_o      = 1'b0;
@@ -287,24 +309,24 @@ module tu_texture_unit #(
   end
 
   // ---------------- FIFO in front of the filter ----------------
-  localparam int FW = RSideW + 2 * UW + tu_formats_pkg::PomNW;
+  localparam int FW = RSideW + 2 * UW + RrW;
   logic          fq_valid, fq_ready;
   logic [FW-1:0] fq_data;
   tu_fifo #(.Width(FW), .Depth(FifoDepth)) u_fifo (
     .clk_i, .rst_ni, .in_valid_i(rs_valid), .in_ready_o(rs_ready),
-    .in_data_i({rs_out, rs_u, rs_v, rs_n}),
+    .in_data_i({rs_out, rs_u, rs_v, rs_n, rs_steps, rs_flags}),
     .out_valid_o(fq_valid), .out_ready_i(fq_ready), .out_data_o(fq_data)
   );
   tu_fpix_t      f_pix;
   tu_material_t  f_mat;
   logic          f_guard;
   logic [UW-1:0] f_u, f_v;
-  logic [tu_formats_pkg::PomNW-1:0] f_rn;
+  logic [RrW-1:0] f_rr;
   logic [tu_formats_pkg::EllCoefW-1:0] f_ae, f_ce, f_be;
   logic [tu_formats_pkg::EllLogW-1:0]  f_lmaj, f_lmin;
   logic [tu_formats_pkg::EllLodW-1:0]  f_lod, f_tlod;
   logic [4:0]                          f_eflags;
-  assign {f_pix, f_guard, f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_tlod, f_eflags, f_u, f_v, f_rn} = fq_data;
+  assign {f_pix, f_guard, f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_tlod, f_eflags, f_u, f_v, f_rr} = fq_data;
   assign f_mat = f_pix.mat;
 
   // ---------------- filter ----------------
@@ -314,7 +336,16 @@ module tu_texture_unit #(
   // all its pixels (cur_q: the engine of the pixels in flight, inflight_q: how many), so outputs
   // stay in order and only one engine drives the texel port. Switches happen at material changes
   // only (ewa::stream_cycles counts the drain).
-  localparam int OsW = 2 * XW + 2 + 5 + tu_formats_pkg::PomNW;
+  localparam int OsW = 2 * XW + 2 + 5 + RrW;
+  // the filtered pixel before the shading stage
+  logic          p_valid, p_ready;
+  logic [XW-1:0] p_x, p_y;
+  logic [31:0]   p_rgba;
+  logic [3:0]    p_level;
+  logic [tu_formats_pkg::EwaCountW-1:0] p_visited, p_inside;
+  logic [4:0]    p_flags, p_eflags;
+  logic [1:0]    p_pflags;
+  logic [RrW-1:0] p_rr;  // relief n, steps, flags
   localparam logic [1:0] EngBil = tu_formats_pkg::EngBilinear, EngEwa = tu_formats_pkg::EngEwa,
                          EngTri = tu_formats_pkg::EngTrilinear, EngNst = tu_formats_pkg::EngNearest;
   localparam logic [1:0] EngFirst = (HasEwa != 0) ? EngEwa : (HasTriFilter != 0) ? EngTri :
@@ -356,17 +387,17 @@ module tu_texture_unit #(
   assign fire_flt  = fq_valid && fq_ready;
   tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
     .clk_i, .rst_ni, .in_valid_i(fq_valid && can_go && eng_ready), .in_ready_o(os_in_ready),
-    .in_data_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rn}), .out_valid_o(os_valid),
-    .out_ready_i(out_ready_i && flt_valid), .out_data_o(os_data)
+    .in_data_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rr}), .out_valid_o(os_valid),
+    .out_ready_i(p_ready && flt_valid), .out_data_o(os_data)
   );
   // cur_q is the engine of the oldest pixel in flight (set when it accepted its first).
   logic eng_in_valid;
   assign eng_in_valid = fq_valid && can_go && os_in_ready;
   assign flt_valid   = valid_of[cur_q];
-  assign out_valid_o = flt_valid && os_valid;
-  assign fire_out    = out_valid_o && out_ready_i;
-  assign {x_o, y_o, pflags_o, eflags_o, rn_o} = os_data;
-  assign rgba_o      = cur_rgba;
+  assign p_valid     = flt_valid && os_valid;
+  assign fire_out    = p_valid && p_ready;
+  assign {p_x, p_y, p_pflags, p_eflags, p_rr} = os_data;
+  assign p_rgba      = cur_rgba;
   // Only the engine with pixels in flight reads texels.
   assign tex_req_o   = req_of[cur_q];
   assign tex_addr_o  = cur_addr;
@@ -391,7 +422,7 @@ module tu_texture_unit #(
       .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
       .clamp_i(f_mat.tclamp), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap),
       .tex_req_o(ewa_req), .tex_addr_o(ewa_addr), .tex_data_i,
-      .out_valid_o(ewa_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngEwa),
+      .out_valid_o(ewa_valid), .out_ready_i(p_ready && os_valid && cur_q == EngEwa),
       .rgba_o(ewa_rgba), .level_o(ewa_level), .visited_o(ewa_visited), .inside_o(ewa_inside),
       .flags_o(ewa_flags)
     );
@@ -413,7 +444,7 @@ module tu_texture_unit #(
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngBil), .in_ready_o(bil_in_ready),
       .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .level_i(4'd0), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
       .clamp_i(f_mat.tclamp), .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i,
-      .out_valid_o(bil_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngBil), .rgba_o(bil_rgba)
+      .out_valid_o(bil_valid), .out_ready_i(p_ready && os_valid && cur_q == EngBil), .rgba_o(bil_rgba)
     );
   end else begin : g_no_bilinear
     assign bil_in_ready = 1'b0;
@@ -427,7 +458,7 @@ module tu_texture_unit #(
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngTri), .in_ready_o(tri_in_ready),
       .u_i(f_u), .v_i(f_v), .lod_i(f_tlod), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
       .clamp_i(f_mat.tclamp), .tex_req_o(tri_req), .tex_addr_o(tri_addr), .tex_data_i,
-      .out_valid_o(tri_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngTri), .rgba_o(tri_rgba),
+      .out_valid_o(tri_valid), .out_ready_i(p_ready && os_valid && cur_q == EngTri), .rgba_o(tri_rgba),
       .level_o(tri_level)
     );
   end else begin : g_no_trilinear
@@ -445,7 +476,7 @@ module tu_texture_unit #(
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngNst), .in_ready_o(nst_in_ready),
       .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh), .clamp_i(f_mat.tclamp),
       .tex_req_o(nst_req), .tex_addr_o(nst_addr), .tex_data_i,
-      .out_valid_o(nst_valid), .out_ready_i(out_ready_i && os_valid && cur_q == EngNst), .rgba_o(nst_rgba)
+      .out_valid_o(nst_valid), .out_ready_i(p_ready && os_valid && cur_q == EngNst), .rgba_o(nst_rgba)
     );
   end else begin : g_no_nearest
     assign nst_in_ready = 1'b0;
@@ -456,23 +487,49 @@ module tu_texture_unit #(
   end
   // Bilinear pixels: level 0, four texels; trilinear: floor(lod), eight; nearest: level 0, one;
   // no EWA flags.
-  assign level_o   = cur_q == EngEwa ? ewa_level : cur_q == EngTri ? tri_level : '0;
-  assign visited_o = cur_q == EngEwa ? ewa_visited
+  assign p_level   = cur_q == EngEwa ? ewa_level : cur_q == EngTri ? tri_level : '0;
+  assign p_visited = cur_q == EngEwa ? ewa_visited
                                      : tu_formats_pkg::EwaCountW'(cur_q == EngTri ? 8 : cur_q == EngNst ? 1 : 4);
-  assign inside_o  = cur_q == EngEwa ? ewa_inside : '0;
-  assign flags_o   = cur_q == EngEwa ? ewa_flags : '0;
+  assign p_inside  = cur_q == EngEwa ? ewa_inside : '0;
+  assign p_flags   = cur_q == EngEwa ? ewa_flags : '0;
+
+
+  // ---------------- shading ----------------
+  // The filtered pixel joined with its shade word; every other output field rides along.
+  localparam int ShSideW = 2 * XW + 4 + 2 * tu_formats_pkg::EwaCountW + 5 + 5 + 2 + RrW;
+  if (HasShading != 0) begin : g_shade
+    logic sh_in_ready;
+    assign p_ready       = sh_in_ready && shade_valid_i;
+    assign shade_ready_o = sh_in_ready && p_valid;
+    tu_shade #(.Model(ShadeModel), .SideW(ShSideW)) u_shade (
+      .clk_i, .rst_ni, .in_valid_i(p_valid && shade_valid_i), .in_ready_o(sh_in_ready),
+      .rgba_i(p_rgba), .shade_i,
+      .side_i({p_x, p_y, p_level, p_visited, p_inside, p_flags, p_eflags, p_pflags, p_rr}),
+      .out_valid_o, .out_ready_i, .rgba_o,
+      .side_o({x_o, y_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o, rsteps_o, rflags_o})
+    );
+  end else begin : g_no_shade
+    assign p_ready       = out_ready_i;
+    assign shade_ready_o = 1'b0;
+    assign out_valid_o   = p_valid;
+    assign {x_o, y_o, rgba_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o, rsteps_o, rflags_o} =
+           {p_x, p_y, p_rgba, p_level, p_visited, p_inside, p_flags, p_eflags, p_pflags, p_rr};
+    logic unused_shade;
+    assign unused_shade = ^{shade_valid_i, shade_i};
+  end
 
   logic unused;
   assign unused = ^{b2_eexp, b2_fm, b2_fexp, ex_pix.fpix.x};  // x slot: filled per pixel
 
   // valid/ready protocol checks (rtl/common/tu_assert.svh)
-  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {x_o, y_o, rgba_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o})
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {x_o, y_o, rgba_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o, rsteps_o, rflags_o})
   // The span's fields in three groups: Verilator 5.006 emits broken C++ for the sampled copy of
   // one 1,300-bit value under --assert.
   `TU_ASSERT_HANDSHAKE(InHandshakeB1, in_valid_i, in_ready_o, {a_i, b_i, c_i, d_i, e_i, f_i, g_i, h_i, i_i, x0_i, x1_i, y_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeB2, in_valid_i, in_ready_o, {kux_i, kvx_i, kuy_i, kvy_i, m_i, nn_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, tclamp_i,
-                                                                 wsrc_i, cap_i, filt_i, rel_i, radapt_i, rlayers_i, rscale_i, hbase_i,
+                                                                 wsrc_i, cap_i, filt_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
                                                                  hlw_i, hlh_i})
   `TU_ASSERT_HANDSHAKE(ViewHandshake, view_valid_i, view_ready_o, {view_ok_i, vx_i, vy_i, vz_i, vc_i})
+  `TU_ASSERT_HANDSHAKE(ShadeHandshake, shade_valid_i, shade_ready_o, {shade_i})
 endmodule

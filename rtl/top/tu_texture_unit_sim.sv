@@ -1,13 +1,16 @@
 // Simulation top of the texture unit: tu_texture_unit with the texel RAM, the depth-map RAM and
-// the per-pixel view stream models attached; the testbench loads every texture, every relief
-// depth map and the view words through the write port (ram_sel_i: 0 texels, 1 depth, 2 views)
-// during reset, before the spans.
+// the per-pixel view and shade stream models attached; the testbench loads every texture, every
+// relief depth map, the view words and the shade words through the write port (ram_sel_i:
+// 0 texels, 1 depth, 2 views, 3 shade words) during reset, before the spans.
 module tu_texture_unit_sim #(
   parameter int HasEwa      = {31'b0, tu_unit_cfg_pkg::HasEwa},
   parameter int HasBilinear = {31'b0, tu_unit_cfg_pkg::HasBilinear},
   parameter int HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
   parameter int HasNearest = {31'b0, tu_unit_cfg_pkg::HasNearest},
   parameter int HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
+  parameter int HasShading  = {31'b0, tu_unit_cfg_pkg::HasShading},
+  parameter int HasPom      = {31'b0, tu_unit_cfg_pkg::HasPom},
+  parameter int HasIterParallax = {31'b0, tu_unit_cfg_pkg::HasIterParallax},
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words
 ) (
   input  logic                                  clk_i,
@@ -53,6 +56,7 @@ module tu_texture_unit_sim #(
   input  logic [1:0]                            filt_i,
   input  logic                                  rel_i,
   input  logic                                  radapt_i,
+  input  logic                                  riter_i,
   input  logic [tu_formats_pkg::PomNW-1:0]      rlayers_i,
   input  logic [tu_formats_pkg::PomSW-1:0]      rscale_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]   hbase_i,
@@ -70,7 +74,9 @@ module tu_texture_unit_sim #(
   output logic [4:0]                            flags_o,   // filter flags (tu_ewa, ewa::fx::Flag)
   output logic [4:0]                            eflags_o,  // B2 flags
   output logic [1:0]                            pflags_o,  // B1: {span set-up overflow, guard}
-  output logic [tu_formats_pkg::PomNW-1:0]      rn_o       // relief layers used
+  output logic [tu_formats_pkg::PomNW-1:0]      rn_o,      // relief layers used
+  output logic [tu_formats_pkg::PomNW-1:0]      rsteps_o,  // relief march steps or iterations
+  output logic [2:0]                            rflags_o   // relief::ReliefFlag bits
 );
   logic                                tex_req;
   logic [tu_formats_pkg::TexAddrW-1:0] tex_addr;
@@ -80,21 +86,25 @@ module tu_texture_unit_sim #(
   logic [63:0]                         view;
   logic [tu_formats_pkg::TexAddrW-1:0] d_addr;
   logic [31:0]                         d_word;
+  logic                                 shade_valid, shade_ready;
+  logic [tu_formats_pkg::ShadeWordW-1:0] shade;
   tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear), .HasTriFilter(HasTriFilter), .HasNearest(HasNearest),
-                    .HasRelief(HasRelief)) u_tu (
+                    .HasRelief(HasRelief), .HasShading(HasShading),
+                    .HasPom(HasPom), .HasIterParallax(HasIterParallax)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
     .kuy_i, .kvy_i, .m_i, .nn_i, .dm_i, .dexp_i, .laniso_i, .maxlod_i, .lbias_i, .lminlod_i, .lmaxlod_i,
     .tbase_i, .tlw_i, .tlh_i, .tclamp_i, .wsrc_i, .cap_i, .filt_i,
-    .rel_i, .radapt_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i,
+    .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i,
     .view_valid_i(view_valid), .view_ready_o(view_ready), .view_ok_i(view[3 * VzW + tu_formats_pkg::PomCW]),
     .vx_i(view[2 * VzW + tu_formats_pkg::PomCW +: VzW]), .vy_i(view[VzW + tu_formats_pkg::PomCW +: VzW]),
     .vz_i(view[tu_formats_pkg::PomCW +: VzW]), .vc_i(view[0 +: tu_formats_pkg::PomCW]),
     .d_req_o(d_req), .d_addr_o(d_addr), .d_data_i(d_word[7:0]),
+    .shade_valid_i(shade_valid), .shade_ready_o(shade_ready), .shade_i(shade),
     .out_valid_o, .out_ready_i,
     .x_o, .y_o, .rgba_o, .level_o, .visited_o, .inside_o, .flags_o, .eflags_o,
-    .pflags_o, .rn_o,
+    .pflags_o, .rn_o, .rsteps_o, .rflags_o,
     .tex_req_o(tex_req), .tex_addr_o(tex_addr), .tex_data_i(tex_data)
   );
   tu_texel_ram #(.Words(Words)) u_ram (
@@ -109,6 +119,10 @@ module tu_texture_unit_sim #(
   tu_view_src #(.Words(Words)) u_views (
     .clk_i, .rst_ni, .wr_en_i(ram_we_i && ram_sel_i == 2'd2), .wr_addr_i(ram_waddr_i),
     .wr_data_i(ram_wdata_i), .out_valid_o(view_valid), .out_ready_i(view_ready), .out_data_o(view)
+  );
+  tu_view_src #(.Words(1 << 16), .DataW(tu_formats_pkg::ShadeWordW)) u_shades (
+    .clk_i, .rst_ni, .wr_en_i(ram_we_i && ram_sel_i == 2'd3), .wr_addr_i(ram_waddr_i),
+    .wr_data_i(ram_wdata_i), .out_valid_o(shade_valid), .out_ready_i(shade_ready), .out_data_o(shade)
   );
   logic unused;
   assign unused = ^{d_word[31:8], view[63:3 * VzW + tu_formats_pkg::PomCW + 1]};

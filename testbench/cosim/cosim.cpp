@@ -48,10 +48,10 @@ std::string hex_row(const Row& r) {
   for (size_t i = 0; i < r.size(); ++i) os << (i ? " " : "") << std::hex << r[i];
   return os.str();
 }
-std::string num(double x) {
-  if (std::isinf(x)) return "null";
+std::string num(double x, int digits = 6) {
+  if (!std::isfinite(x)) return "null";
   std::ostringstream os;
-  os << std::setprecision(6) << x;
+  os << std::setprecision(digits) << x;
   return os.str();
 }
 }  // namespace
@@ -63,10 +63,12 @@ std::string Report::json() const {
      << ", \"extra_outputs\": " << extra_outputs << ", \"in_order\": " << (in_order ? "true" : "false")
      << ", \"hung\": " << (hung ? "true" : "false") << ", \"max_abs_err\": " << num(max_abs_err)
      << ", \"max_ulp_err\": " << num(max_ulp_err) << ", \"rms_err\": " << num(rms_err)
+     << ", \"err_points\": " << err_points << ", \"err_sum_sq\": " << num(err_sum_sq, 17)
      << ", \"flagged\": " << flagged << ", \"latency_cycles\": " << latency_cycles
      << ", \"ii_cycles\": " << num(ii_cycles) << ", \"sim_cycles\": " << sim_cycles
      << ", \"stall_prob\": " << num(stall_prob) << ", \"wall_s\": " << num(wall_s)
      << (err_metric.empty() ? "" : ", \"" + err_metric + "\": " + num(max_abs_err))
+     << (shard.empty() ? "" : ", \"shard\": \"" + shard + "\"")
      << ", \"ok\": " << (ok() ? "true" : "false") << "}";
   return os.str();
 }
@@ -120,13 +122,13 @@ Report run(const vec::VectorFile& vf, const Options& opt) {
     if (model != expected) {
       ++rep.model_mismatches;
       if (rep.first_mismatch.empty())
-        rep.first_mismatch = "vector " + std::to_string(i) + ": C model gives " + hex_row(model) +
+        rep.first_mismatch = "vector " + std::to_string(i + opt.first_vector) + ": C model gives " + hex_row(model) +
                              ", file expects " + hex_row(expected);
     }
     if (rr.outputs[i] != expected) {
       ++rep.mismatches;
       if (rep.first_mismatch.empty())
-        rep.first_mismatch = "vector " + std::to_string(i) + " (in " + hex_row(inputs[i]) +
+        rep.first_mismatch = "vector " + std::to_string(i + opt.first_vector) + " (in " + hex_row(inputs[i]) +
                              "): RTL gives " + hex_row(rr.outputs[i]) + ", expected " +
                              hex_row(expected);
     }
@@ -142,6 +144,8 @@ Report run(const vec::VectorFile& vf, const Options& opt) {
   }
   rep.in_order = rep.mismatches == 0;
   rep.rms_err = n_err ? std::sqrt(sum_sq / static_cast<double>(n_err)) : 0;
+  rep.err_points = n_err;
+  rep.err_sum_sq = sum_sq;
   return rep;
 }
 

@@ -43,6 +43,8 @@ struct Report {
   bool hung = false;
   bool in_order = true;
   double max_abs_err = 0, max_ulp_err = 0, rms_err = 0;  // RTL output vs float reference
+  uint64_t err_points = 0;  // outputs in the statistics (not flagged)
+  double err_sum_sq = 0;    // their sum of squared errors: what `texunit merge` needs for rms
   uint64_t flagged = 0;
   uint64_t latency_cycles = 0;
   double ii_cycles = 0;
@@ -51,6 +53,7 @@ struct Report {
   double wall_s = 0;
   std::string first_mismatch;  // human-readable description of the first mismatch
   std::string err_metric;      // block's extra key for max_abs_err (empty: none)
+  std::string shard;           // "K/N" for a `--shard` run (texunit merge combines them); empty: whole
   bool ok() const {
     return mismatches == 0 && model_mismatches == 0 && extra_outputs == 0 && !hung &&
            outputs == vectors;
@@ -62,6 +65,7 @@ struct Options {
   RunOptions run;
   size_t timing_vectors = 256;  // stall-free prefix used for latency and II
   std::string rtl;  // RTL variant on the file's vectors (e.g. perlin3d_serial); empty: the block's own
+  uint64_t first_vector = 0;  // index of the file's first row in the whole set (a shard's offset)
 };
 
 // Throws std::invalid_argument when the file's block or fields do not match the block.

@@ -5,10 +5,12 @@
 // ewa::stream_cycles equals Verilator's count on stall-free streams (engine and full top).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "cosim_checks.hpp"
 #include "ewa/ewa_cycles.hpp"
+#include "pom/relief.hpp"
 #include "texture_unit_rtl.hpp"
 
 namespace {
@@ -221,16 +223,90 @@ TEST(TextureUnitRtl, ReliefSceneEqualsCModelWithStalls) {
   EXPECT_GT(differ, 100u);
   std::printf("relief: %zu px, %zu shifted, %zu differ from the flat render, %llu cycles (30%% stalls)\n",
               r.frame.pixels.size(), shifted, differ, (unsigned long long)r.cycles);
-  // Iterative parallax is not in the RTL unit: a message naming the material's field.
-  auto it = s;
-  it.materials.at("wall").relief->method = scene::ReliefMethod::Iterative;
+  // Without stalls the cycles are those of the unit's cycle model (front, relief stage, filter).
   o.relief = true;
-  try {
-    cosim::render_rtl(it, o);
-    ADD_FAILURE() << "iterative relief accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("/materials/wall/relief/method"), std::string::npos) << e.what();
+  o.stall_prob = 0;
+  const auto r0 = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r0.ok()) << r0.first_mismatch;
+  std::printf("relief (pom_adaptive 32): cycles measured %llu predicted %llu\n", (unsigned long long)r0.cycles,
+              (unsigned long long)r0.predicted_cycles);
+  EXPECT_EQ(r0.cycles, r0.predicted_cycles);
+}
+
+// Iterative parallax (seed 002) through the relief stage's iterative engine: the default scene's
+// wall with iterative relief (cap 8 and 32), every pixel == render_cmodel (colour, layers, steps,
+// relief flags incl. non-convergence), 30 % stalls; without stalls the cycles are predicted.
+TEST(TextureUnitRtl, IterativeReliefSceneEqualsCModelWithCyclesPredicted) {
+  auto s = small_scene();
+  s.materials.at("wall").relief->method = scene::ReliefMethod::Iterative;
+  for (int cap : {8, 32}) {
+    s.materials.at("wall").relief->layers = cap;
+    cosim::RtlRenderOptions o;
+    o.relief = true;
+    o.stall_prob = 0.3;
+    const auto r = cosim::render_rtl(s, o);
+    EXPECT_TRUE(r.ok()) << r.first_mismatch;
+    size_t shifted = 0, nonconv = 0, steps = 0;
+    for (const auto& p : r.frame.pixels) {
+      shifted += p.relief_n > 0;
+      steps += static_cast<size_t>(p.relief_steps);
+      nonconv += (p.relief_flags & relief::kReliefNonConv) != 0;
+    }
+    EXPECT_GT(shifted, 300u);
+    EXPECT_GT(nonconv, 0u);  // the flag reaches the unit's output
+    o.stall_prob = 0;
+    const auto r0 = cosim::render_rtl(s, o);
+    EXPECT_TRUE(r0.ok()) << r0.first_mismatch;
+    EXPECT_EQ(r0.cycles, r0.predicted_cycles);
+    std::printf("iterative cap %d: %zu px, %zu shifted (%.2f iterations each), %zu non-converged; cycles measured "
+                "%llu predicted %llu\n",
+                cap, r.frame.pixels.size(), shifted, double(steps) / double(std::max<size_t>(1, shifted)), nonconv,
+                (unsigned long long)r0.cycles, (unsigned long long)r0.predicted_cycles);
   }
+}
+
+// EWA sub-texel border weights are not in the RTL unit yet (docs/blocks/ewa.md "Border
+// weights"): a message naming the material's field, before any simulation.
+TEST(TextureUnitRtl, BorderWeightsAreRejectedNamingTheField) {
+  const auto s = scene::with_clip(small_scene(), "mm_p1");
+  try {
+    cosim::render_rtl(s, {});
+    ADD_FAILURE() << "border weights accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("/clip: EWA border weights are not in the RTL"), std::string::npos) << e.what();
+  }
+}
+
+// docs/scenes/corridor.json on its planned unit (`texunit plan docs/scenes/corridor.json`: EWA with
+// the 1-D weight table on every material, iterative parallax, no POM march;
+// Vtu_texture_unit_sim_corridor): every pixel ==
+// render_cmodel with the walls' iterative relief, with 30 % stalls and without (cycles predicted).
+TEST(TextureUnitRtl, CorridorPlannedUnitEqualsCModelWithCyclesPredicted) {
+  const auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/corridor.json");
+  cosim::RtlRenderOptions o;
+  o.corridor_unit = true;
+  o.filter = scene::Filter::Ewa;  // the plan's filter and weight source on every material
+  o.weights = scene::WeightSource::Table1d;
+  o.relief = true;
+  o.stall_prob = 0.3;
+  const auto r = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r.ok()) << r.first_mismatch;
+  size_t shifted = 0, nonconv = 0;
+  for (const auto& p : r.frame.pixels) {
+    shifted += p.relief_n > 0;
+    nonconv += (p.relief_flags & relief::kReliefNonConv) != 0;
+  }
+  EXPECT_GT(shifted, 1000u);
+  o.stall_prob = 0;
+  const auto r0 = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r0.ok()) << r0.first_mismatch;
+  EXPECT_EQ(r0.cycles, r0.predicted_cycles);
+  std::printf("corridor, planned unit: %zu px, %zu shifted, %zu non-converged, cycles measured %llu predicted %llu\n",
+              r.frame.pixels.size(), shifted, nonconv, (unsigned long long)r0.cycles,
+              (unsigned long long)r0.predicted_cycles);
+  // A material the planned unit has no engine for is refused, naming the field.
+  o.filter.reset();  // the authored trilinear ceiling
+  EXPECT_THROW(cosim::render_rtl(s, o), std::invalid_argument);
 }
 
 // docs/scenes/ui_quad.json (no relief, no minification): `texunit plan` writes a bilinear-only
@@ -257,3 +333,37 @@ TEST(TextureUnitRtl, SpecialisedUnitRendersSceneWithoutReliefAsTheFullUnit) {
               (unsigned long long)a.cycles, (unsigned long long)b.cycles);
 }
 }  // namespace
+
+// The shading stage (docs/blocks/brdf.md §6): the docs' shaded sphere (one point light, vertex
+// normals, F_MSH highlight) through the full unit equals the C model on every pixel, cycles as
+// predicted (the stage's latency added once), and with 30% stalls on both sides; a material
+// naming another model than the unit's, or a light on the unit without the stage, is refused.
+TEST(TextureUnitRtl, ShadedSphereEqualsCModelCyclesPredicted) {
+  const auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/shaded_sphere.json");
+  ASSERT_FALSE(s.lights.empty());
+  cosim::RtlRenderOptions o;
+  const auto r = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r.ok()) << r.first_mismatch;
+  EXPECT_GT(r.frame.pixels.size(), 3000u);
+  EXPECT_EQ(r.cycles, r.predicted_cycles);
+  // Shading changed the picture: the unshaded C model differs on most pixels.
+  auto dark = s;
+  dark.lights.clear();
+  const auto plain = render::render_cmodel(dark, std::nullopt, render::texture_path_only());
+  size_t differ = 0;
+  for (size_t i = 0; i < plain.pixels.size() && i < r.frame.pixels.size(); ++i)
+    differ += !(plain.pixels[i].color == r.frame.pixels[i].color);
+  EXPECT_GT(differ, r.frame.pixels.size() / 2);
+  std::printf("shaded sphere: %zu px, %zu shaded differently from the texture, cycles %llu predicted %llu\n",
+              r.frame.pixels.size(), differ, (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
+  o.stall_prob = 0.3;
+  const auto q = cosim::render_rtl(s, o);
+  EXPECT_TRUE(q.ok()) << q.first_mismatch;
+  auto pinned = s;
+  pinned.materials.at("ball").specular->model = "blinn";
+  EXPECT_THROW(cosim::render_rtl(pinned, {}), std::invalid_argument);
+  cosim::RtlRenderOptions bil;
+  bil.has_ewa = false;
+  bil.filter = scene::Filter::Bilinear;
+  EXPECT_THROW(cosim::render_rtl(s, bil), std::invalid_argument);
+}

@@ -1,6 +1,7 @@
 // RTL binding of the iterative parallax engine (rtl/pom/tu_iter_parallax.sv).
 #include "Vtu_iter_parallax.h"
 #include "cosim.hpp"
+#include "texunit/formats.hpp"
 
 namespace tu::cosim {
 
@@ -11,6 +12,7 @@ RtlBlock rtl_iter_parallax() {
     d.su_i = static_cast<uint32_t>(in[2]);
     d.sv_i = static_cast<uint32_t>(in[3]);
     d.sh_i = static_cast<uint32_t>(in[4]);
+    d.cap_i = fmt::kIpxCap;  // the block's vectors use the default cap
   };
   auto sample = [](Vtu_iter_parallax& d) {
     return Row{d.u_o, d.v_o, d.iters_o, d.nonconv_o};

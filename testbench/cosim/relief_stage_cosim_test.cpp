@@ -1,8 +1,9 @@
 // Relief stage of the texture unit (rtl/pom/tu_relief_stage.sv) against the C model's per-pixel
-// step relief::shift_texel_uv_fx: 0 mismatches with 30 % stalls and view bubbles on (a) every
-// covered pixel of the default scene (wall: relief, ground: none) with pom_fixed / pom_adaptive
-// and 8 / 32 layers, (b) seeded random pixels with extremes; stream cycles without stalls equal
-// relief::stage_cycles; non-relief pixels stream at 1 pixel / clock.
+// step relief::shift_texel_uv_fx: 0 mismatches (u, v, layers, steps, flags) with 30 % stalls and
+// view bubbles on (a) every covered pixel of the default scene (wall: relief, ground: none) with
+// pom_fixed / pom_adaptive / iterative and 8 / 32 layers, (b) seeded random pixels with extremes,
+// POM and iterative mixed; stream cycles without stalls equal relief::stage_cycles; non-relief
+// pixels stream at 1 pixel / clock.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -51,17 +52,23 @@ img::Gray8 noise(int w, int h, std::mt19937_64& rng) {
 // The C model's answer for one pixel (and its march steps, for the cycle estimator).
 struct Expect {
   int64_t u, v;
-  uint32_t n, steps;
+  uint32_t n, steps, flags;
   bool shift;
 };
+relief::Method method_of(const ReliefPixel& p) {
+  return p.iter ? relief::Method::Iterative : p.adaptive ? relief::Method::PomAdaptive : relief::Method::PomFixed;
+}
 Expect expect(const Bank& b, int map, const ReliefPixel& p) {
-  if (!(p.rel && !p.guard && p.ok)) return {p.u, p.v, 0, 0, false};
+  if (!(p.rel && !p.guard && p.ok)) return {p.u, p.v, 0, 0, 0, false};
   pom::View w = p.view;
   w.scale = p.scale;
-  const auto r = relief::shift_texel_uv_fx(b.maps[static_cast<size_t>(map)], p.u, p.v, p.lw, p.lh, w,
-                                           p.adaptive ? relief::Method::PomAdaptive : relief::Method::PomFixed,
+  const auto r = relief::shift_texel_uv_fx(b.maps[static_cast<size_t>(map)], p.u, p.v, p.lw, p.lh, w, method_of(p),
                                            p.layers);
-  return {r.u, r.v, r.n, r.steps, true};
+  return {r.u, r.v, r.n, r.steps, r.flags, true};
+}
+relief::StagePixel stage_pixel(const Expect& e, const ReliefPixel& p) { return {e.shift, e.steps, p.iter}; }
+const char* method_name(relief::Method m) {
+  return m == relief::Method::PomFixed ? "pom_fixed" : m == relief::Method::PomAdaptive ? "pom_adaptive" : "iterative";
 }
 
 // The complexity texel the shader samples at the unshifted uv (relief::layers_at).
@@ -87,12 +94,16 @@ Checked check(const Bank& b, const std::vector<int>& maps, const std::vector<Rel
     const auto& o = c.run.out[i];
     EXPECT_TRUE(e.u == static_cast<int32_t>(e.u) && e.v == static_cast<int32_t>(e.v))
         << "C-model result outside PerspUvW, pixel " << i;
-    if (o.u != e.u || o.v != e.v || o.n != e.n || o.index != (i & 0xfffff)) {
+    if (o.u != e.u || o.v != e.v || o.n != e.n || o.steps != e.steps || o.flags != e.flags ||
+        o.index != (i & 0xfffff)) {
       if (!c.mismatches++) {
-        char buf[256];
-        std::snprintf(buf, sizeof buf, "pixel %zu: rtl (%lld, %lld, n %u, #%u) c-model (%lld, %lld, n %u)", i,
-                      static_cast<long long>(o.u), static_cast<long long>(o.v), o.n, o.index,
-                      static_cast<long long>(e.u), static_cast<long long>(e.v), e.n);
+        char buf[320];
+        std::snprintf(buf, sizeof buf,
+                      "pixel %zu (%s): rtl (%lld, %lld, n %u, steps %u, flags %u, #%u) c-model (%lld, %lld, n %u, "
+                      "steps %u, flags %u)",
+                      i, method_name(method_of(px[i])), static_cast<long long>(o.u), static_cast<long long>(o.v), o.n,
+                      o.steps, o.flags, o.index, static_cast<long long>(e.u), static_cast<long long>(e.v), e.n, e.steps,
+                      e.flags);
         c.first = buf;
       }
     }
@@ -137,6 +148,7 @@ ScenePixels scene_pixels(Bank& b, relief::Method method, int layers) {
       p.view = q;
       p.scale = q.scale;
       p.adaptive = method == relief::Method::PomAdaptive;
+      p.iter = method == relief::Method::Iterative;
       p.layers = layers;
       b.place(&p, map);
       p.vc = complexity_at(b.maps[static_cast<size_t>(map)], p);
@@ -149,21 +161,24 @@ ScenePixels scene_pixels(Bank& b, relief::Method method, int layers) {
 }
 
 TEST(ReliefStageCosim, DefaultSceneEveryPixelWithStalls) {
-  for (auto method : {relief::Method::PomFixed, relief::Method::PomAdaptive})
+  for (auto method : {relief::Method::PomFixed, relief::Method::PomAdaptive, relief::Method::Iterative})
     for (int layers : {8, 32}) {
       Bank b;
       const auto sp = scene_pixels(b, method, layers);
-      size_t shifted = 0, wall = 0, moved = 0;
+      size_t shifted = 0, wall = 0, moved = 0, nonconv = 0;
       for (size_t i = 0; i < sp.px.size(); ++i) {
         const auto e = expect(b, sp.maps[i], sp.px[i]);
         wall += sp.px[i].rel;
         shifted += e.shift;
         moved += e.u != sp.px[i].u || e.v != sp.px[i].v;
+        nonconv += (e.flags & relief::kReliefNonConv) != 0;
       }
       const auto c = check(b, sp.maps, sp.px, 0.3, 11);
-      std::printf("scene %s %d layers: %zu pixels, %zu wall, %zu shifted, %zu moved, %llu cycles (30%% stalls)\n",
-                  method == relief::Method::PomFixed ? "pom_fixed" : "pom_adaptive", layers, sp.px.size(), wall,
-                  shifted, moved, static_cast<unsigned long long>(c.run.cycles));
+      std::printf("scene %s %d layers: %zu pixels, %zu wall, %zu shifted, %zu moved, %zu non-converged, %llu cycles "
+                  "(30%% stalls)\n",
+                  method_name(method), layers, sp.px.size(), wall, shifted, moved, nonconv,
+                  static_cast<unsigned long long>(c.run.cycles));
+      if (method == relief::Method::Iterative) EXPECT_GT(nonconv, 0u);  // the flag is exercised
       EXPECT_GT(moved, 5000u);
       EXPECT_EQ(c.mismatches, 0u) << c.first;
     }
@@ -203,6 +218,7 @@ TEST(ReliefStageCosim, RandomAndExtremesWithStalls) {
     p.guard = pct(rng) < 8;
     p.ok = pct(rng) < 90;
     p.adaptive = pct(rng) < 50;
+    p.iter = pct(rng) < 35;  // POM and iterative pixels mixed: the engines hand the depth port over
     const int lk = pct(rng);
     p.layers = lk < 10 ? 1 : lk < 20 ? 63 : layers(rng);
     const int sk = pct(rng);
@@ -223,29 +239,41 @@ TEST(ReliefStageCosim, RandomAndExtremesWithStalls) {
     px.push_back(p);
     maps.push_back(m);
   }
-  size_t shifted = 0, moved = 0;
+  size_t shifted = 0, moved = 0, iter = 0, nonconv = 0;
+  std::vector<relief::StagePixel> sched;
   for (size_t i = 0; i < px.size(); ++i) {
     const auto e = expect(b, maps[i], px[i]);
     shifted += e.shift;
+    iter += e.shift && px[i].iter;
+    nonconv += (e.flags & relief::kReliefNonConv) != 0;
     moved += e.u != px[i].u || e.v != px[i].v;
+    sched.push_back(stage_pixel(e, px[i]));
   }
   const auto c = check(b, maps, px, 0.3, 5);
-  std::printf("random: %zu pixels, %zu shifted, %zu moved, %llu cycles (30%% stalls, 30%% view bubbles)\n",
-              px.size(), shifted, moved, static_cast<unsigned long long>(c.run.cycles));
+  std::printf("random: %zu pixels, %zu shifted (%zu iterative, %zu non-converged), %zu moved, %llu cycles (30%% "
+              "stalls, 30%% view bubbles)\n",
+              px.size(), shifted, iter, nonconv, moved, static_cast<unsigned long long>(c.run.cycles));
   EXPECT_GT(moved, px.size() / 4);
+  EXPECT_GT(nonconv, 0u);
   EXPECT_EQ(c.mismatches, 0u) << c.first;
+  // The same mixed stream without stalls: cycles = the estimator (method switches included).
+  const auto c0 = check(b, maps, px, 0, 5);
+  EXPECT_EQ(c0.mismatches, 0u) << c0.first;
+  EXPECT_EQ(c0.run.cycles, relief::stage_cycles(sched));
+  std::printf("random, no stalls: %llu cycles measured, %llu predicted\n", static_cast<unsigned long long>(c0.run.cycles),
+              static_cast<unsigned long long>(relief::stage_cycles(sched)));
 }
 
 // Stream cycles without stalls = relief::stage_cycles, on the scene stream and a mixed stream.
 TEST(ReliefStageCosim, StreamCyclesMatchTheEstimator) {
-  for (auto method : {relief::Method::PomFixed, relief::Method::PomAdaptive}) {
+  for (auto method : {relief::Method::PomFixed, relief::Method::PomAdaptive, relief::Method::Iterative}) {
     Bank b;
-    const auto sp = scene_pixels(b, method, method == relief::Method::PomFixed ? 8 : 32);
+    const auto sp = scene_pixels(b, method, method == relief::Method::PomAdaptive ? 32 : 8);
     std::vector<relief::StagePixel> sched;
     uint64_t shifted = 0, steps = 0;
     for (size_t i = 0; i < sp.px.size(); ++i) {
       const auto e = expect(b, sp.maps[i], sp.px[i]);
-      sched.push_back({e.shift, e.steps});
+      sched.push_back(stage_pixel(e, sp.px[i]));
       shifted += e.shift;
       steps += e.steps;
     }
@@ -254,7 +282,7 @@ TEST(ReliefStageCosim, StreamCyclesMatchTheEstimator) {
     const uint64_t predicted = relief::stage_cycles(sched);
     std::printf("scene stream %s: %zu pixels (%llu shifted, %.3f steps each), cycles measured %llu, "
                 "predicted %llu, sum(k + 1) over shifted %llu\n",
-                method == relief::Method::PomFixed ? "pom_fixed 8" : "pom_adaptive 32", sp.px.size(),
+                method_name(method), sp.px.size(),
                 static_cast<unsigned long long>(shifted), double(steps) / double(shifted),
                 static_cast<unsigned long long>(c.run.cycles), static_cast<unsigned long long>(predicted),
                 static_cast<unsigned long long>(steps + shifted));
@@ -280,7 +308,7 @@ TEST(ReliefStageCosim, NonReliefPixelsAtOnePerClock) {
     std::vector<relief::StagePixel> sched;
     for (size_t i = 0; i < p.size(); ++i) {
       const auto e = expect(b, maps[i], p[i]);
-      sched.push_back({e.shift, e.steps});
+      sched.push_back(stage_pixel(e, p[i]));
     }
     EXPECT_EQ(c.run.cycles, relief::stage_cycles(sched));
     return c.run.cycles;

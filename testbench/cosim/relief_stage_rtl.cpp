@@ -10,7 +10,7 @@
 namespace tu::cosim {
 
 namespace {
-enum Col { kU, kV, kLw, kLh, kRel, kGuard, kAdaptive, kLayers, kScale, kHbase, kHlw, kHlh, kSide,
+enum Col { kU, kV, kLw, kLh, kRel, kGuard, kAdaptive, kIter, kLayers, kScale, kHbase, kHlw, kHlh, kSide,
            kOk, kVx, kVy, kVz, kVc, kCols };
 constexpr uint32_t kSideMask = (1u << 20) - 1;  // tu_relief_stage_sim's SideW
 
@@ -30,6 +30,7 @@ ReliefRun run_relief_stage(const std::vector<ReliefPixel>& px, const std::vector
     r[kRel] = p.rel;
     r[kGuard] = p.guard;
     r[kAdaptive] = p.adaptive;
+    r[kIter] = p.iter;
     r[kLayers] = static_cast<uint64_t>(p.layers);
     r[kScale] = p.scale;
     r[kHbase] = p.hbase;
@@ -53,6 +54,7 @@ ReliefRun run_relief_stage(const std::vector<ReliefPixel>& px, const std::vector
     d.rel_i = static_cast<uint8_t>(r[kRel]);
     d.guard_i = static_cast<uint8_t>(r[kGuard]);
     d.adaptive_i = static_cast<uint8_t>(r[kAdaptive]);
+    d.iter_i = static_cast<uint8_t>(r[kIter]);
     d.layers_i = static_cast<uint8_t>(r[kLayers]);
     d.scale_i = static_cast<uint16_t>(r[kScale]);
     d.hbase_i = static_cast<uint32_t>(r[kHbase]);
@@ -66,7 +68,7 @@ ReliefRun run_relief_stage(const std::vector<ReliefPixel>& px, const std::vector
     d.vc_i = static_cast<uint8_t>(r[kVc]);
     d.view_bubble_i = view_bubble_prob > 0 && bubble(rng);
   };
-  auto sample = [](Vtu_relief_stage_sim& d) { return Row{d.u_o, d.v_o, d.n_o, d.side_o}; };
+  auto sample = [](Vtu_relief_stage_sim& d) { return Row{d.u_o, d.v_o, d.n_o, d.side_o, d.steps_o, d.flags_o}; };
   auto init = [&](Vtu_relief_stage_sim& d, const std::function<void()>& tick) { load_words(d, tick, 0, ram); };
   Harness<Vtu_relief_stage_sim> h(drive, sample, init);
   RunOptions o;
@@ -79,7 +81,8 @@ ReliefRun run_relief_stage(const std::vector<ReliefPixel>& px, const std::vector
   res.extra_outputs = rr.extra_outputs;
   res.hung = rr.hung;
   for (const Row& q : rr.outputs)
-    res.out.push_back({sext32(q[0]), sext32(q[1]), static_cast<uint32_t>(q[2]), static_cast<uint32_t>(q[3])});
+    res.out.push_back({sext32(q[0]), sext32(q[1]), static_cast<uint32_t>(q[2]), static_cast<uint32_t>(q[4]),
+                       static_cast<uint32_t>(q[5]), static_cast<uint32_t>(q[3])});
   return res;
 }
 

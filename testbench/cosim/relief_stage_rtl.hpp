@@ -13,6 +13,7 @@ struct ReliefPixel {
   int64_t u = 0, v = 0;  // B1 codes (PerspUvW bits, signed)
   int lw = 0, lh = 0;    // log2 sides of the colour texture's level 0
   bool rel = false, guard = false, adaptive = false;
+  bool iter = false;     // iterative parallax (cap = layers)
   int layers = 1;        // 1..63
   uint32_t scale = 0;    // S code
   uint32_t hbase = 0;    // depth map: word address of texel (0, 0), log2 sides
@@ -25,6 +26,8 @@ struct ReliefPixel {
 struct ReliefOut {
   int64_t u = 0, v = 0;  // sign-extended
   uint32_t n = 0;
+  uint32_t steps = 0;    // march steps or iterations
+  uint32_t flags = 0;    // relief::ReliefFlag
   uint32_t index = 0;    // the pixel's index (carried on the side port)
 };
 

@@ -3,11 +3,13 @@
 #include <chrono>
 #include <cmath>
 #include <algorithm>
+#include <array>
 #include <map>
 #include <stdexcept>
 
 #include "Vtu_texture_unit_sim.h"
 #include "Vtu_texture_unit_sim_bil.h"
+#include "Vtu_texture_unit_sim_corridor.h"
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "harness.hpp"
@@ -20,6 +22,7 @@ namespace tu::cosim {
 namespace {
 constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;  // tu_texture_unit_sim Words
 constexpr uint64_t kViewWords = kRamWords;                              // tu_view_src Words
+constexpr uint64_t kShadeWords = uint64_t(1) << 16;                     // tu_view_src Words of the shade stream
 
 uint64_t lo(i128 v) { return static_cast<uint64_t>(v); }
 uint64_t hi(i128 v) { return static_cast<uint64_t>(v >> 64); }
@@ -28,7 +31,7 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 // Row layout of one span (two words for each 112-bit numerator constant).
 enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kClamp,
-  kWsrc, kCap, kFilt, kRel, kRadapt, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
+  kWsrc, kCap, kFilt, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
   kRowSize
 };
 
@@ -76,6 +79,7 @@ void drive(V& d, const Row& r) {
   d.filt_i = static_cast<uint8_t>(r[kFilt]);
   d.rel_i = static_cast<uint8_t>(r[kRel]);
   d.radapt_i = static_cast<uint8_t>(r[kRadapt]);
+  d.riter_i = static_cast<uint8_t>(r[kRiter]);
   d.rlayers_i = static_cast<uint8_t>(r[kRlayers]);
   d.rscale_i = static_cast<uint16_t>(r[kRscale]);
   d.hbase_i = static_cast<uint32_t>(r[kHbase]);
@@ -85,7 +89,7 @@ void drive(V& d, const Row& r) {
 
 template <class V>
 Row sample(V& d) {
-  return Row{d.x_o, d.y_o, d.rgba_o, d.level_o, d.visited_o, d.inside_o, d.flags_o, d.eflags_o, d.rn_o};
+  return Row{d.x_o, d.y_o, d.rgba_o, d.level_o, d.visited_o, d.inside_o, d.flags_o, d.eflags_o, d.rn_o, d.rsteps_o, d.rflags_o};
 }
 }  // namespace
 
@@ -101,13 +105,41 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
                                   ", but the unit is bilinear-only");
     engine_of[name] = render::engine_of(f);
   }
+  // The corridor unit (its plan: EWA with the 1-D weight table on every material, iterative
+  // parallax) has neither the bilinear, trilinear and nearest engines, the other weight sources,
+  // nor the POM march.
+  for (const auto& [name, m] : o.corridor_unit ? s.materials : decltype(s.materials){}) {
+    if (engine_of.at(name) != ewa::Engine::Ewa)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: " +
+                                  std::string(scene::to_string(o.filter.value_or(m.filter))) +
+                                  ", but the corridor unit has the EWA engine only (--filter ewa)");
+    if (o.weights.value_or(m.weights) != scene::WeightSource::Table1d)
+      throw std::invalid_argument(s.source + ": /materials/" + name +
+                                  "/weights: the corridor unit has the 1-D weight table only (--weights table1d)");
+    if (o.relief && m.relief && m.relief->method != scene::ReliefMethod::Iterative)
+      throw std::invalid_argument(s.source + ": /materials/" + name +
+                                  "/relief/method: the corridor unit's relief stage has the iterative engine only");
+  }
   if (o.relief && !o.has_ewa)
     throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
   for (const auto& [name, m] : s.materials)
-    if (o.relief && m.relief && m.relief->method == scene::ReliefMethod::Iterative)
-      throw std::invalid_argument(s.source + ": /materials/" + name + "/relief/method: iterative parallax is not in "
-                                  "the RTL texture unit (its relief stage runs POM); render without relief (--no-relief)");
+    if (m.procedural)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/procedural: the noise unit is not in the RTL "
+                                  "texture unit yet (docs/blocks/noise.md §5); render it with --engine cmodel or ref");
+  // The full unit shades (HasShading); a light needs it, and a model the materials name must be its.
+  const bool shade_unit = o.has_ewa && !o.corridor_unit;  // the corridor plan has no lights
+  if (!shade_unit && !s.lights.empty())
+    throw std::invalid_argument(s.source + ": /lights: the bilinear-only unit has no shading stage");
+  for (const auto& [name, m] : s.materials)
+    if (m.specular && m.specular->model != "auto" && shading::model_of(m.specular->model) != o.shade_model)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/specular/model: " + m.specular->model +
+                                  ", but the unit's shading stage is " + brdf::name(o.shade_model));
+  for (const auto& [name, m] : s.materials)
+    if (!m.clip.empty() && o.filter.value_or(m.filter) == scene::Filter::Ewa)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/clip: EWA border weights are not in the RTL "
+                                  "texture unit yet (C model and float reference only); render with --clip off");
   render::CmodelOptions copt;
+  copt.shade_model = o.shade_model;
   copt.weights = o.weights;
   copt.relief = o.relief;
   copt.threads = o.threads;
@@ -145,7 +177,11 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   const auto cov = render::visibility(s, o.threads);
   std::vector<Row> spans;
   std::vector<ewa::PixelCost> costs;
+  std::vector<relief::StagePixel> relief_px;  // each pixel's relief step (the stage's cycle model)
   std::vector<uint64_t> views;  // the view stream model's words
+  std::vector<std::array<uint32_t, brdf::shade::kWordWords>> shades;  // the shade stream model's words
+  const shading::Setup shade(s, o.shade_model);
+  const persp::RayCaster rays(s.camera);
   auto lw_of = [](const Obj& ob) { return log2_size(ob.tex.levels[0].width); };
   auto lh_of = [](const Obj& ob) { return log2_size(ob.tex.levels[0].height); };
   size_t pix = 0;
@@ -201,6 +237,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         const pom::View q = relief::quantise({}, rel.scale);
         r[kRel] = 1;
         r[kRadapt] = rel.method == scene::ReliefMethod::PomAdaptive;
+        r[kRiter] = rel.method == scene::ReliefMethod::Iterative;
         r[kRlayers] = static_cast<uint64_t>(std::clamp(rel.layers, 1, 63));
         r[kRscale] = q.scale;
         r[kHbase] = ob.hbase;
@@ -238,6 +275,12 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;
         pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(tlod >> fmt::kTexLodF), top);
         costs.push_back(pc);
+        if (shade_unit) shades.push_back(brdf::shade::pack(shade.fx_in(rays, c.object, c.triangle, px, y)));
+        relief::StagePixel rp;
+        if (ob.maps && pix < expect.pixels.size() && expect.pixels[pix].relief_n > 0)
+          rp = {true, static_cast<uint32_t>(expect.pixels[pix].relief_steps),
+                m.relief->method == scene::ReliefMethod::Iterative};
+        relief_px.push_back(rp);
       }
       x = x1 + 1;
     }
@@ -256,6 +299,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   if (view_words.size() / 2 > kViewWords)
     throw std::runtime_error(s.source + ": " + std::to_string(views.size()) + " relief pixels, the view stream model holds " +
                              std::to_string(kViewWords));
+  if (shades.size() > kShadeWords)
+    throw std::runtime_error(s.source + ": " + std::to_string(shades.size()) + " covered pixels, the shade stream model holds " +
+                             std::to_string(kShadeWords));
   auto init = [&](auto& d, const std::function<void()>& tick) {
     d.ram_sel_i = 0;
     load_words(d, tick, 0, ram);
@@ -263,9 +309,24 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     load_words(d, tick, 0, depth_ram);
     d.ram_sel_i = 2;
     load_words(d, tick, 0, view_words);
+    d.ram_sel_i = 3;  // part j of shade word i at 16 i + j
+    for (size_t i = 0; i < shades.size(); ++i)
+      for (size_t j = 0; j < shades[i].size(); ++j) {
+        d.ram_we_i = 1;
+        d.ram_waddr_i = static_cast<uint32_t>(16 * i + j);
+        d.ram_wdata_i = shades[i][j];
+        tick();
+      }
+    d.ram_we_i = 0;
     d.ram_sel_i = 0;
   };
-  if (o.has_ewa) {
+  if (o.corridor_unit) {
+    if (!o.has_ewa) throw std::invalid_argument("render_rtl: the corridor unit has EWA (has_ewa must be set)");
+    Harness<Vtu_texture_unit_sim_corridor> hs(
+        drive<Vtu_texture_unit_sim_corridor>, sample<Vtu_texture_unit_sim_corridor>,
+        [&](Vtu_texture_unit_sim_corridor& d, const std::function<void()>& t) { init(d, t); });
+    rr = hs.run(spans, ro, fanout);
+  } else if (o.has_ewa) {
     Harness<Vtu_texture_unit_sim> hs(drive<Vtu_texture_unit_sim>, sample<Vtu_texture_unit_sim>,
                                      [&](Vtu_texture_unit_sim& d, const std::function<void()>& t) { init(d, t); });
     rr = hs.run(spans, ro, fanout);
@@ -280,10 +341,13 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   out.cycles = rr.sim_cycles;
   out.hung = rr.hung;
   out.extra_outputs = rr.extra_outputs;
-  const auto front = static_cast<uint64_t>(ewa::texture_unit_front_latency(o.has_ewa));  // full unit: relief stage in
-  // With relief pixels the stage's march times interleave with the filter's: not predicted here
-  // (the stage alone: relief::stage_cycles; the filter alone: ewa::stream_cycles).
-  out.predicted_cycles = views.empty() ? ewa::stream_cycles(costs, front) : 0;
+  // The full unit has the relief stage: its marches and iterations interleave with the filter's
+  // work (ewa::texture_unit_cycles); the bilinear-only unit streams its pixels (stream_cycles).
+  // The shading stage (II = 1, its words preloaded) adds its pipeline's latency once, at the end.
+  const uint64_t shade_lat = shade_unit ? static_cast<uint64_t>(brdf::shade::latency(o.shade_model)) : 0;
+  out.predicted_cycles = (o.has_ewa ? ewa::texture_unit_cycles(costs, relief_px)
+                                    : ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(false)))) +
+                         shade_lat;
   out.frame.image = expect.image;
   for (size_t i = 0; i < rr.outputs.size(); ++i) {
     const Row& q = rr.outputs[i];
@@ -297,6 +361,8 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     rec.ewa_flags = static_cast<uint32_t>(q[6]);
     rec.b2_flags = static_cast<uint32_t>(q[7]);
     rec.relief_n = static_cast<int>(q[8]);
+    rec.relief_steps = static_cast<int>(q[9]);
+    rec.relief_flags = static_cast<uint32_t>(q[10]);
     if (i < expect.pixels.size()) {
       const auto& e = expect.pixels[i];
       rec.object = e.object, rec.u = e.u, rec.v = e.v;
@@ -305,7 +371,8 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       // that filtered, and the colour).
       const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(e.object)].material);
       const bool same = rec.x == e.x && rec.y == e.y && rec.color == e.color && rec.b2_flags == e.b2_flags &&
-                        rec.relief_n == e.relief_n &&
+                        rec.relief_n == e.relief_n && rec.relief_steps == e.relief_steps &&
+                        rec.relief_flags == e.relief_flags &&
                         (eng == ewa::Engine::Ewa
                              ? rec.lod == e.lod && rec.texels == e.texels && rec.texels_inside == e.texels_inside &&
                                    rec.ewa_flags == e.ewa_flags

@@ -12,7 +12,10 @@
 //   * relief (option): each material's POM relief through the unit's relief stage, the depth maps
 //     in the depth RAM model and one view word per pixel of a relief span (relief::pixel_view,
 //     quantised; the complexity texel for adaptive layers) in the view stream model; without the
-//     option (or on a unit without relief) the texture path alone is compared.
+//     option (or on a unit without relief) the texture path alone is compared;
+//   * shading: the full unit has the shading stage (HasShading, model ShadeModel = shade_model):
+//     one shade word per covered pixel (shading::Setup::fx_in, brdf::shade::pack) in the shade
+//     stream model, `on` = 0 in a scene without a light (the colour passes unchanged).
 #pragma once
 
 #include <cstdint>
@@ -21,24 +24,30 @@
 
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
+#include "texunit/shading.hpp"
 
 namespace tu::cosim {
 
 struct RtlRenderOptions {
   bool has_ewa = true;                         // false: the bilinear-only unit (every filter must be bilinear)
+  // The unit `texunit plan docs/scenes/corridor.json` writes (testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv:
+  // the EWA engine with the 1-D weight table and iterative parallax; no bilinear, trilinear, nearest
+  // or POM march) instead of the full unit.
+  bool corridor_unit = false;
   std::optional<scene::Filter> filter;         // overrides every material's filter (ewa or bilinear)
   bool relief = false;                         // apply each material's relief (POM methods; full unit)
   std::optional<scene::WeightSource> weights;  // overrides every material's EWA weight source
   double stall_prob = 0;                       // random input bubbles / output stalls
   uint64_t seed = 1;
   int threads = 0;  // for the C-model render and visibility (<= 0: every core); same result
+  brdf::Model shade_model = shading::kUnitModel;  // the Verilated full unit's ShadeModel
 };
 
 struct RtlRender {
   render::Frame frame;               // RTL pixels
   uint64_t spans = 0;
   uint64_t cycles = 0;               // measured: first span offered to the last pixel out
-  uint64_t predicted_cycles = 0;     // ewa::stream_cycles (no stalls); 0: not predicted (relief pixels)
+  uint64_t predicted_cycles = 0;     // ewa::texture_unit_cycles (full unit) / stream_cycles (no stalls)
   uint64_t mismatches = 0;           // pixels differing from render_cmodel (any field)
   std::string first_mismatch;
   bool hung = false;

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "ewa/ewa_cycles.hpp"
 #include "pom/relief.hpp"
 #include "pom/relief_quality.hpp"
 #include "texunit/render.hpp"
@@ -175,4 +176,39 @@ TEST(ReliefStageCycles, PlainPixelsOnePerClockAndStepsAddOneEach) {
   std::vector<relief::StagePixel> pom(200, {true, 5});
   std::vector<relief::StagePixel> pom2(201, {true, 5});
   EXPECT_EQ(relief::stage_cycles(pom2) - relief::stage_cycles(pom), 6u);
+}
+
+// Iterative pixels: k + 3 cycles each in a stream (the engine's Idle and Done); a lone one leaves
+// when a POM pixel with the same k does (both engines output k + 2 cycles after acceptance).
+TEST(ReliefStageCycles, IterativePixelsAndTheEngineHandOver) {
+  std::vector<relief::StagePixel> ipx(200, {true, 5, true}), ipx2(201, {true, 5, true});
+  EXPECT_EQ(relief::stage_cycles(ipx2) - relief::stage_cycles(ipx), 8u);
+  const std::vector<relief::StagePixel> one_pom = {{true, 4, false}}, one_ipx = {{true, 4, true}};
+  EXPECT_EQ(relief::stage_cycles(one_ipx), relief::stage_cycles(one_pom));
+  // Alternating methods cost more than either method alone (no overlap across the hand-over).
+  std::vector<relief::StagePixel> alt;
+  for (int i = 0; i < 200; ++i) alt.push_back({true, 5, i % 2 == 1});
+  std::vector<relief::StagePixel> pom(200, {true, 5, false});
+  EXPECT_GT(relief::stage_cycles(alt), (relief::stage_cycles(pom) + relief::stage_cycles(ipx)) / 2);
+}
+
+// The whole unit's model without shifted pixels is the filter's recurrence from the front latency.
+TEST(TextureUnitCycles, WithoutShiftedPixelsEqualsTheFilterStream) {
+  std::vector<ewa::PixelCost> px;
+  for (int i = 0; i < 300; ++i) {
+    ewa::PixelCost c;
+    c.engine = i % 50 < 25 ? ewa::Engine::Ewa : i % 50 < 40 ? ewa::Engine::Bilinear : ewa::Engine::Nearest;
+    c.box = 20 + static_cast<uint64_t>(i % 7);
+    c.guard = i % 31 == 0;
+    px.push_back(c);
+  }
+  const std::vector<relief::StagePixel> plain(px.size());
+  EXPECT_EQ(ewa::texture_unit_cycles(px, plain),
+            ewa::stream_cycles(px, static_cast<uint64_t>(ewa::texture_unit_front_latency(true))));
+  // Marches under EWA pixels hide; under nearest pixels (4 clocks each) they show.
+  std::vector<relief::StagePixel> marching(px.size(), {true, 30, true});
+  EXPECT_GE(ewa::texture_unit_cycles(px, marching), ewa::texture_unit_cycles(px, plain));
+  std::vector<ewa::PixelCost> nearest(300);
+  for (auto& c : nearest) c.engine = ewa::Engine::Nearest;
+  EXPECT_GT(ewa::texture_unit_cycles(nearest, marching), 300u * 33);
 }

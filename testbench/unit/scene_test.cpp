@@ -146,3 +146,49 @@ TEST(Scene, ZeroAreaTriangleIsDroppedWithAWarningNamingTheObject) {
   EXPECT_TRUE(default_scene().warnings.empty());
 }
 }  // namespace
+
+namespace {
+// Shading fields (docs/scene-format.md): lights, the material's specular block, vertex normals.
+TEST(Scene, LightsSpecularAndNormals) {
+  const std::string lit = edited("\"error_budget\":", "\"lights\": [{\"position\": [1, 5, -3], \"color\": [1, 0.5, 0.25]}],\n  \"error_budget\":");
+  const Scene s = parse(lit, "s.json", ".");
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_TRUE(s.lights[0].positional);
+  EXPECT_DOUBLE_EQ(s.lights[0].color[2], 0.25);
+  EXPECT_DOUBLE_EQ(s.lights[0].ambient, 0.2);
+  EXPECT_FALSE(s.materials.at("ground").specular.has_value());
+  EXPECT_TRUE(default_scene().lights.empty());
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string t = lit;
+    const auto at = t.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return error_of(t.replace(at, from.size(), to));
+  };
+  EXPECT_EQ(with("\"position\": [1, 5, -3]", "\"position\": [1, 5, -3], \"direction\": [0, -1, 0]"),
+            "s.json: /lights/0: give exactly one of 'position' or 'direction'");
+  EXPECT_EQ(with("\"position\": [1, 5, -3]", "\"direction\": [0, 0, 0]"), "s.json: /lights/0/direction: is the zero vector");
+  EXPECT_EQ(with("\"color\": [1, 0.5, 0.25]", "\"color\": [1, -0.5, 0.25]"), "s.json: /lights/0/color/1: is negative");
+  EXPECT_EQ(with("\"color\": [1, 0.5, 0.25]}", "\"color\": [1, 0.5, 0.25]}, {\"direction\": [0, -1, 0]}"),
+            "s.json: /lights: expected an array of at most one light (one shading pass)");
+  const std::string spec = "\"max_aniso\": 16},";
+  EXPECT_EQ(with(spec, "\"max_aniso\": 16, \"specular\": {\"model\": \"phong\"}},"),
+            "s.json: /materials/ground/specular/model: 'phong' is not one of: auto, blinn, schlick, msh, dsh, scos2, st16, qr");
+  EXPECT_EQ(with(spec, "\"max_aniso\": 16, \"specular\": {\"n\": 1001}},"),
+            "s.json: /materials/ground/specular/n: value 1001 is out of range [1, 1000]");
+  const Scene sp = parse(lit.substr(0, lit.find(spec)) + "\"max_aniso\": 16, \"specular\": {\"model\": \"st16\", \"n\": 7}}," +
+                             lit.substr(lit.find(spec) + spec.size()), "s.json", ".");
+  EXPECT_EQ(sp.materials.at("ground").specular->model, "st16");
+  EXPECT_EQ(sp.materials.at("ground").specular->n, 7);
+  const std::string uv = "\"uv\": [[0, 0], [4, 0], [4, 16], [0, 16]]";
+  EXPECT_EQ(with(uv, uv + ", \"normals\": [[0, 1, 0], [0, 1, 0], [0, 1, 0]]"),
+            "s.json: /objects/0/normals: expected 4 normals for a quad");
+  EXPECT_EQ(with(uv, uv + ", \"normals\": [[0, 1, 0], [0, 0, 0], [0, 1, 0], [0, 1, 0]]"),
+            "s.json: /objects/0/normals/1: is the zero vector");
+  std::string t = lit;
+  t.replace(t.find(uv), uv.size(), uv + ", \"normals\": [[0, 1, 0], [1, 1, 0], [0, 1, 1], [0, 2, 0]]");
+  const Scene n = parse(t, "s.json", ".");
+  ASSERT_EQ(n.objects[0].normals.size(), 2u);  // per triangle (0, 1, 2) and (0, 2, 3)
+  EXPECT_DOUBLE_EQ(n.objects[0].normals[1][2][1], 2.0);
+  EXPECT_TRUE(n.objects[1].normals.empty());
+}
+}  // namespace

@@ -65,6 +65,37 @@ TEST(VectorFile, MissingFileNamesThePath) {
   }
 }
 
+// `--shard K/N` (texunit/shard.hpp): the N shards' rows tile every block's sets in order, the
+// header round-trips, and a malformed shard header names the line.
+TEST(VectorFile, ShardsTileTheSetAndRoundTrip) {
+  for (const auto& b : blocks::all()) {
+    for (const auto& set : b.sets) {
+      const auto whole = blocks::generate(b, set, 301, 9);
+      std::vector<std::vector<uint64_t>> joined;
+      for (uint64_t k = 0; k < 3; ++k) {
+        const auto part = blocks::generate(b, set, 301, 9, 1, Shard{k, 3});
+        EXPECT_EQ(part.shard, std::to_string(k) + "/3");
+        EXPECT_EQ(part.first_vector, joined.size()) << b.name << " " << set;
+        const auto back = vec::parse(vec::serialise(part), "mem");
+        EXPECT_EQ(back.shard, part.shard);
+        EXPECT_EQ(back.first_vector, part.first_vector);
+        joined.insert(joined.end(), part.rows.begin(), part.rows.end());
+      }
+      EXPECT_EQ(joined, whole.rows) << b.name << " " << set;
+    }
+  }
+  const std::string head = "# texunit-vectors 1\n# block: reciprocal\n# set: golden\n# seed: 7\n";
+  EXPECT_EQ(error_of(head + "# shard: 3/3 first 0\n"),
+            "t.vec:5: shard '3/3 first 0' is not 'K/N first F' (0 <= K < N, F a decimal row index)");
+  EXPECT_EQ(error_of(head + "# shard: 1/3\n"),
+            "t.vec:5: shard '1/3' is not 'K/N first F' (0 <= K < N, F a decimal row index)");
+  EXPECT_EQ(Shard::parse("2/3").range(10), (std::pair<uint64_t, uint64_t>(6, 10)));
+  EXPECT_EQ(Shard::parse("1/4").range(~0ull).first, 0x3fffffffffffffffull);  // no 64-bit overflow
+  EXPECT_THROW(Shard::parse("1/0"), std::invalid_argument);
+  EXPECT_THROW(Shard::parse("-1/4"), std::invalid_argument);
+  EXPECT_EQ(Shard::parse("15/16").str(), "15/16");
+}
+
 TEST(VectorFile, GeneratedSetsRoundTripAndMatchTheModel) {
   for (const auto& b : blocks::all()) {
     for (const auto& set : b.sets) {

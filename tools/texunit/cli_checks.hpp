@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "texunit/shard.hpp"
+
 namespace tu::cli {
 
 constexpr int kUsageExit = 2;  // every usage error, as every bad input
@@ -39,6 +41,20 @@ inline CLI::Validator non_negative_integer() {
         return {};
       },
       "UINT");
+}
+
+// `--shard K/N` (texunit/shard.hpp): 0 <= K < N.
+inline CLI::Validator shard_spec() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        try {
+          tu::Shard::parse(s);
+        } catch (const std::invalid_argument& e) {
+          return e.what();
+        }
+        return {};
+      },
+      "K/N");
 }
 
 // An odd integer in [lo, hi] (filter sizes).

@@ -34,10 +34,41 @@ case $case in
     grep -q "unknown block 'recip' (known: reciprocal, persp" "$tmp/err" || fail "message: $(cat "$tmp/err")"
     [ ! -e "$tmp/r.json" ] || fail "partial output written"
     ;;
+  render_procedural)
+    # Procedural materials: an animation (one PNG per frame, the smoke moves), the PSNR against the
+    # truth, and the RTL engine's refusal (exit 2, nothing written).
+    "$tu" render docs/scenes/procedural.json --engine cmodel --frames 3 --dt 0.5 --out "$tmp/a" 2>/dev/null >/dev/null
+    for i in 0000 0001 0002; do [ -s "$tmp/a/cmodel_$i.png" ] || fail "frame $i missing"; done
+    ! cmp -s "$tmp/a/cmodel_0000.png" "$tmp/a/cmodel_0001.png" || fail "frames 0 and 1 are equal"
+    "$tu" render docs/scenes/procedural.json --engine cmodel --vs ref --out "$tmp/b" 2>/dev/null >"$tmp/b.txt"
+    grep -q "PSNR cmodel vs ref: .* dB over 2\?[0-9]* covered pixels; ground .* dB smoke .* dB" "$tmp/b.txt" || fail "$(cat "$tmp/b.txt")"
+    [ -s "$tmp/b/heat_cmodel_vs_ref.png" ] || fail "heat map missing"
+    rc=0; "$tu" render docs/scenes/procedural.json --engine rtl --out "$tmp/c" 2>"$tmp/err" >/dev/null || rc=$?
+    [ "$rc" = 2 ] || fail "rtl engine: exit $rc"
+    grep -q "/materials/marble/procedural: the noise unit is not in the RTL" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    [ ! -e "$tmp/c" ] || fail "partial output written"
+    ;;
   plan_default)
     "$tu" plan default --json --out "$tmp/cfg.sv" >"$tmp/p.json"
     [ "$(val "$tmp/p.json" "d['filter'], d['relief'], d['persp'].split('/')[0]")" = "('ewa', True, 'persp')" ] || fail "$(cat "$tmp/p.json")"
     grep -q "localparam bit HasEwa = 1'b1;" "$tmp/cfg.sv" || fail "HasEwa"
+    # No light in the default scene: no shading stage.
+    [ "$(val "$tmp/p.json" "d['shading']")" = False ] || fail "shading $(cat "$tmp/p.json")"
+    grep -q "localparam bit HasShading = 1'b0;" "$tmp/cfg.sv" || fail "HasShading"
+    ;;
+  plan_shaded_sphere)
+    # A light: the shading stage with the cheapest model within max_brdf_mad (0.01: F_QR, MAD
+    # 0.0082, the fewest cells); a tighter budget (0.002) needs F_ST16; a model the material names wins.
+    "$tu" plan docs/scenes/shaded_sphere.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
+    [ "$(val "$tmp/p.json" "d['shading']['model']")" = "brdf/qr" ] || fail "$(cat "$tmp/p.json")"
+    grep -q "localparam bit HasShading = 1'b1;" "$tmp/cfg.sv" || fail "HasShading"
+    grep -q "localparam int ShadeModel = 6;" "$tmp/cfg.sv" || fail "ShadeModel"
+    sed 's/"max_brdf_mad": 0.01/"max_brdf_mad": 0.002/' docs/scenes/shaded_sphere.json >"$tmp/tight.json"
+    "$tu" plan "$tmp/tight.json" --json >"$tmp/p2.json"
+    [ "$(val "$tmp/p2.json" "d['shading']['model']")" = "brdf/st16" ] || fail "$(cat "$tmp/p2.json")"
+    sed 's/"specular": {"n": 40/"specular": {"model": "dsh", "n": 40/' docs/scenes/shaded_sphere.json >"$tmp/pinned.json"
+    "$tu" plan "$tmp/pinned.json" --json >"$tmp/p3.json"
+    [ "$(val "$tmp/p3.json" "d['shading']['model'], d['shading']['why']")" = "('brdf/dsh', 'named by the materials (MAD 0.00251)')" ] || fail "$(cat "$tmp/p3.json")"
     ;;
   plan_ui_quad)
     # Head-on, magnified: bilinear instead of EWA, no relief hardware; fewer cells than the full unit.
@@ -53,15 +84,15 @@ case $case in
     # The package lints (-Wall) as the RTL top would read it.
     cat >"$tmp/tu_cfg_user.sv" <<'SV'
 module tu_cfg_user (
-  output logic [7:0]  has_o,
+  output logic [8:0]  has_o,
   output logic [2:0]  wsrc_o,
   output logic [31:0] sizes_o
 );
   assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasTriFilter, tu_unit_cfg_pkg::HasNearest, tu_unit_cfg_pkg::HasRelief,
-                  tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax};
+                  tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax, tu_unit_cfg_pkg::HasShading};
   assign wsrc_o = tu_unit_cfg_pkg::WeightSources;
   assign sizes_o = tu_unit_cfg_pkg::PomMaxLayers + tu_unit_cfg_pkg::WtabLog2N + tu_unit_cfg_pkg::Wtab2dLog2N +
-                   tu_unit_cfg_pkg::PerspLanes;
+                   tu_unit_cfg_pkg::PerspLanes + tu_unit_cfg_pkg::ShadeModel;
 endmodule
 SV
     verilator --lint-only -Wall "$tmp/tu_unit_cfg_pkg.sv" "$tmp/tu_cfg_user.sv" || fail "package does not lint"
@@ -72,7 +103,10 @@ SV
     diff -u rtl/0_pkg/tu_unit_cfg_pkg.sv "$tmp/full.sv" || fail "rtl/0_pkg/tu_unit_cfg_pkg.sv is not the full unit: texunit plan default --out-full rtl/0_pkg/tu_unit_cfg_pkg.sv"
     ;;
   plan_corridor)
-    "$tu" plan docs/scenes/corridor.json --json >"$tmp/p.json"
+    "$tu" plan docs/scenes/corridor.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
+    # The RTL co-simulation's corridor unit (TextureUnitRtl.CorridorPlannedUnit...) is this package.
+    diff -u testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv "$tmp/cfg.sv" ||
+      fail "testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv is stale: texunit plan docs/scenes/corridor.json --out testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv"
     [ "$(val "$tmp/p.json" "d['filter'], d['relief']")" = "('ewa', True)" ] || fail "$(cat "$tmp/p.json")"
     [ "$(val "$tmp/p.json" "any('iter_parallax' in b for b in d['specialised']['blocks'])")" = True ] || fail "iterative relief"
     ;;
@@ -131,6 +165,77 @@ SV
     if "$tu" render docs/scenes/ui_quad.json --pipeline object-space --max-samples 100 --out "$tmp/bad2" 2>"$tmp/err"; then fail "cap ignored"; fi
     grep -q "object 'panel' (/objects/0): object-space samples exceed --max-samples 100" "$tmp/err" || fail "message: $(cat "$tmp/err")"
     [ ! -e "$tmp/bad2/objspace_ref.png" ] || fail "partial output written"
+  shard_vectors_cosim)
+    # 4 shards == the unsharded run: vector rows tile the set in order; the merged co-simulation
+    # (file split by `cosim --shard`, and per-shard vector files) equals the whole file's run
+    # (sim_cycles and wall_s are sums over the shards' runs, not compared).
+    "$tu" vectors --block reciprocal --set random --count 1003 --seed 3 --out "$tmp/all.vec" 2>/dev/null
+    "$tu" cosim --block reciprocal --vectors "$tmp/all.vec" --seed 5 --json >"$tmp/all.json"
+    for k in 0 1 2 3; do
+      "$tu" vectors --block reciprocal --set random --count 1003 --seed 3 --shard $k/4 --out "$tmp/v$k.vec" 2>/dev/null
+      grep -q "^# shard: $k/4 first $(( k * 1003 / 4 ))$" "$tmp/v$k.vec" || fail "shard header of v$k.vec"
+      grep -v '^#' "$tmp/v$k.vec" >>"$tmp/rows.txt"
+      "$tu" cosim --block reciprocal --vectors "$tmp/all.vec" --seed 5 --shard $k/4 --json >"$tmp/c$k.json"
+      "$tu" cosim --block reciprocal --vectors "$tmp/v$k.vec" --seed 5 --json >"$tmp/f$k.json"
+    done
+    cmp -s <(grep -v '^#' "$tmp/all.vec") "$tmp/rows.txt" || fail "shard rows differ from the unsharded set"
+    "$tu" merge "$tmp"/c{3,1,0,2}.json --json "$tmp/m.json"   # any order
+    "$tu" merge "$tmp"/f{0,1,2,3}.json >"$tmp/mf.json"
+    for m in m mf; do
+      python3 - "$tmp/all.json" "$tmp/$m.json" <<'PY' || fail "merged $m differs from the unsharded run"
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:])
+skip = {"sim_cycles", "wall_s", "err_sum_sq"}
+bad = [k for k in a if k not in skip and a[k] != b.get(k)]
+close = abs(a["err_sum_sq"] - b["err_sum_sq"]) <= 1e-12 * a["err_sum_sq"]
+if bad or not close or "shard" in b:
+    sys.exit("differing keys: %s, err_sum_sq %s vs %s" % (bad, a["err_sum_sq"], b["err_sum_sq"]))
+PY
+    done
+    # A missing, repeated or mixed shard is refused, naming it.
+    if "$tu" merge "$tmp"/c{0,1,3}.json 2>"$tmp/err"; then fail "merged 3 of 4 shards"; fi
+    grep -q "shards 2 of 4 are missing" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    if "$tu" merge "$tmp"/c{0,1,1,2,3}.json 2>"$tmp/err"; then fail "merged a shard twice"; fi
+    grep -q "shard 1/4 given twice" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    if "$tu" cosim --block reciprocal --vectors "$tmp/v1.vec" --shard 0/2 --json 2>"$tmp/err" >/dev/null; then fail "split a shard file"; fi
+    grep -q "already shard 1/4" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    if "$tu" vectors --block reciprocal --shard 4/4 --out "$tmp/x.vec" 2>"$tmp/err"; then fail "accepted shard 4/4"; fi
+    grep -q "need 0 <= K < N" "$tmp/err" && [ ! -e "$tmp/x.vec" ] || fail "message: $(cat "$tmp/err")"
+    ;;
+  shard_every_block)
+    # Every block with RTL: a random set split by `cosim --shard` into 4 and merged equals the
+    # whole file's co-simulation (span-continuing blocks split only where a run starts; shard 0 holds
+    # >= 256 vectors, the stall-free prefix latency and II are measured on).
+    for f in vectors/golden/*.vec; do
+      b=$(basename "$f" .vec)
+      "$tu" vectors --block "$b" --set random --count 1200 --seed 11 --out "$tmp/$b.vec" 2>/dev/null
+      "$tu" cosim --block "$b" --vectors "$tmp/$b.vec" --json >"$tmp/$b.all.json" || fail "$b: whole run"
+      for k in 0 1 2 3; do "$tu" cosim --block "$b" --vectors "$tmp/$b.vec" --shard $k/4 --json >"$tmp/$b.$k.json" || fail "$b: shard $k"; done
+      "$tu" merge "$tmp/$b".[0-3].json --json "$tmp/$b.m.json" || fail "$b: merge"
+      python3 - "$tmp/$b.all.json" "$tmp/$b.m.json" <<'PY' || fail "$b: merged run differs from the whole run"
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:])
+bad = [k for k in a if k not in ("sim_cycles", "wall_s", "err_sum_sq") and a[k] != b.get(k)]
+sys.exit("differing keys: %s" % bad if bad else 0)
+PY
+    done
+    ;;
+  shard_report)
+    # Report groups round-robin over 4 shards, merged: the unsharded rows (timings excepted) and table.
+    "$tu" report --blocks reciprocal,persp,ellipse --count 300 --no-yosys --json "$tmp/all.json" >/dev/null 2>&1
+    for k in 0 1 2 3; do
+      "$tu" report --blocks reciprocal,persp,ellipse --count 300 --no-yosys --shard $k/4 --json "$tmp/r$k.json" >/dev/null 2>&1
+    done
+    "$tu" merge "$tmp"/r{2,0,3,1}.json --json "$tmp/m.json" --markdown "$tmp/m.md" >/dev/null 2>&1
+    python3 - "$tmp/all.json" "$tmp/m.json" <<'PY' || fail "merged report differs from the unsharded run"
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:])
+t = lambda rows: [{k: v for k, v in r.items() if k not in ("cmodel_ns_per_item", "rtl_sim_items_per_s")} for r in rows]
+sys.exit(0 if len(a) > 3 and t(a) == t(b) else 1)
+PY
+    grep -q "^## ellipse" "$tmp/m.md" && grep -q "texunit merge. of 4" "$tmp/m.md" || fail "merged markdown"
+    if "$tu" merge "$tmp"/r0.json "$tmp"/r0.json --json "$tmp/x.json" 2>"$tmp/err"; then fail "merged a report shard twice"; fi
+    grep -q "block 'reciprocal' is in shard files 1 and 2" "$tmp/err" && [ ! -e "$tmp/x.json" ] || fail "message: $(cat "$tmp/err")"
     ;;
   *) fail "unknown case" ;;
 esac

@@ -13,6 +13,7 @@
 #include "complexity/complexity.hpp"
 #include "pom/relief_quality.hpp"
 #include "cosim.hpp"
+#include "merge.hpp"
 #include "plan.hpp"
 #include "render_cmd.hpp"
 #include "sysmodel_cmd.hpp"
@@ -32,26 +33,36 @@ namespace {
 constexpr uint64_t kMaxCount = 1ull << 22;
 
 int cmd_vectors(const std::string& block, const std::string& set, uint64_t count, uint64_t seed,
-                const std::string& out, int threads) {
+                const std::string& out, int threads, const tu::Shard& shard) {
   const auto& b = tu::blocks::find(block);
   tu::cli::Outputs outs;
   const std::string tmp = outs.stage(out);
-  const auto vf = tu::blocks::generate(b, set, count, seed, threads);
+  const auto vf = tu::blocks::generate(b, set, count, seed, threads, shard);
   tu::vec::write(vf, tmp);
   outs.commit();
-  std::cerr << "wrote " << vf.rows.size() << " vectors (" << block << ", " << set << ") to " << out
-            << "\n";
+  std::cerr << "wrote " << vf.rows.size() << " vectors (" << block << ", " << set
+            << (vf.shard.empty() ? "" : ", shard " + vf.shard + " from vector " + std::to_string(vf.first_vector))
+            << ") to " << out << "\n";
   return 0;
 }
 
 int cmd_cosim(const std::string& block, const std::string& file, double stall, uint64_t seed,
-              const std::string& fst, bool json, const std::string& rtl) {
-  const auto vf = tu::vec::read(file);
+              const std::string& fst, bool json, const std::string& rtl, const tu::Shard& shard) {
+  auto vf = tu::vec::read(file);
   if (vf.block != block)
     throw std::invalid_argument(file + ": vectors are for block '" + vf.block + "', not '" +
                                 block + "'");
   if (vf.rows.empty())
     throw std::invalid_argument(file + ": no vectors (the file has a header and no data line)");
+  if (!shard.whole()) {  // rows [first, last) of the file (a vectors shard file: split it no further)
+    if (!vf.shard.empty())
+      throw std::invalid_argument(file + ": already shard " + vf.shard + " of a set (run it without --shard)");
+    const auto [first, last] = tu::blocks::shard_rows(tu::blocks::find(vf.block), vf.rows, vf.indices(tu::vec::Role::In), shard);
+    vf.rows = std::vector<std::vector<uint64_t>>(vf.rows.begin() + static_cast<std::ptrdiff_t>(first),
+                                                 vf.rows.begin() + static_cast<std::ptrdiff_t>(last));
+    vf.shard = shard.str();
+    vf.first_vector = first;
+  }
   // The waveform is written by Verilator, which fails silently: check its directory first.
   tu::cli::Outputs outs;
   const std::string fst_tmp = fst.empty() ? "" : outs.stage(fst);
@@ -60,12 +71,14 @@ int cmd_cosim(const std::string& block, const std::string& file, double stall, u
   opt.run.seed = seed;
   opt.run.fst_path = fst_tmp;
   opt.rtl = rtl;
+  opt.first_vector = vf.first_vector;
   tu::cosim::Report rep;
   try {
     rep = tu::cosim::run(vf, opt);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(file + ": " + e.what());
   }
+  rep.shard = vf.shard;
   if (json) {
     std::cout << rep.json() << "\n";
   } else {
@@ -220,6 +233,10 @@ int main(int argc, char** argv) {
   vec->add_option("--seed", seed, "generator seed")->check(tu::cli::non_negative_integer());
   vec->add_option("--out", out, "output file")->required();
   vec->add_option("--threads", threads, threads_help)->check(CLI::Range(0, 4096));
+  std::string shard_text = "0/1";
+  const char* shard_help = "run part K of N (0 <= K < N; `texunit merge` combines the parts' JSON)";
+  vec->add_option("--shard", shard_text, "write rows [floor(K*T/N), floor((K+1)*T/N)) of the T-row set")
+      ->check(tu::cli::shard_spec());
 
   auto* cos = app.add_subcommand("cosim", "run the RTL against the C model on a vector file");
   cos->add_option("--block", block, "block name")->required();
@@ -231,6 +248,7 @@ int main(int argc, char** argv) {
   cos->add_flag("--json", json, "print one JSON object");
   std::string rtl_variant;
   cos->add_option("--rtl", rtl_variant, "RTL variant to run on the block's vectors (e.g. perlin3d_serial)");
+  cos->add_option("--shard", shard_text, shard_help)->check(tu::cli::shard_spec());
 
   auto* gen = app.add_subcommand("gen-rtl", "write rtl/generated/ from the C model's formats and tables");
   gen->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
@@ -276,6 +294,16 @@ int main(int argc, char** argv) {
   rep->add_flag("--no-yosys", no_yosys, "do not synthesise (cells: not measured)");
   rep->add_option("--stdcell-cache", ro.stdcell_cache, "standard-cell results (texunit stdcell); read only");
   rep->add_option("--root", ro.root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
+  rep->add_option("--shard", shard_text, "measure the block groups i with i % N == K (groups in report order)")
+      ->check(tu::cli::shard_spec());
+
+  tu::cli::MergeArgs merge_args;
+  auto* mrg = app.add_subcommand("merge", "combine the JSON of `--shard K/N` runs (cosim or report) into one result");
+  mrg->add_option("FILES", merge_args.files, "shard JSON files (`cosim --json` output, or `report --json` files)")
+      ->required()->check(CLI::ExistingFile);
+  mrg->add_option("--json", merge_args.report.json, "write the merged JSON here (cosim: default standard output)");
+  mrg->add_option("--markdown", merge_args.report.markdown, "report shards: write the Markdown tables");
+  mrg->add_option("--plots", merge_args.report.plots, "report shards: directory for the Pareto plots");
 
   std::string rtl_top;
   std::string rtl_list;
@@ -317,14 +345,17 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : tu::cli::kUsageExit;
   }
   try {
-    if (*vec) return cmd_vectors(block, set, count, seed, out, threads);
+    const tu::Shard shard = tu::Shard::parse(shard_text);
+    if (*vec) return cmd_vectors(block, set, count, seed, out, threads, shard);
+    if (*mrg) return tu::cli::run_merge(merge_args);
     if (*rnd) return tu::cli::run_render(render_args);
     if (*sysm) return tu::cli::run_sysmodel(sysmodel_args);
     if (*objs) return tu::cli::run_objspace(objspace_args);
-    if (*cos) return cmd_cosim(block, file, stall, seed, fst, json, rtl_variant);
+    if (*cos) return cmd_cosim(block, file, stall, seed, fst, json, rtl_variant, shard);
     if (*gen) return cmd_gen_rtl(root, check);
     if (*rep) {
       ro.yosys = !no_yosys;
+      ro.shard = shard;
       return tu::report::run(ro);
     }
     if (*pln) return tu::plan::run(po);

@@ -18,7 +18,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <set>
+#include "brdf/brdf_error.hpp"
+#include "brdf/brdf_shade.hpp"
 #include "ewa/ewa_cycles.hpp"
+#include "texunit/shading.hpp"
 #include "texunit/render.hpp"
 #include "texunit/texture_unit_model.hpp"
 #include "texunit/scene.hpp"
@@ -122,9 +126,9 @@ double texels_per_pixel(const render::Frame& f) {
   return f.pixels.empty() ? 0 : t / static_cast<double>(f.pixels.size());
 }
 
-// Clip-volume errors in dB: 20 log10(1 / rms) with the value range [0, 1] as the peak, i.e. the
-// PSNR of the clip volume itself (the EWA engine does not use the clip volume yet, so there is no
-// render to measure). Weight sources are measured on the render (weight_render_db).
+// Weight-table rows the EWA engine does not implement: 20 log10(1 / rms) with the value range
+// [0, 1] as the peak. Weight sources and clip-volume variants are measured on the render
+// (weight_render_db, clip_render_db).
 double weight_db(const TRow& r) { return r.rms > 0 ? 20 * std::log10(1 / r.rms) : INFINITY; }
 
 // The EWA engine's weight source of a weight row, if the engine implements it (formula, the RTL's
@@ -239,6 +243,8 @@ json unit_json(const Unit& u) {
 struct Config {
   bool trilinear, ewa, bilinear, tri_filter, nearest, relief, pom, iter_parallax;
   int pom_max_layers, weight_sources, wtab_log2n, wtab2d_log2n, persp_lanes;
+  bool shading = false;
+  brdf::Model shade_model = shading::kUnitModel;
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -259,6 +265,9 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam int WtabLog2N = " << c.wtab_log2n << ";\n"
      << "  localparam int Wtab2dLog2N = " << c.wtab2d_log2n << ";\n"
      << "  localparam int PerspLanes = " << c.persp_lanes << ";\n"
+     << "  localparam bit HasShading = 1'b" << c.shading << ";  // shading stage (tu_shade) after the filter\n"
+     << "  // brdf::Model code: 0 blinn, 1 schlick, 2 msh, 3 dsh, 4 scos2, 5 st16, 6 qr\n"
+     << "  localparam int ShadeModel = " << static_cast<int>(c.shade_model) << ";  // " << brdf::name(c.shade_model) << "\n"
      << "endpackage\n";
   return sv.str();
 }
@@ -403,7 +412,6 @@ int run(const Options& opt) {
   const TRow* persp = cheapest(rows_of("persp"), [&](const TRow& r) { return r.max_abs <= s.budget.max_texel_err; },
                                [](const TRow& r) { return -r.max_abs; }, texel_field, "persp", "%.4g texel");
   const TRow* setup = one("persp_setup", "setup");
-  auto db_ok = [&](const TRow& r) { return weight_db(r) >= s.budget.min_psnr_db; };
   std::vector<const TRow*> weight_cands = rows_of("gauss_weight");
   for (const TRow* r : rows_of("weight_table")) weight_cands.push_back(r);
   std::vector<const TRow*> relief_rows;
@@ -440,13 +448,58 @@ int run(const Options& opt) {
     return it != render_db.end() ? it->second : weight_db(r);
   };
   auto render_ok = [&](const TRow& r) { return weight_render_db(r) >= s.budget.min_psnr_db; };
+  // Clip-volume variants: PSNR of the C-model EWA render with the scene's border weights in that
+  // variant (every material, scene::with_clip) against the float EWA with the exact Phi border
+  // weights, on the texture path (docs/blocks/ewa.md "Border weights"); one render per variant.
+  std::map<std::string, double> clip_db;
+  if (filter == "ewa") {
+    const scene::Scene flat = scene::without_relief(s);
+    const render::Frame ref_clip = render::render_ref(scene::with_clip(flat, "mm_p3"), scene::Filter::Ewa);
+    for (const TRow* r : rows_of("clip_volume"))
+      if (!clip_db.count(r->variant))
+        clip_db[r->variant] = render::psnr_covered(
+            render::render_cmodel(scene::with_clip(flat, r->variant), scene::Filter::Ewa, render::texture_path_only()), ref_clip);
+  }
+  auto clip_render_db = [&](const TRow& r) { return clip_db.at(r.variant); };
+  auto clip_ok = [&](const TRow& r) { return clip_render_db(r) >= s.budget.min_psnr_db; };
   if (filter == "ewa") {
     weights = cheapest(weight_cands, render_ok, weight_render_db, psnr_field, "EWA weight source", "%.1f dB");
-    clip = cheapest(rows_of("clip_volume"), db_ok, weight_db, psnr_field, "clip_volume", "%.1f dB");
+    clip = cheapest(rows_of("clip_volume"), clip_ok, clip_render_db, psnr_field, "clip_volume", "%.1f dB");
     spec.stages.push_back({{clip}});
     spec.stages.push_back({{weights}});
   }
   spec.texels_per_pixel = texels_per_pixel(*chosen_frame);
+
+  // Shading: a scene with a light needs the stage, one without leaves it out. Its model is the one
+  // the lit materials name, else the cheapest pipelined model (II = 1) whose MAD against Blinn on
+  // the thesis grid (the bit-accurate model, brdf::vs_blinn_fx) meets max_brdf_mad.
+  const bool shade = !s.lights.empty();
+  const TRow* brdf_row = nullptr;
+  std::map<const TRow*, double> brdf_mad;
+  std::string shade_why = "no light in the scene: no shading stage";
+  if (shade) {
+    std::set<std::string> pinned;
+    for (const auto& o : s.objects)
+      if (const auto& sp = s.materials.at(o.material).specular; sp && sp->model != "auto") pinned.insert(sp->model);
+    if (pinned.size() > 1)
+      throw BudgetError(s.source + ": /materials: specular models " + *pinned.begin() + " and " + *pinned.rbegin() +
+                        ": the unit's shading stage has one BRDF model");
+    std::vector<const TRow*> cands;
+    for (const TRow* r : rows_of("brdf"))
+      if (r->ii <= 1) cands.push_back(r);
+    for (const TRow* r : cands) brdf_mad[r] = brdf::vs_blinn_fx(shading::model_of(r->variant)).mad;
+    if (pinned.size() == 1) {
+      brdf_row = one("brdf", *pinned.begin());
+      shade_why = "named by the materials";
+    } else {
+      const std::string mad_field = s.source + ": /error_budget/max_brdf_mad = " + fmt("%g", s.budget.max_brdf_mad);
+      brdf_row = cheapest(cands, [&](const TRow& r) { return brdf_mad.at(&r) <= s.budget.max_brdf_mad; },
+                          [&](const TRow& r) { return -brdf_mad.at(&r); }, mad_field, "BRDF model", "%.5f");
+      shade_why = "cheapest with MAD vs Blinn <= " + fmt("%g", s.budget.max_brdf_mad);
+    }
+    if (brdf_mad.count(brdf_row)) shade_why += " (MAD " + fmt("%.5f", brdf_mad.at(brdf_row)) + ")";
+    spec.stages.push_back({{brdf_row}});
+  }
 
   // The full unit: every block, every weight source and relief method, EWA texel walk.
   Unit full;
@@ -461,6 +514,7 @@ int run(const Options& opt) {
   for (const TRow* r : weight_cands) all_weights.push_back({r});
   full.stages.push_back(all_weights);
   full.texels_per_pixel = texels_per_pixel(ewa);
+  if (brdf_row) full.stages.push_back({{brdf_row}});
 
   // 4. RTL configuration.
   const bool has_ewa = uses("ewa"), has_tri = filter != "bilinear";
@@ -474,7 +528,12 @@ int run(const Options& opt) {
   const Config planned{has_tri, has_ewa, uses("bilinear"), uses("trilinear"), false, relief, pom, iterative, max_layers, weight_bit(weights),
                        log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1};
   // The full unit: everything in, relief up to the scene format's 256 layers.
-  const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n, planned.persp_lanes};
+  Config planned_shaded = planned;
+  planned_shaded.shading = shade;
+  if (brdf_row) planned_shaded.shade_model = shading::model_of(brdf_row->variant);
+  // The full unit: F_MSH (the thesis's model) when the scene does not need another.
+  const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n,
+                          planned.persp_lanes, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel};
 
   // 5. Scene cycles of the RTL texture unit (texture path), from the exact cycle model
   //    ewa::stream_cycles on the bit-accurate C-model render's per-pixel work (equal to Verilator:
@@ -491,9 +550,12 @@ int run(const Options& opt) {
     return f == "bilinear" ? scene::Filter::Bilinear : f == "trilinear" ? scene::Filter::Trilinear : scene::Filter::Ewa;
   };
   const auto planned_weights = weights ? engine_source(*weights) : std::nullopt;
-  const uint64_t spec_cycles = scene_cycles(planned_filter, relief, planned_weights);
-  const uint64_t full_cycles = scene_cycles(planned_filter, true, planned_weights);  // the same picture
-  const uint64_t authored_cycles = scene_cycles(authored, true, std::nullopt);
+  // The shading stage (II = 1, fed one word per pixel) adds its latency once, at the end.
+  const uint64_t spec_shade = shade ? static_cast<uint64_t>(brdf::shade::latency(planned_shaded.shade_model)) : 0;
+  const uint64_t full_shade = static_cast<uint64_t>(brdf::shade::latency(everything.shade_model));
+  const uint64_t spec_cycles = scene_cycles(planned_filter, relief, planned_weights) + spec_shade;
+  const uint64_t full_cycles = scene_cycles(planned_filter, true, planned_weights) + full_shade;  // the same picture
+  const uint64_t authored_cycles = scene_cycles(authored, true, std::nullopt) + full_shade;
 
   const size_t px = bil.pixels.size();
   json out = {{"scene", s.source},
@@ -507,12 +569,17 @@ int run(const Options& opt) {
               {"filter_psnr_db", std::isinf(filter_psnr) ? json("reference") : json(filter_psnr)},
               {"filter_reasons", filter_why},
               {"relief", relief},
+              {"shading", shade ? json({{"model", brdf_row->name()}, {"why", shade_why}, {"latency_cycles", brdf_row->latency}})
+                                : json(false)},
               {"persp", persp->name()},
               {"weights", weights ? json(weights->name()) : json(nullptr)},
               {"weights_db", weights ? json(weight_render_db(*weights)) : json(nullptr)},
               {"weights_db_source", weights && render_db.count(weights) ? "C-model EWA render vs float EWA (texture path)"
                                                                         : "20 log10(1/rms) of the weights"},
               {"clip_volume", clip ? json(clip->name()) : json(nullptr)},
+              {"clip_volume_db", clip ? json(clip_render_db(*clip)) : json(nullptr)},
+              {"clip_volume_db_source", "C-model EWA render with border weights vs float EWA with exact Phi border weights (texture path)"},
+              {"clip_volume_render_db", clip_db},
               {"specialised", unit_json(spec)},
               {"full", unit_json(full)},
               {"scene_cycles", {{"specialised", spec_cycles}, {"full", full_cycles}, {"full_as_authored", authored_cycles},
@@ -523,7 +590,7 @@ int run(const Options& opt) {
               {"area_note", "cells are the sum of the blocks' Yosys cells (each block synthesised alone)"}};
   // Everything is decided before anything is written, and every file is written or none.
   cli::Outputs outs;
-  for (const auto& [path, cfg, what] : {std::tuple{opt.out_sv, planned, "specialised"}, {opt.out_full_sv, everything, "full"}}) {
+  for (const auto& [path, cfg, what] : {std::tuple{opt.out_sv, planned_shaded, "specialised"}, {opt.out_full_sv, everything, "full"}}) {
     if (path.empty()) continue;
     if (!(std::ofstream(outs.stage(path)) << package(cfg, origin + " (" + what + " unit)")))
       throw std::runtime_error(path + ": cannot write the file");
@@ -543,10 +610,12 @@ int run(const Options& opt) {
               std::isinf(filter_psnr) ? "is" : (fmt("%.2f", filter_psnr) + " dB").c_str(), filter_why.c_str());
   std::printf("relief: %s\n", relief ? (pom && iterative ? "pom + iterative" : pom ? "pom" : "iterative") : "none (no relief hardware)");
   std::printf("persp: %s, max %.4g texel\n", persp->name().c_str(), persp->max_abs);
-  if (weights) std::printf("weights: %s, %.2f dB (%s); clip volume: %s, %.1f dB (20 log10(1/rms))\n",
+  std::printf("shading: %s\n", shade ? (brdf_row->name() + ", " + shade_why).c_str() : shade_why.c_str());
+  if (weights) std::printf("weights: %s, %.2f dB (%s); clip volume: %s, %.2f dB (C-model EWA render with border "
+                           "weights vs float EWA with exact Phi ones, texture path)\n",
                            weights->name().c_str(), weight_render_db(*weights),
                            render_db.count(weights) ? "C-model EWA render vs float EWA, texture path" : "20 log10(1/rms)",
-                           clip->name().c_str(), weight_db(*clip));
+                           clip->name().c_str(), clip_render_db(*clip));
   auto cyc = [&](uint64_t c) {
     return fmt("%.0f", double(c)) + " (" + fmt("%.2f", double(c) / double(std::max<size_t>(1, px))) + "/px)";
   };

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <iostream>
 #include <unistd.h>
 
+#include "gauss/clip.hpp"
 #include "output.hpp"
 #include "texture_unit_rtl.hpp"
 #include "texunit/parallel.hpp"
@@ -16,6 +18,12 @@
 #include "objspace/objspace.hpp"
 
 namespace tu::cli {
+
+std::vector<std::string> clip_choices() {
+  std::vector<std::string> c{"off"};
+  for (const auto& v : clip::variants()) c.push_back(v.name);
+  return c;
+}
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a) {
   auto* r = app.add_subcommand("render", "render a scene to PNG images (docs/scene-format.md)");
@@ -35,16 +43,31 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
                 "--engine truth: box over the pixel square, or gauss (the EWA's pixel model over the unit disc)")
       ->check(CLI::IsMember({"box", "gauss"}));
   r->add_option("--rtl-unit", a.rtl_unit,
-                 "--engine rtl: the full unit (EWA, trilinear, bilinear and nearest engines, each material's filter per span) "
-                 "or the bilinear-only unit (HasEwa = 0)")
-      ->check(CLI::IsMember({"full", "bilinear"}));
+                 "--engine rtl: the full unit (EWA, trilinear, bilinear and nearest engines, each material's filter per span), "
+                 "the bilinear-only unit (HasEwa = 0) or docs/scenes/corridor.json's planned unit (EWA with the "
+                 "1-D weight table, iterative parallax: --filter ewa --weights table1d)")
+      ->check(CLI::IsMember({"full", "bilinear", "corridor"}));
   r->add_flag("--no-relief", a.no_relief,
-              "cmodel / rtl engines: leave every material's relief out (the texture path alone); the "
+              "leave every material's relief out (the texture path alone; every engine); the "
               "bilinear-only RTL unit has no relief stage and always renders without it");
   r->add_option("--weights", a.weights, "override every material's EWA weight source")
       ->check(CLI::IsMember({"formula", "table1d", "table2d"}));
+  r->add_option("--clip", a.clip, "override every material's EWA sub-texel border weights: a clip-volume "
+                "variant (docs/blocks/gaussian.md) or off (docs/blocks/ewa.md#border-weights)")
+      ->check(CLI::IsMember(clip_choices()));
   r->add_option("--filter", a.filter, "override every material's filter")
       ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa"}));
+  r->add_flag("--no-footprint-limit", a.no_footprint_limit,
+              "procedural materials: keep every octave (footprint_limit false), the aliased field");
+  r->add_option("--vs", a.vs, "also render with this engine (same options) and print the PSNR over covered pixels "
+                "against it, per object too, and write heat_ENGINE_vs_VS.png (e.g. --engine cmodel --vs truth: the aliasing of "
+                "procedural materials)")
+      ->check(CLI::IsMember({"ref", "cmodel", "truth"}));
+  r->add_option("--frames", a.frames, "an animation of N frames, one PNG each (ENGINE_0000.png, ...): frame i "
+                "renders every procedural material at its time + i * --dt")
+      ->check(CLI::Range(1, 100000));
+  r->add_option("--dt", a.dt, "--frames: time step between frames (the procedural materials' time unit)")
+      ->check(CLI::Range(-1e6, 1e6));
   r->add_option("--threads", a.threads, "cmodel / rtl engines: threads for the C-model render (default 0: "
                 "every core); the image is the same for any count")
       ->check(CLI::Range(0, 4096));
@@ -72,7 +95,11 @@ static void print_objspace_stats(const objspace::Stats& st) {
 }
 
 int run_render(const RenderArgs& a) {
-  const scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  scene::Scene s = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  if (a.no_footprint_limit)
+    for (auto& [name, m] : s.materials)
+      if (m.procedural) m.procedural->footprint_limit = false;
+  if (!a.clip.empty()) s = scene::with_clip(std::move(s), a.clip);
   std::optional<scene::Filter> f;
   if (a.filter == "nearest") f = scene::Filter::Nearest;
   if (a.filter == "bilinear") f = scene::Filter::Bilinear;
@@ -83,10 +110,18 @@ int run_render(const RenderArgs& a) {
   if (a.weights == "table1d") w = scene::WeightSource::Table1d;
   if (a.weights == "table2d") w = scene::WeightSource::Table2d;
   // Every output is checked before the render and written only when all succeed (Outputs).
+  if (a.frames > 1 && !a.dump.empty()) throw std::invalid_argument("--dump writes one frame: leave it out with --frames N > 1");
   Outputs outs;
   outs.make_dir(a.out_dir);
-  const std::string png = (std::filesystem::path(a.out_dir) / ((a.pipeline == "object-space" ? "objspace_" : "") + a.engine + ".png")).string();
-  const std::string png_tmp = outs.stage(png);
+  auto frame_png = [&](int i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "_%04d.png", i);
+    return (std::filesystem::path(a.out_dir) / ((a.pipeline == "object-space" ? "objspace_" : "") + a.engine + (a.frames > 1 ? name : ".png"))).string();
+  };
+  const std::string png = frame_png(0);
+  std::vector<std::string> png_tmps;
+  for (int i = 0; i < a.frames; ++i) png_tmps.push_back(outs.stage(frame_png(i)));
+  const std::string& png_tmp = png_tmps[0];
   const std::string dump_tmp = a.dump.empty() ? "" : outs.stage(a.dump);
   render::CmodelOptions opt;
   opt.progress = isatty(STDERR_FILENO);  // a bar on a terminal; none in a log
@@ -98,13 +133,16 @@ int run_render(const RenderArgs& a) {
   if (a.pipeline == "object-space") {
     if (a.engine != "ref" && a.engine != "cmodel")
       throw std::invalid_argument("render --pipeline object-space: --engine must be ref or cmodel (not " + a.engine + ")");
+    if (a.frames > 1 || !a.vs.empty())
+      throw std::invalid_argument("render --pipeline object-space: one frame, without --vs");
     const objspace::Options oo{a.os_spacing, a.max_samples};
     auto r = a.engine == "cmodel" ? objspace::render_cmodel(s, oo) : objspace::render_ref(s, oo);
     frame = std::move(r.frame);
     print_objspace_stats(r.stats);
   } else if (a.engine == "rtl") {
     cosim::RtlRenderOptions ro;
-    ro.has_ewa = a.rtl_unit == "full";
+    ro.has_ewa = a.rtl_unit != "bilinear";
+    ro.corridor_unit = a.rtl_unit == "corridor";
     ro.filter = f;
     ro.weights = w;
     ro.relief = ro.has_ewa && !a.no_relief;
@@ -134,8 +172,38 @@ int run_render(const RenderArgs& a) {
     to.progress = opt.progress;
     frame = render::render_truth(s, to);
   } else {
-    frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt) : render::render_ref(s, f);
+    frame = a.engine == "cmodel" ? render::render_cmodel(s, f, opt)
+                                 : render::render_ref(a.no_relief ? scene::without_relief(s) : s, f);
   }
+  render::TruthOptions to;
+  to.ss = a.ss;
+  to.kernel = a.truth_kernel == "gauss" ? render::TruthKernel::Gaussian : render::TruthKernel::Box;
+  to.relief = !a.no_relief;
+  to.progress = opt.progress;
+  auto render_with = [&](const std::string& engine, const scene::Scene& si) {
+    return engine == "truth" ? render::render_truth(si, to)
+           : engine == "cmodel" ? render::render_cmodel(si, f, opt)
+                                : render::render_ref(a.no_relief ? scene::without_relief(si) : si, f);
+  };
+  auto render_at = [&](const scene::Scene& si) { return render_with(a.engine, si); };
+  if (a.engine != "rtl") frame = render_at(s);
+  std::optional<img::Rgba8Image> heat;  // --vs: |ENGINE - VS| per pixel, 64 levels = red
+  const std::string heat_png = (std::filesystem::path(a.out_dir) / ("heat_" + a.engine + "_vs_" + a.vs + ".png")).string();
+  if (!a.vs.empty()) {
+    const auto other = render_with(a.vs, s);
+    heat = render::error_heatmap(frame.image, other.image, 64);
+    std::printf("PSNR %s vs %s: %.2f dB over %zu covered pixels;", a.engine.c_str(), a.vs.c_str(),
+                render::psnr_covered(frame, other), frame.pixels.size());
+    for (size_t o = 0; o < s.objects.size(); ++o)
+      std::printf(" %s %.2f dB", s.objects[o].name.c_str(),
+                  render::psnr_covered(frame, other, [o](const render::PixelRecord& p) { return p.object == int(o); }));
+    std::printf("\n");
+  }
+  // Frames 1.. of an animation (frame 0 gives the flags and the dump). Time moves only the
+  // procedural materials, which the RTL unit rejects: its frames are all frame 0.
+  for (int i = 1; i < a.frames; ++i)
+    img::write_png_rgba(png_tmps[static_cast<size_t>(i)],
+                        a.engine == "rtl" ? frame.image : render_at(scene::at_time(s, i * a.dt)).image);
   {
     const auto& flags = render::pixel_flags();
     const auto counts = render::flag_counts(frame);
@@ -148,10 +216,14 @@ int run_render(const RenderArgs& a) {
   const std::string lp = (std::filesystem::path(a.out_dir) / "layers.png").string();
   if (layers) img::write_png_gray(outs.stage(lp), *layers);
   if (!a.dump.empty()) render::write_dump_csv(dump_tmp, frame);
+  if (heat) img::write_png_rgba(outs.stage(heat_png), *heat);
   outs.commit();
-  std::cerr << "wrote " << png << " (" << frame.pixels.size() << " covered pixels)\n";
+  std::cerr << "wrote " << png << " (" << frame.pixels.size() << " covered pixels)";
+  if (a.frames > 1) std::cerr << " and " << a.frames - 1 << " more frames to " << frame_png(a.frames - 1);
+  std::cerr << "\n";
   if (layers) std::cerr << "wrote " << lp << " (adaptive relief: N per pixel, (N - 4) / (Nmax - 4) as grey)\n";
   if (!a.dump.empty()) std::cerr << "wrote " << a.dump << "\n";
+  if (heat) std::cerr << "wrote " << heat_png << " (|" << a.engine << " - " << a.vs << "|, 64 levels = red)\n";
   return ok ? 0 : 1;
 }
 
@@ -171,11 +243,14 @@ std::string db(double v) {
 // The demo's C-model rows: every filter (EWA with each weight source) against both references.
 void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
 void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
+// The procedural scene (noise unit): footprint-limited octaves against all octaves.
+void demo_render_procedural(const std::string& out_dir, int threads);
 // The demo's RTL rows: the texture-unit top == the C-model engine on every pixel.
 // `relief`, `relief_refs`: the scene with its relief and its references (the relief row); `s`,
 // `refs`: the texture path.
 bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
                      const std::string& out_dir, int threads);
+bool demo_render_shaded(const std::string& out_dir, int threads);
 }  // namespace
 
 bool demo_render(const std::string& out_dir, int threads) {
@@ -225,6 +300,7 @@ bool demo_render(const std::string& out_dir, int threads) {
   const Refs flat_refs{ewa_flat, truth_flat}, relief_refs{ewa, truth};
   demo_render_cmodel(flat, flat_refs, out_dir, threads);
   demo_render_relief(s, relief_refs, out_dir, threads);
+  demo_render_procedural(out_dir, threads);
   return demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
 }
 
@@ -286,6 +362,36 @@ void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::stri
               "ewa+relief", db(render::psnr_covered(fr, ewa_ref)).c_str(), db(render::psnr_covered(fr, refs.truth)).c_str(),
               db(render::psnr_covered(fr, ewa_ref, rel)).c_str(), db(render::psnr_covered(fr, refs.truth, rel)).c_str(),
               double(fr.pixels.size()) / sec, png.c_str());
+}
+
+void demo_render_procedural(const std::string& out_dir, int threads) {
+  const scene::Scene s = scene::procedural_scene();
+  scene::Scene all = s;
+  for (auto& [name, m] : all.materials) m.procedural->footprint_limit = false;
+  const auto truth = render::render_truth(s);
+  const auto ref = render::render_ref(s);
+  std::printf("\nprocedural scene (docs/scenes/procedural.json, %dx%d: fBm ground, smoke wall; noise unit, "
+              "docs/blocks/noise.md §5), PSNR over covered pixels against the float reference with the "
+              "footprint limit and the truth (16 x 16 samples of the unfiltered field):\n",
+              s.camera.width, s.camera.height);
+  std::printf("%-22s %12s %12s  %s\n", "engine", "vs ref", "vs truth", "image");
+  render::CmodelOptions opt;
+  opt.threads = threads;
+  struct Row {
+    const char* name;
+    render::Frame frame;
+  };
+  const Row rows[] = {{"ref_limited", ref},
+                      {"ref_all_octaves", render::render_ref(all)},
+                      {"cmodel_limited", render::render_cmodel(s, std::nullopt, opt)},
+                      {"cmodel_all_octaves", render::render_cmodel(all, std::nullopt, opt)},
+                      {"truth", truth}};
+  for (const auto& r : rows) {
+    const auto png = (std::filesystem::path(out_dir) / (std::string("procedural_") + r.name + ".png")).string();
+    img::write_png_rgba(png, r.frame.image);
+    std::printf("%-22s %12s %12s  %s\n", r.name, db(render::psnr_covered(r.frame, ref)).c_str(),
+                db(render::psnr_covered(r.frame, truth)).c_str(), png.c_str());
+  }
 }
 
 bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
@@ -356,6 +462,37 @@ bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const 
   std::printf("%s\n", ok ? "RTL texture unit == C model on every pixel"
                           : "MISMATCH: RTL texture unit and C model disagree (see above)");
   return ok;
+}
+
+// The shaded scene (docs/scenes/shaded_sphere.json: one point light, diffuse + the unit's F_MSH
+// highlight on a checkered sphere with vertex normals) through the three engines.
+bool demo_render_shaded(const std::string& out_dir, int threads) {
+  const char* path = "docs/scenes/shaded_sphere.json";
+  if (!std::filesystem::exists(path)) {
+    std::printf("\nshaded scene: %s not found (run the demo from the repository root): skipped\n", path);
+    return true;
+  }
+  const scene::Scene s = scene::load(path);
+  const auto ref = render::render_ref(s);
+  render::CmodelOptions copt;
+  copt.threads = threads;
+  const auto fx = render::render_cmodel(s, std::nullopt, copt);
+  cosim::RtlRenderOptions o;
+  o.threads = threads;
+  const auto rtl = cosim::render_rtl(s, o);
+  const auto dir = std::filesystem::path(out_dir);
+  img::write_png_rgba((dir / "shaded_ref.png").string(), ref.image);
+  img::write_png_rgba((dir / "shaded_cmodel.png").string(), fx.image);
+  img::write_png_rgba((dir / "shaded_rtl.png").string(), rtl.frame.image);
+  const double n = static_cast<double>(std::max<size_t>(1, rtl.frame.pixels.size()));
+  std::printf("\nshaded scene %s (%zu covered pixels; one light, diffuse + %s highlight after the filter):\n"
+              "  C model %s vs the float reference; RTL: %llu mismatches against the C model, %.3f cycles/pixel, "
+              "predicted %.3f (%+.3f %%); images %s/shaded_{ref,cmodel,rtl}.png\n",
+              path, rtl.frame.pixels.size(), brdf::name(o.shade_model).c_str(), db(render::psnr_covered(fx, ref)).c_str(),
+              (unsigned long long)rtl.mismatches, double(rtl.cycles) / n, double(rtl.predicted_cycles) / n,
+              100.0 * (double(rtl.predicted_cycles) / double(std::max<uint64_t>(1, rtl.cycles)) - 1), out_dir.c_str());
+  if (!rtl.ok()) std::printf("  first mismatch: %s\n", rtl.first_mismatch.c_str());
+  return rtl.ok() && rtl.cycles == rtl.predicted_cycles;
 }
 }  // namespace
 

@@ -2,21 +2,28 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 namespace tu::cli {
 
 struct RenderArgs {
   std::string scene, out_dir, dump, engine = "ref", filter, weights, rtl_unit = "full";
+  std::string clip;  // overrides every material's EWA border weights (a clip variant or "off")
   bool no_relief = false;
   int ss = 16;                      // --engine truth: samples per pixel side
   std::string truth_kernel = "box";  // --engine truth: box | gauss
   int threads = 0;  // C-model render and visibility (<= 0: every core)
+  bool no_footprint_limit = false;  // procedural materials: every octave, unfiltered
+  std::string vs;                   // print the PSNR against this engine's render (ref | cmodel | truth)
+  int frames = 1;   // an animation: frame i at every procedural material's time + i * dt
+  double dt = 0.04;
   std::string pipeline = "screen";  // screen | object-space (docs/blocks/objspace.md)
   double os_spacing = 1;            // object-space: sample spacing, pixels at the plane distance
   uint64_t max_samples = 1ull << 28;  // object-space: sample cap of the render
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);
+std::vector<std::string> clip_choices();  // "off" and every gauss::clip variant
 int run_render(const RenderArgs& a);  // throws on bad scenes and unwritable outputs
 
 // The main job's render part: the default scene through the float reference with every filter,

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "texunit/shard.hpp"
+
 namespace tu::report {
 
 struct Row {
@@ -27,6 +29,8 @@ struct Row {
   double ns_per_item() const { return period_ns < 0 || latency_cycles < 0 ? -1 : ii_cycles * period_ns; }
   std::string extra_json;           // block-specific keys, `"k": v, ...` (e.g. brdf: mad_vs_blinn)
   std::string json() const;
+  // The inverse of json() (texunit merge); throws std::invalid_argument naming the missing key.
+  static Row from_json(const std::string& text);
 };
 
 struct Options {
@@ -38,6 +42,8 @@ struct Options {
   std::string no_yosys_why = "--no-yosys";
   std::string stdcell_cache;        // JSON cache of scripts/stdcell_flow.sh results (read only)
   uint64_t count = 20000;           // random vectors per registry block (plus its stiff set)
+  Shard shard;                      // --shard K/N: the groups i with i % N == K (groups() order)
+  std::string provenance;           // markdown header line; empty: "texunit report --count N"
 };
 
 // The files an RTL top needs, in Yosys/Verilator order: the sources of the rtl/manifest.json block
@@ -57,5 +63,9 @@ std::vector<std::string> groups();
 std::vector<Row> rows(const Options& opt);
 std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string& root, bool yosys);
 int run(const Options& opt);
+// The table, JSON, plots and Markdown of measured rows (run() after measuring; texunit merge).
+void write(const std::vector<Row>& rows, const Options& opt);
+// `texunit merge` of report shards: rows of every file, put back in groups() order.
+std::vector<Row> merge_rows(const std::vector<std::vector<Row>>& shards);
 
 }  // namespace tu::report

@@ -1,5 +1,7 @@
 #include "vector_file.hpp"
 
+#include "texunit/shard.hpp"
+
 #include <bit>
 #include <cstdio>
 #include <filesystem>
@@ -121,6 +123,18 @@ VectorFile parse(const std::string& text, const std::string& name) {
           fail(name, ln, "seed '" + val + "' is not an unsigned integer");
         }
         have_seed = true;
+      } else if (key == "shard") {
+        // "K/N first F": Shard::parse checks K/N; F is decimal digits.
+        const auto sp = val.find(" first ");
+        const std::string f = sp == std::string::npos ? "" : trim(val.substr(sp + 7));
+        try {
+          if (f.empty() || f.size() > 19 || f.find_first_not_of("0123456789") != std::string::npos)
+            throw std::invalid_argument("");
+          v.shard = Shard::parse(val.substr(0, sp)).str();
+          v.first_vector = std::stoull(f);
+        } catch (const std::exception&) {
+          fail(name, ln, "shard '" + val + "' is not 'K/N first F' (0 <= K < N, F a decimal row index)");
+        }
       } else if (key == "fields") {
         for (const auto& tok : split_ws(val)) {
           const auto c1 = tok.find(':');
@@ -202,7 +216,9 @@ std::string serialise(const VectorFile& v) {
 
 void serialise(const VectorFile& v, std::ostream& os) {
   os << "# texunit-vectors 1\n# block: " << v.block << "\n# set: " << v.set
-     << "\n# seed: " << v.seed << "\n# fields:";
+     << "\n# seed: " << v.seed;
+  if (!v.shard.empty()) os << "\n# shard: " << v.shard << " first " << v.first_vector;
+  os << "\n# fields:";
   for (const auto& f : v.fields) os << ' ' << f.name << ':' << role_name(f.role) << ':' << f.fmt.str();
   os << '\n';
   char buf[24];

@@ -41,6 +41,10 @@ struct VectorFile {
   std::string block;
   std::string set;
   uint64_t seed = 0;
+  // `--shard K/N`: the file holds rows [first_vector, ...) of the whole set (header `# shard: K/N
+  // first F`); empty shard: the whole set.
+  std::string shard;
+  uint64_t first_vector = 0;
   std::vector<Field> fields;
   std::vector<std::vector<uint64_t>> rows;  // one uint64 per field (raw code or f64 bits)
 

@@ -57,8 +57,19 @@ Row pick(const Row& row, const std::vector<int>& idx) {
   return r;
 }
 
+std::pair<uint64_t, uint64_t> shard_rows(const Block& b, const std::vector<Row>& rows,
+                                         const std::vector<int>& in_idx, Shard s) {
+  const auto starts = [&](uint64_t i) {
+    return i >= rows.size() || !b.starts_run || b.starts_run(in_idx.empty() ? rows[i] : pick(rows[i], in_idx));
+  };
+  auto [first, last] = s.range(rows.size());
+  while (!starts(first)) ++first;
+  while (!starts(last)) ++last;
+  return {first, last};
+}
+
 vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count, uint64_t seed,
-                         int threads) {
+                         int threads, Shard shard) {
   if (std::find(b.sets.begin(), b.sets.end(), set) == b.sets.end())
     throw std::invalid_argument("block '" + b.name + "' has no set '" + set + "'");
   vec::VectorFile v;
@@ -71,7 +82,14 @@ vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count,
   const auto ref_idx = v.indices(vec::Role::Ref);
   // The inputs come from one seeded stream (serial); model and reference are pure functions of
   // a row, so chunks of rows run on every thread, each into its own slots.
-  const std::vector<Row> ins = b.inputs(set, count, seed);
+  std::vector<Row> ins = b.inputs(set, count, seed);
+  if (!shard.whole()) {
+    const auto [first, last] = shard_rows(b, ins, {}, shard);
+    v.shard = shard.str();
+    v.first_vector = first;
+    ins = std::vector<Row>(ins.begin() + static_cast<std::ptrdiff_t>(first),
+                           ins.begin() + static_cast<std::ptrdiff_t>(last));
+  }
   v.rows.resize(ins.size());
   constexpr size_t kChunk = 512;
   const int chunks = static_cast<int>((ins.size() + kChunk - 1) / kChunk);

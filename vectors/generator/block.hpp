@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "texunit/shard.hpp"
 #include "vector_file.hpp"
 
 namespace tu::blocks {
@@ -36,6 +37,10 @@ struct Block {
   std::function<Row(const Row& in)> model;  // out-field codes
   std::function<Row(const Row& in)> ref;    // ref-field bits (f64)
   std::function<ErrPoint(const Row& in, const Row& out, const Row& ref)> error;
+  // Rows where an independent run of the RTL may start, i.e. a `--shard` boundary (e.g. the first
+  // pixel of a span for the incremental divide, whose later pixels continue the span's state);
+  // empty: every row is independent.
+  std::function<bool(const Row& in)> starts_run;
   int latency_cycles = 0;  // declared by the structural scheme
   int ii_cycles = 1;
   // Optional extra JSON key for max_abs_err in the block's own unit (e.g. "max_texel_err").
@@ -46,9 +51,17 @@ const std::vector<Block>& all();
 const Block& find(const std::string& name);  // throws std::invalid_argument listing known names
 
 // A full vector file: inputs, C-model outputs and the reference, for a set of a block. Model and
-// reference rows on `threads` threads (<= 0: every core); the same file for any count.
+// reference rows on `threads` threads (<= 0: every core); the same file for any count. A shard
+// holds the rows [first, last) of the whole set (Shard::range): the inputs stream is drawn in
+// full (cheap) and the model and reference run on the shard's rows only.
 vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count, uint64_t seed,
-                         int threads = 0);
+                         int threads = 0, Shard shard = {});
+
+// Rows [first, last) of shard s of `rows` (vector-file rows whose inputs are at `in_idx`, or input
+// rows when in_idx is empty): Shard::range with each boundary moved forward to the next row where
+// b.starts_run holds, so the shards still tile the rows in order.
+std::pair<uint64_t, uint64_t> shard_rows(const Block& b, const std::vector<Row>& rows,
+                                         const std::vector<int>& in_idx, Shard s);
 
 // Split/join a file row by role.
 Row pick(const Row& row, const std::vector<int>& idx);

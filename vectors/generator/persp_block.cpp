@@ -223,6 +223,7 @@ Block make_persp() {
   b.model = [](const Row& in) { return model_at(in, static_cast<int64_t>(in[6])); };
   b.ref = [](const Row& in) { return ref_at(in, 0); };
   b.error = [](const Row& in, const Row& out, const Row& ref) { return pixel_error(in, out, ref, 0); };
+  b.starts_run = [](const Row& in) { return in[6] == 0; };  // n = 0: a span's first pixel
   b.latency_cycles = fmt::kPerspLatency;
   b.ii_cycles = 1;
   b.err_metric = "max_texel_err";
@@ -297,6 +298,7 @@ Block make_persp_k4() {
     }
     return e;
   };
+  b.starts_run = [](const Row& in) { return in[6] == 0; };  // n = 0: a span's first pixel
   b.latency_cycles = fmt::kPerspLatency;
   b.ii_cycles = 1;
   b.err_metric = "max_texel_err";

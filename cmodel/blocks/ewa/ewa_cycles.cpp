@@ -1,6 +1,8 @@
 #include "ewa_cycles.hpp"
 
 #include <algorithm>
+#include <deque>
+#include <stdexcept>
 
 namespace tu::ewa {
 
@@ -26,45 +28,87 @@ int walk_cycles(const PixelCost& c) {
   return 1 + static_cast<int>(c.box) + fmt::kEwaDrainCycles + (c.no_weight ? 3 : fmt::kEwaNormCycles);
 }
 
-uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival,
-                       const EngineParams& p) {
-  uint64_t setup_free = first_arrival, walker_free = 0, last_out = 0;
-  uint64_t bil_free = first_arrival, tri_free = first_arrival, nst_free = first_arrival;
-  for (size_t i = 0; i < px.size(); ++i) {
-    const PixelCost& c = px[i];
-    // An engine switch waits for the other engine's last output.
-    const uint64_t drained = i > 0 && px[i - 1].engine != c.engine ? last_out + 1 : 0;
-    switch (c.engine) {
-      case Engine::Bilinear: {
-        const uint64_t a = std::max(bil_free, drained);
-        last_out = a + 6;
-        bil_free = a + 7;
-        break;
-      }
-      case Engine::Nearest: {
-        const uint64_t a = std::max(nst_free, drained);
-        last_out = a + 3;
-        nst_free = a + 4;
-        break;
-      }
-      case Engine::Trilinear: {
-        const uint64_t a = std::max(tri_free, drained);
-        last_out = a + (c.one_level ? 8 : 15);
-        tri_free = last_out + 1;
-        break;
-      }
-      case Engine::Ewa: {
-        const uint64_t a = std::max(setup_free, drained);                // accept
-        const uint64_t h = std::max(a + static_cast<uint64_t>(setup_cycles(c, p)), walker_free);
-        const uint64_t o = h + static_cast<uint64_t>(walk_cycles(c));    // output valid and taken
-        setup_free = h + 1;
-        walker_free = o + 1;
-        last_out = o;
-        break;
-      }
+StreamModel::Times StreamModel::add(const PixelCost& c, uint64_t avail) {
+  // An engine switch waits for the other engine's last output.
+  const uint64_t drained = any_ && last_engine_ != c.engine ? last_out_ + 1 : 0;
+  const uint64_t ready = std::max(drained, avail);
+  uint64_t a = 0;
+  switch (c.engine) {
+    case Engine::Bilinear:
+      a = std::max(bil_free_, ready);
+      last_out_ = a + 6;
+      bil_free_ = a + 7;
+      break;
+    case Engine::Nearest:
+      a = std::max(nst_free_, ready);
+      last_out_ = a + 3;
+      nst_free_ = a + 4;
+      break;
+    case Engine::Trilinear:
+      a = std::max(tri_free_, ready);
+      last_out_ = a + (c.one_level ? 8 : 15);
+      tri_free_ = last_out_ + 1;
+      break;
+    case Engine::Ewa: {
+      a = std::max(setup_free_, ready);                                               // accept
+      const uint64_t h = std::max(a + static_cast<uint64_t>(setup_cycles(c, p_)), walker_free_);
+      const uint64_t o = h + static_cast<uint64_t>(walk_cycles(c));                   // output valid and taken
+      setup_free_ = h + 1;
+      walker_free_ = o + 1;
+      last_out_ = o;
+      break;
     }
   }
-  return px.empty() ? 0 : last_out + 1;
+  any_ = true;
+  last_engine_ = c.engine;
+  return {a, last_out_};
+}
+
+uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival, const EngineParams& p) {
+  StreamModel m(p);
+  for (const PixelCost& c : px) m.add(c, first_arrival);
+  return m.cycles();
+}
+
+uint64_t texture_unit_cycles(const std::vector<PixelCost>& px, const std::vector<relief::StagePixel>& relief_px) {
+  if (px.size() != relief_px.size()) throw std::invalid_argument("ewa::texture_unit_cycles: one relief entry per pixel");
+  // Front: span set-up (2) and the expander register (1); the spans wait at the input, so the
+  // expander offers a pixel every clock from then on.
+  constexpr uint64_t kExpander = 3;
+  constexpr size_t kFilterFifo = 4;  // tu_texture_unit FifoDepth
+  using Pipe = std::vector<int>;     // pixel index per stage, -1: empty (tu_pipe_valid)
+  Pipe b1(fmt::kPerspLatency, -1), b2(fmt::kEllLatency, -1);
+  auto advance = [](Pipe& p, int in) {
+    for (size_t k = p.size() - 1; k > 0; --k) p[k] = p[k - 1];
+    p[0] = in;
+  };
+  relief::StageModel stage(relief_px);
+  StreamModel filter;
+  std::deque<uint64_t> pops;  // acceptance cycles of the pixels in the filter FIFO, oldest first
+  size_t in_fifo = 0, ex_next = 0;
+  const uint64_t limit = 1000 + 5000 * static_cast<uint64_t>(px.size());
+  for (uint64_t t = 0; stage.outputs() < px.size(); ++t) {
+    if (t > limit) throw std::logic_error("ewa::texture_unit_cycles: no progress");
+    while (!pops.empty() && pops.front() < t) pops.pop_front(), --in_fifo;  // popped before this clock
+    const bool out_ready = in_fifo < kFilterFifo;
+    // B1 / B2 join in front of the relief stage; the fork feeds both pipelines at once.
+    const bool pj_valid = b1.back() >= 0 && b2.back() >= 0;
+    const bool pj_ready = stage.in_ready(out_ready);
+    const bool b1_en = b1.back() < 0 || (pj_ready && b2.back() >= 0);
+    const bool b2_en = b2.back() < 0 || (pj_ready && b1.back() >= 0);
+    const bool ex_fire = t >= kExpander && ex_next < px.size() && b1_en && b2_en;
+    const size_t out_index = stage.outputs();
+    const auto fired = stage.step(pj_valid, out_ready);
+    if (fired.out) {  // into the filter FIFO: at its head from the next clock
+      const auto times = filter.add(px[out_index], t + 1);
+      pops.push_back(times.accept);
+      ++in_fifo;
+    }
+    const int in = ex_fire ? static_cast<int>(ex_next++) : -1;
+    if (b1_en) advance(b1, in);
+    if (b2_en) advance(b2, in);
+  }
+  return filter.cycles();
 }
 
 uint64_t bilinear_stream_cycles(uint64_t pixels, uint64_t first_arrival) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ewa/ewa_fx.hpp"
+#include "pom/relief.hpp"
 
 namespace tu::ewa {
 
@@ -53,6 +54,33 @@ int walk_cycles(const PixelCost& c);  // hand-over to output valid
 // last output (tu_texture_unit).
 uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival = 0,
                        const EngineParams& p = {});
+
+// The same engines one pixel at a time: pixel c at the engines' input from cycle `avail` on
+// (stream_cycles: every pixel from first_arrival). Returns its acceptance and output cycles.
+class StreamModel {
+ public:
+  explicit StreamModel(const EngineParams& p = {}) : p_(p) {}
+  struct Times {
+    uint64_t accept = 0, out = 0;
+  };
+  Times add(const PixelCost& c, uint64_t avail);
+  uint64_t cycles() const { return any_ ? last_out_ + 1 : 0; }
+
+ private:
+  EngineParams p_;
+  uint64_t setup_free_ = 0, walker_free_ = 0, bil_free_ = 0, tri_free_ = 0, nst_free_ = 0, last_out_ = 0;
+  bool any_ = false;
+  Engine last_engine_ = Engine::Ewa;
+};
+
+// The full texture unit (tu_texture_unit with its relief stage) on a stream of covered pixels,
+// no back-pressure: the front (span set-up, expander, B1 and B2 pipelines under global stall,
+// joined), the relief stage cycle by cycle (relief::StageModel: pixel i shifted or not, its march
+// steps or iterations), the filter FIFO (4) and the engines (StreamModel, each pixel from the
+// clock after it entered the FIFO). px[i], relief_px[i]: pixel i's filter work and relief step.
+// Counted as stream_cycles. Without shifted pixels it equals stream_cycles(px,
+// texture_unit_front_latency(true)).
+uint64_t texture_unit_cycles(const std::vector<PixelCost>& px, const std::vector<relief::StagePixel>& relief_px);
 
 // The bilinear-only top (tu_texture_unit HasEwa = 0, tu_bilinear): 7 clocks per pixel (accept,
 // four texel reads, last data, output), pixels back to back.

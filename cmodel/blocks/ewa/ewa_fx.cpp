@@ -203,6 +203,10 @@ PixelSetup setup(const In& in, const tex::Texture& t, const Config& cfg) {
     su.kyv = k(su.c, su.inv_b);
     su.hu = half_extent(int64_t(su.a) * su.c, int64_t(su.b) * su.s);
     su.hv = half_extent(int64_t(su.a) * su.s, int64_t(su.b) * su.c);
+    if (cfg.clip) {  // border texels up to 1/2 texel outside the ellipse
+      su.hu += kBorderGrow;
+      su.hv += kBorderGrow;
+    }
     // Centre at level L with texel i at i: u / 2^L rounded half up to EwaPosF bits, minus 1/2.
     const int sh = fmt::kTexUvF + level - fmt::kEwaPosF;
     su.cu = (sh > 0 ? round_shift(in.u, sh) : in.u) - kStep / 2;
@@ -218,6 +222,49 @@ PixelSetup setup(const In& in, const tex::Texture& t, const Config& cfg) {
     }
     return su;
   }
+}
+
+Border border(const PixelSetup& su, int64_t q, int64_t xi, int64_t eta) {
+  constexpr int64_t kOne = int64_t(1) << kQF;
+  Border b;
+  if (q < kOne / 4) return b;  // Inside
+  if (q > kOne / 4 * 9) {
+    b.zone = Zone::Outside;
+    return b;
+  }
+  // g = K^T (xi, eta): 2 EwaKF + EwaPosF fraction bits exact, floored to EwaGradF.
+  constexpr int kGSh = 2 * fmt::kEwaKF + fmt::kEwaPosF - fmt::kEwaGradF;
+  b.gu = static_cast<int32_t>((int64_t(su.kxu) * xi + int64_t(su.kyu) * eta) >> kGSh);
+  b.gv = static_cast<int32_t>((int64_t(su.kxv) * xi + int64_t(su.kyv) * eta) >> kGSh);
+  b.g = static_cast<uint32_t>(ellipse::fx::isqrt(static_cast<u128>(int64_t(b.gu) * b.gu + int64_t(b.gv) * b.gv)));
+  // r = floor(sqrt Q): Q has 2 (EwaKF + EwaPosF) = 2 EwaGradF fraction bits.
+  static_assert(kQF == 2 * fmt::kEwaGradF, "r = isqrt(Q) lands on EwaGradF fraction bits");
+  b.r = static_cast<uint32_t>(ellipse::fx::isqrt(static_cast<u128>(q)));
+  // d = (1 - r) r / |g|: num has 2 EwaGradF fraction bits, d = num / (g 2^(EwaGradF - ClipInF)).
+  const int64_t num = ((int64_t(1) << fmt::kEwaGradF) - int64_t(b.r)) * int64_t(b.r);
+  const int64_t den = int64_t(b.g) << (fmt::kEwaGradF - fmt::kClipInF);
+  const int64_t mag = num < 0 ? -num : num;
+  // |d| <= 1/2 iff round(mag / den) <= 2^(ClipInF-1) iff mag < (2^(ClipInF-1) + 1/2) den.
+  if (b.g == 0 || mag >= (int64_t(clip::kHalfCode) * 2 + 1) * den / 2) {
+    b.zone = num > 0 ? Zone::Inside : Zone::Outside;
+    return b;
+  }
+  b.zone = Zone::Band;
+  const int32_t dm = static_cast<int32_t>((mag + den / 2) / den);  // half up in magnitude
+  b.d = num < 0 ? -dm : dm;
+  return b;
+}
+
+uint32_t border_weight(const PixelSetup& su, const Config& cfg, int64_t q, int64_t xi, int64_t eta) {
+  const Border b = border(su, q, xi, eta);
+  constexpr int64_t kOne = int64_t(1) << kQF;
+  if (b.zone == Zone::Outside) return 0;
+  if (b.zone == Zone::Inside) return weight_of(cfg.weights, static_cast<uint64_t>(q), xi, eta);
+  // The boundary weight outside (w(1) = 2^-8 of the formula and the 1-D table exactly).
+  constexpr uint32_t kEdgeW = uint32_t(1) << (fmt::kGaussSqF - 8);
+  const uint32_t w = q < kOne ? weight_of(cfg.weights, static_cast<uint64_t>(q), xi, eta) : kEdgeW;
+  const uint64_t v = clip::eval(*cfg.clip, b.d);
+  return static_cast<uint32_t>((uint64_t(w) * v + (uint64_t(1) << (fmt::kClipOutF - 1))) >> fmt::kClipOutF);
 }
 
 namespace {
@@ -273,7 +320,17 @@ Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool di
       }
       if (st && st->q_trace) st->q_trace->push_back(q);
       ++out.texels_visited;
-      const uint32_t w = q < one ? weight_of(cfg.weights, static_cast<uint64_t>(q), xi, eta) : 0;
+      uint32_t w;
+      if (cfg.clip) {
+        w = border_weight(su, cfg, q, xi, eta);
+        if (st) {
+          const Border b = border(su, q, xi, eta);
+          st->max_abs_g = std::max({st->max_abs_g, int64_t(std::abs(b.gu)), int64_t(std::abs(b.gv))});
+          st->max_root = std::max({st->max_root, uint64_t(b.r), uint64_t(b.g)});
+        }
+      } else {
+        w = q < one ? weight_of(cfg.weights, static_cast<uint64_t>(q), xi, eta) : 0;
+      }
       if (w > 0) {
         ++out.texels_inside;
         const img::Rgba8 px = t.fetch(su.level, x, y);
@@ -336,9 +393,9 @@ In random_in(std::mt19937_64& rng) {
   return in_from_local(l, 4 << fmt::kEllLogF, rng() % 8 == 0 ? 12 : 8);
 }
 
-Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels) {
+Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels, bool clip) {
   const auto& o = in.b2;
-  const Params p{16, static_cast<int>(max_texels)};
+  const Params p{16, static_cast<int>(max_texels), clip};
   const double u = std::ldexp(double(in.u), -fmt::kTexUvF), v = std::ldexp(double(in.v), -fmt::kTexUvF);
   if ((o.flags & ellipse::fx::kHorizon) || o.lmaj == ellipse::fx::kLogNegInf)
     return filter_axes(t, u, v, 1, 1, 0, p);

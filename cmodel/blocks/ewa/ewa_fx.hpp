@@ -23,7 +23,12 @@
 //     weight from the formula, the 1-D table (by Q) or the 2-D table (by xi, eta).
 //  5. Normalise: wsum leading-one normalised to EwaNrmW bits (floor), reciprocal unit, channel =
 //     round_half_up(acc R 2^-(RecipOutF + p)) saturated to 255.
-// Not modelled: clip-volume border weights (gauss::clip) -- the weight is the plain Gaussian model.
+// Border weights (Config::clip, seed 003 §2, docs/blocks/ewa.md "Border weights"): the box grows
+// by 1/2 texel per side; a texel with 1/4 <= Q <= 9/4 gets the signed distance d from its centre
+// to the ellipse's tangent at the radial projection p / sqrt(Q) of its offset p,
+//     d = (1 - r) r / |g|,  r = sqrt(Q),  g = K^T (xi, eta) = grad Q / 2  (exact for a circle),
+// and, when |d| <= 1/2, the weight w' v(d) (w' = w(Q) inside, the boundary weight 2^-8 outside;
+// v one of the gauss::clip variants); Q < 1/4: inside (w), Q > 9/4 or d < -1/2: 0.
 #pragma once
 
 #include <array>
@@ -33,6 +38,7 @@
 
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_ref.hpp"
+#include "gauss/clip.hpp"
 #include "texture/texture.hpp"
 #include "texunit/formats.hpp"
 #include "texunit/schema.hpp"
@@ -44,6 +50,7 @@ enum class Weights { Formula = 0, Table1d = 1, Table2d = 2 };
 struct Config {
   Weights weights = Weights::Formula;
   uint32_t max_texels = kDefaultMaxTexels;  // u(EwaCountW)
+  const clip::Variant* clip = nullptr;       // border weights w' v(d); nullptr: off (Q < 1 test)
 };
 
 struct In {
@@ -91,8 +98,27 @@ struct WalkStats {
   uint64_t max_q = 0;        // Q code, incl. increments dQ
   uint64_t max_ddq = 0;
   uint64_t wsum = 0, max_acc = 0;
+  int64_t max_abs_g = 0;     // border walk: |gu|, |gv| codes of band-tested texels
+  uint64_t max_root = 0;     // border walk: r, |g| codes
   std::vector<int64_t>* q_trace = nullptr;  // when set: Q of every walked texel, in walk order
 };
+
+// Border distance of one walked texel (Config::clip on). Zones: Q < 1/4 inside, Q > 9/4 outside
+// (no d needed: |g| <= r (1 + 2^-13) since b >= 1, so d > 1/2 resp. d < -1/2 there); otherwise
+// d = (1 - r) r / |g| as a ClipIn code (s13.12, half up in magnitude), band iff |d| <= 1/2.
+enum class Zone { Inside, Band, Outside };
+struct Border {
+  Zone zone = Zone::Inside;
+  int32_t d = 0;             // ClipIn code (Band only)
+  int32_t gu = 0, gv = 0;    // s(EwaGradW).EwaGradF (zone test passed: 1/4 <= Q <= 9/4)
+  uint32_t r = 0, g = 0;     // u(EwaRootW).EwaGradF
+};
+Border border(const PixelSetup& su, int64_t q, int64_t xi, int64_t eta);
+// The border weight of a texel: zone, d and the weight source's w (w(Q) inside, 2^-8 outside),
+// (w v(d) + 2^15) >> 16 in the band (u17.16).
+uint32_t border_weight(const PixelSetup& su, const Config& cfg, int64_t q, int64_t xi, int64_t eta);
+// Box growth of the border walk: 1/2 texel per side (EwaPosF codes).
+inline constexpr uint32_t kBorderGrow = 1u << (fmt::kEwaPosF - 1);
 
 // ROMs (generated into rtl/generated/ by `texunit gen-rtl`).
 const std::array<int32_t, fmt::kEwaCordIter>& atan_table();   // round(atan(2^-i) 2^AngW / 2pi)
@@ -133,7 +159,8 @@ In in_from_local(const ellipse::fx::Local& l, uint32_t laniso = 4 << fmt::kEllLo
 ellipse::fx::Local footprint_local(double major, double aniso, double theta, double u, double v);
 // Float reference on the same B2 outputs: semi-axes 2^lmaj, 2^lmin, the conic's direction in
 // double; horizon / point footprints -> unit disc (ewa_ref.hpp filter_axes).
-Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels);
+// clip: the float border weights (ewa::Params::clip).
+Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels, bool clip = false);
 
 // Real major-axis angle of a set-up (radians, in [-pi/2, pi/2)).
 double theta_value(int32_t theta);

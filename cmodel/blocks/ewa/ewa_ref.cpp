@@ -33,8 +33,9 @@ Result filter_axes(const tex::Texture& t, double u, double v, double s1, double 
     const double lim = std::max(t.levels[static_cast<size_t>(level)].width,
                                 t.levels[static_cast<size_t>(level)].height);
     const double a = std::clamp(s1 * scale, 1.0, lim), b = std::clamp(s2 * scale, 1.0, lim);
-    const double hu = std::sqrt(a * a * c * c + b * b * s * s);
-    const double hv = std::sqrt(a * a * s * s + b * b * c * c);
+    const double grow = p.clip ? 0.5 : 0;  // border texels up to 1/2 texel outside
+    const double hu = std::sqrt(a * a * c * c + b * b * s * s) + grow;
+    const double hv = std::sqrt(a * a * s * s + b * b * c * c) + grow;
     // Texel i has its centre at i. Centres beyond 2^62 texels (never in a validated scene) are
     // clamped so that the walk's int64 indices below cannot overflow.
     const double cu = std::clamp(u * scale - 0.5, -0x1p62, 0x1p62);
@@ -53,7 +54,7 @@ Result filter_axes(const tex::Texture& t, double u, double v, double s1, double 
       for (int64_t x = x0; x <= x1; ++x) {
         const double du = x - cu, dv = y - cv;
         const double pu = (du * c + dv * s) / a, pv = (-du * s + dv * c) / b;
-        const double w = gpm_weight(pu * pu + pv * pv);
+        const double w = p.clip ? border_weight(pu, pv, a, b, c, s) : gpm_weight(pu * pu + pv * pv);
         ++r.texels_visited;
         if (w == 0) continue;
         ++r.texels_inside;
@@ -66,6 +67,23 @@ Result filter_axes(const tex::Texture& t, double u, double v, double s1, double 
     r.color = {acc[0] / wsum, acc[1] / wsum, acc[2] / wsum, acc[3] / wsum};
     return r;
   }
+}
+
+double border_distance(double pu, double pv, double a, double b, double c, double s) {
+  const double q = pu * pu + pv * pv;
+  if (q < 0.25) return HUGE_VAL;
+  if (q > 2.25) return -HUGE_VAL;
+  const double gu = pu * c / a - pv * s / b, gv = pu * s / a + pv * c / b;
+  const double g = std::hypot(gu, gv), r = std::sqrt(q);
+  return g > 0 ? (1 - r) * r / g : HUGE_VAL;
+}
+
+double border_weight(double pu, double pv, double a, double b, double c, double s) {
+  const double d = border_distance(pu, pv, a, b, c, s), q = pu * pu + pv * pv;
+  if (d > 0.5) return gpm_weight(q);
+  if (d < -0.5) return 0;
+  const double w = q < 1 ? gpm_weight(q) : std::ldexp(1.0, -8);
+  return w * 0.5 * std::erfc(-d / (0.2 * std::sqrt(2.0)));
 }
 
 }  // namespace tu::ewa

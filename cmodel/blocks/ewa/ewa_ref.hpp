@@ -22,6 +22,9 @@ inline constexpr int kDefaultMaxTexels = 1024;
 struct Params {
   double max_aniso = 16;
   int max_texels = kDefaultMaxTexels;  // bounding-box texels per pixel before falling back to a coarser level
+  // Sub-texel border weights (seed 003 §2, docs/blocks/ewa.md "Border weights"): the box grows by
+  // 1/2 texel per side, texels with |d| <= 1/2 get w' Phi(d / 0.2) (exact), d = border_distance().
+  bool clip = false;
 };
 
 struct Result {
@@ -49,5 +52,14 @@ inline double gpm_weight(double q) {
   const double t2 = t * t, t4 = t2 * t2;
   return t4 * t4;
 }
+
+// Signed distance (texels, > 0 inside) from a texel centre to the ellipse's tangent at the radial
+// projection of its frame offset (pu, pv) (Q = pu^2 + pv^2): d = (1 - r) r / |g|, r = sqrt(Q),
+// g = K^T (pu, pv) = grad Q / 2 in texel offsets, K the frame (rows (c, s) / a, (-s, c) / b).
+// Exact for a circle; zones as the C model: Q < 1/4 -> +inf (inside), Q > 9/4 -> -inf (outside).
+double border_distance(double pu, double pv, double a, double b, double c, double s);
+// Border weight of a texel (Params::clip): w(Q) inside (d > 1/2), w' Phi(d / 0.2) for |d| <= 1/2
+// with w' = w(Q) for Q < 1 and the boundary weight 2^-8 beyond, 0 for d < -1/2.
+double border_weight(double pu, double pv, double a, double b, double c, double s);
 
 }  // namespace tu::ewa

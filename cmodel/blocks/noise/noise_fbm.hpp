@@ -24,6 +24,8 @@ inline constexpr int kAccF = fmt::kNoiseTF + fmt::kNoiseOctaves - 1;
 
 // Exact octave sum (raw code, kAccF fraction bits).
 int64_t fbm_sum(int dims, int64_t x, int64_t y, int64_t z);
+// acc C + 1/2 rounded half up to u17.16 and clamped to [0, 1] (C: u0.NoiseNormF).
+uint32_t normalise_code(int64_t acc, int64_t c);
 // The normalisation (sum code -> fbm code), shared by both schemes.
 uint32_t fbm_normalise(int dims, int64_t acc);
 // The block: input codes s32.16 (z ignored for dims 2) -> fbm code u17.16.

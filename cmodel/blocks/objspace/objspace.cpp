@@ -212,6 +212,9 @@ std::vector<TriangleSetup> setup(const scene::Scene& s, const Options& opt) {
   const ViewFrame vf(s.camera);
   std::vector<TriangleSetup> out;
   for (size_t o = 0; o < s.objects.size(); ++o) {
+    if (s.materials.at(s.objects[o].material).procedural)
+      throw std::invalid_argument(scene::object_where(s, o) + ": the object-space pipeline textures from texels; "
+                                  "procedural materials are not supported");
     const auto tex = scene::build_texture(s, s.materials.at(s.objects[o].material).texture);
     const int top = tex.num_levels() - 1;
     const auto tris = scene::in_texels(s.objects[o], tex.levels[0].width, tex.levels[0].height);

@@ -150,58 +150,84 @@ TexelShift shift_texel_uv_fx(const Maps& m, int64_t u, int64_t v, int lw, int lh
   return {shift_code(r.u, lw - du), shift_code(r.v, lh - du), r.n, r.steps, flags};
 }
 
-uint64_t stage_cycles(const std::vector<StagePixel>& px, int fifo_depth) {
-  // Pipelines hold pixel indices (-1: empty); each advances as a whole (tu_pipe_valid) when its
-  // last stage is empty or taken. Combinational signals from this cycle's state, then the update.
-  using Pipe = std::vector<int>;
+StageModel::StageModel(const std::vector<StagePixel>& px, int fifo_depth)
+    : px_(px),
+      fifo_depth_(fifo_depth),
+      lay_(fmt::kPomLayersLatency, -1),
+      set_(fmt::kPomSetupLatency, -1),
+      ref_(fmt::kPomRefineLatency, -1) {}
+
+StageModel::Comb StageModel::comb(bool out_ready) const {
+  Comb c;
+  // The unit's output is taken at the head of the sideband FIFO (order is kept), so the
+  // refinement advances when its last stage is empty or holds the head and the output is taken.
+  const bool head = fifo_head_ < fifo_.size();
+  const bool h_shift = head && px_[static_cast<size_t>(fifo_[fifo_head_])].shift;
+  c.out = head && out_ready && (!h_shift || ref_.back() >= 0);
+  c.r_en = ref_.back() < 0 || (h_shift && out_ready);
+  c.out_free = mout_ < 0 || c.r_en;
+  c.go = run_ && i_ < px_[static_cast<size_t>(cur_)].steps;
+  c.finish = run_ && !c.go;
+  // The set-up hands its last pixel to an engine only when the other holds none (the march's
+  // count: marching, output register; the iterative engine's Idle; both registered).
+  const bool take_in = !run_ || (c.finish && c.out_free);
+  const bool m_empty = !run_ && mout_ < 0, i_empty = ist_ == kIdle;
+  const int sb = set_.back();
+  const bool sb_iter = sb >= 0 && px_[static_cast<size_t>(sb)].iter;
+  c.m_fire = sb >= 0 && !sb_iter && take_in && i_empty;
+  c.i_fire = sb >= 0 && sb_iter && i_empty && m_empty;
+  c.s_en = sb < 0 || c.m_fire || c.i_fire;
+  c.l_en = lay_.back() < 0 || c.s_en;
+  const bool f_room = fifo_.size() - fifo_head_ < static_cast<size_t>(fifo_depth_);
+  c.in_ready = next_ < px_.size() && f_room && (!px_[next_].shift || c.l_en);
+  return c;
+}
+
+StageModel::Fired StageModel::step(bool in_valid, bool out_ready) {
   auto advance = [](Pipe& p, int in) {
     for (size_t k = p.size() - 1; k > 0; --k) p[k] = p[k - 1];
     p[0] = in;
   };
-  Pipe lay(fmt::kPomLayersLatency, -1), set(fmt::kPomSetupLatency, -1), ref(fmt::kPomRefineLatency, -1);
-  std::vector<int> fifo;  // indices, oldest first
-  size_t fifo_head = 0;
-  bool run = false;
-  int cur = -1, mout = -1;  // march: pixel marching, pixel in the output register
-  uint32_t i = 0;
-  size_t next = 0, outs = 0;
+  const Comb c = comb(out_ready);
+  Fired f{in_valid && c.in_ready, c.out};
+  // The refinement takes the march's output register or the iterative engine's Done (never both).
+  const bool i_out = ist_ == kDone && c.r_en;
+  if (c.r_en) advance(ref_, mout_ >= 0 ? mout_ : ist_ == kDone ? icur_ : -1);
+  const int mout_d = c.finish && c.out_free ? cur_ : (c.r_en ? -1 : mout_);
+  if (c.m_fire) {
+    cur_ = set_.back();
+    i_ = 0;
+    run_ = true;
+  } else if (c.go) {
+    ++i_;
+  } else if (c.finish && c.out_free) {
+    run_ = false;
+  }
+  if (ist_ == kIdle && c.i_fire) {
+    icur_ = set_.back();
+    ii_ = 0;
+    ist_ = kRun;
+  } else if (ist_ == kRun) {
+    if (ii_ < px_[static_cast<size_t>(icur_)].steps) ++ii_;
+    else ist_ = kDone;
+  } else if (i_out) {
+    ist_ = kIdle;
+  }
+  mout_ = mout_d;
+  if (c.s_en) advance(set_, lay_.back());
+  if (c.l_en) advance(lay_, f.in && px_[next_].shift ? static_cast<int>(next_) : -1);
+  if (f.out) ++fifo_head_;
+  if (f.in) fifo_.push_back(static_cast<int>(next_++));
+  return f;
+}
+
+uint64_t stage_cycles(const std::vector<StagePixel>& px, int fifo_depth) {
+  StageModel m(px, fifo_depth);
   uint64_t t = 0, last = 0;
   const auto idle_limit = 1000 + 70 * static_cast<uint64_t>(px.size());
-  while (outs < px.size()) {
+  while (m.outputs() < px.size()) {
     if (t > idle_limit) throw std::logic_error("relief::stage_cycles: no progress");
-    const bool head = fifo_head < fifo.size();
-    const bool h_shift = head && px[static_cast<size_t>(fifo[fifo_head])].shift;
-    const bool out_fire = head && (!h_shift || ref.back() >= 0);
-    const bool r_en = ref.back() < 0 || h_shift;  // the unit's output is taken at the head
-    const bool out_free = mout < 0 || r_en;
-    const bool go = run && i < px[static_cast<size_t>(cur)].steps;
-    const bool finish = run && !go;
-    const bool take_in = !run || (finish && out_free);
-    const bool s_en = set.back() < 0 || take_in;
-    const bool l_en = lay.back() < 0 || s_en;
-    const bool f_room = fifo.size() - fifo_head < static_cast<size_t>(fifo_depth);
-    const bool fire = next < px.size() && f_room && (!px[next].shift || l_en);
-    // update
-    if (r_en) advance(ref, mout);
-    const int mout_d = finish && out_free ? cur : (r_en ? -1 : mout);
-    if (take_in && set.back() >= 0) {
-      cur = set.back();
-      i = 0;
-      run = true;
-    } else if (go) {
-      ++i;
-    } else if (finish && out_free) {
-      run = false;
-    }
-    mout = mout_d;
-    if (s_en) advance(set, lay.back());
-    if (l_en) advance(lay, fire && px[next].shift ? static_cast<int>(next) : -1);
-    if (out_fire) {
-      ++fifo_head;
-      ++outs;
-      last = t;
-    }
-    if (fire) fifo.push_back(static_cast<int>(next++));
+    if (m.step(true, true).out) last = t;
     ++t;
   }
   return px.empty() ? 0 : last + 1;

@@ -108,14 +108,52 @@ int64_t shift_code(int64_t c, int by);
 
 // Stream cycles of tu_relief_stage with no back-pressure (every input offered from cycle 0, the
 // output always ready, view words with their pixels), counted up to and including the last
-// output's cycle. Pixel: shift = the POM path runs (rel && !guard && view ok), steps = its march
-// steps k. A cycle-by-cycle model of the stage's structure: the sideband FIFO (fifo_depth
-// entries), tu_pom_layers (PomLayersLatency), tu_pom_unit (set-up pipeline, march engine with its
-// output register, refinement pipeline; global stall per pipeline) and the head-of-line join.
+// output's cycle. Pixel: shift = the relief path runs (rel && !guard && view ok), steps = its march
+// steps or iterations k, iter = iterative parallax. A cycle-by-cycle model of the stage's
+// structure: the sideband FIFO (fifo_depth entries), tu_pom_layers (PomLayersLatency),
+// tu_pom_unit (set-up pipeline; the march engine with its output register, k + 1 cycles per pixel
+// in a stream; the iterative engine, Idle -> k + 1 tests -> Done, k + 3 cycles per pixel; a pixel
+// enters an engine only when the other one holds none; refinement pipeline; global stall per
+// pipeline) and the head-of-line join.
 struct StagePixel {
   bool shift = false;
   uint32_t steps = 0;
+  bool iter = false;
 };
 uint64_t stage_cycles(const std::vector<StagePixel>& px, int fifo_depth = 32);
+
+// The same model one clock at a time, for a stage inside the texture unit (ewa::texture_unit_cycles):
+// the pixels px are offered in order; each clock, in_ready(out_ready) (from the registered state,
+// the pixel offered next and whether the output is taken) is read, then step(in_valid, out_ready)
+// advances the state.
+class StageModel {
+ public:
+  explicit StageModel(const std::vector<StagePixel>& px, int fifo_depth = 32);
+  bool in_ready(bool out_ready) const { return comb(out_ready).in_ready; }
+  struct Fired {
+    bool in = false, out = false;
+  };
+  Fired step(bool in_valid, bool out_ready);
+  size_t outputs() const { return fifo_head_; }
+
+ private:
+  using Pipe = std::vector<int>;  // pixel indices per stage, -1: empty
+  struct Comb {                   // this clock's combinational signals
+    bool out = false, r_en = false, out_free = false, go = false, finish = false;
+    bool m_fire = false, i_fire = false, s_en = false, l_en = false, in_ready = false;
+  };
+  Comb comb(bool out_ready) const;
+  const std::vector<StagePixel>& px_;
+  int fifo_depth_;
+  Pipe lay_, set_, ref_;
+  std::vector<int> fifo_;  // indices, oldest first
+  size_t fifo_head_ = 0, next_ = 0;
+  bool run_ = false;          // march engine: a pixel marching
+  int cur_ = -1, mout_ = -1;  // its pixel, the pixel in its output register
+  uint32_t i_ = 0;
+  enum { kIdle, kRun, kDone } ist_ = kIdle;  // iterative engine (tu_iter_parallax)
+  int icur_ = -1;
+  uint32_t ii_ = 0;
+};
 
 }  // namespace tu::relief

@@ -129,7 +129,7 @@
   /* Object-space pipeline (docs/blocks/objspace.md): splat weights and pixel accumulators */ \
   X(ObjSplatWF, 2 * kPerspUvF, "splat weight: fraction bits (product of two PerspUvF fractions)") \
   X(ObjSplatWW, kObjSplatWF + 1, "splat weight code 0..2^ObjSplatWF: unsigned, exact")       \
-  X(ObjAccWW, 40, "pixel weight sum: unsigned, ObjSplatWF frac (< 2^23 samples), saturating")  \
+  X(ObjAccWW, 40, "pixel weight sum: unsigned, ObjSplatWF frac (< 2^24 samples), saturating")  \
   X(ObjAccCW, 48, "pixel colour sum per channel: unsigned, ObjSplatWF frac, saturating")      \
   X(ObjUvCoefF, 32, "uv plane coefficients u0, ui, uj (level-0 texels): signed int64, frac bits") \
   /* Ellipse parameters and LOD (docs/blocks/ellipse.md) */                                    \
@@ -175,6 +175,9 @@
   X(EwaWsumW, 33, "weight sum: unsigned, GaussSqF fraction bits (exact)")                      \
   X(EwaAccW, 41, "per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)")       \
   X(EwaNrmW, 23, "weight sum normalised to a positive RecipInW-bit code: msb at bit EwaNrmW-1") \
+  X(EwaGradW, 24, "border distance (clip on): g = K^T (xi, eta) = grad Q / 2, floor: signed, EwaGradF frac; band only") \
+  X(EwaGradF, 22, "")                                                                           \
+  X(EwaRootW, 24, "border: r = floor(sqrt Q), |g| = floor(sqrt(gu^2 + gv^2)): unsigned, EwaGradF frac") \
   /* BRDF specular models (docs/blocks/brdf.md) */                                           \
   X(BrdfCW, 22, "c = N.H input: signed, BrdfCF fraction bits; clamped to [0, 1] (c > 1 flags)") \
   X(BrdfCF, 20, "")                                                                            \
@@ -204,6 +207,15 @@
   X(BrdfQrLatency, 2, "front + 1 - 0.786u, c w; II = 1")                                       \
   X(BrdfBlinnLatency, 11, "front, 10 square-and-multiply stages; II = 1")                      \
   X(BrdfDshLatency, 11, "front, c^8 / (c+0.1)^8 squarings, w^2, E, two reciprocals; II = 1")       \
+  /* Shading stage of the texture unit (docs/blocks/brdf.md "In the unit") */                 \
+  X(ShadeVecW, 22, "unit vectors N, L, H per pixel: signed, ShadeVecF fraction bits, nearest")  \
+  X(ShadeVecF, 20, "  (c = N.H to BrdfCF = 20 fraction bits: note 8.4)")                       \
+  X(ShadeDotW, 47, "N.L, N.H: sum of three exact products, signed, 2 ShadeVecF fraction bits")  \
+  X(ShadeColW, 9, "light colour, specular colour ks*lc, ambient: unsigned, ShadeColF fraction") \
+  X(ShadeColF, 8, "  bits (0 .. 511/256), round to nearest")                                   \
+  X(ShadeDiffW, 9, "diffuse d = clamp(N.L, 0, 1): unsigned, ShadeColF fraction bits, half up")  \
+  X(ShadeEW, 10, "E = ambient + lc d (lc d rounded half up to ShadeColF): unsigned, ShadeColF") \
+  X(ShadeWordW, 320, "shade port word: {on, N, L, H, n, c_cut, ks*lc rgb, lc rgb, ambient}")   \
   X(EwaDrainCycles, 5, "tu_ewa_walk: clocks from the last texel to the accumulated sums")        \
   X(EwaNormCycles, 6, "tu_ewa_walk normalisation: mantissa, 4 reciprocal stages, round")
 

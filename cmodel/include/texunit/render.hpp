@@ -9,7 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "brdf/brdf_common.hpp"
+#include "ellipse/ellipse_ref.hpp"
 #include "ewa/ewa_cycles.hpp"
+#include "noise/noise_proc.hpp"
 #include "texunit/image.hpp"
 #include "texunit/scene.hpp"
 
@@ -55,8 +58,11 @@ std::vector<const scene::Material*> object_materials(const scene::Scene& s);
 std::vector<persp::Coef9> setup_ref(const scene::Scene& s, size_t object, int tex_w, int tex_h);
 std::vector<persp::Unit::Coefs> setup_fx(const scene::Scene& s, size_t object, int tex_w, int tex_h);
 
-// Float reference render. `filter`, when given, overrides every material's filter.
-Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter = {});
+// Float reference render. `filter`, when given, overrides every material's filter; scenes with a
+// light are shaded (brdf::shade::ref on the filtered colour; "auto" models: `shade_model`, else the
+// unit's, texunit/shading.hpp).
+Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter = {},
+                 std::optional<brdf::Model> shade_model = {});
 
 // Bit-accurate C-model render (docs/blocks/ewa.md): per covered pixel (same visibility as the
 // reference) B1 persp::Unit on the quantised coefficients, B2 ellipse::fx::analytic, then the
@@ -72,14 +78,21 @@ struct CmodelOptions {
   // the tu_pom_unit / tu_iter_parallax arithmetic) before uv_shift and the filter. false: the
   // texture path alone, as the RTL texture-unit top (no relief stage yet) computes it.
   bool relief = true;
+  // Procedural materials take their colour from the noise unit (false: their texture, as the RTL
+  // texture-unit top, which has no noise unit yet, renders them).
+  bool procedural = true;
   // Threads for visibility and the pixels (rows; <= 0: every core). The frame is the same for
   // any count; a render with a uv_shift hook runs on one thread.
   int threads = 0;
+  // Shading stage (scenes with a light): the model of materials whose specular model is "auto"
+  // (the unit's; texunit/shading.hpp kUnitModel when not given).
+  std::optional<brdf::Model> shade_model;
 };
 // The options of the texture path alone (relief off), for comparisons with the RTL top.
 inline CmodelOptions texture_path_only() {
   CmodelOptions o;
   o.relief = false;
+  o.procedural = false;
   return o;
 }
 // log2(max anisotropy) as B2's laniso input (u(EllAnisoW).EllLogF, rounded, saturated); the RTL
@@ -90,6 +103,15 @@ uint32_t laniso_code(double max_aniso);
 ewa::Engine engine_of(scene::Filter f);
 Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter = {},
                     const CmodelOptions& opt = {});
+
+// Procedural materials (docs/blocks/noise.md §5): the material's noise description in noise
+// units (its texture of width tex_w fixes the uv grid), and the float reference's colour at level-0
+// texel (u, v) with the pixel's Jacobian (the GL rule's rho limits the octaves).
+noise::ProcParams procedural_params(const scene::Material& m, int tex_w);
+// Per object: its material's parameters when procedural (texs: the objects' textures).
+std::vector<std::optional<noise::ProcParams>> procedural_objects(const scene::Scene& s,
+                                                                 const std::vector<tex::Texture>& texs);
+img::Rgba8 procedural_ref(const noise::ProcParams& p, double u, double v, const ellipse::Jacobian& j);
 
 // Ground truth (docs/blocks/texture.md "Ground truth"): per covered pixel, ss x ss stratified
 // jittered samples (deterministic) of the surface seen at the pixel centre, each the level-0 texel

@@ -4,6 +4,7 @@
 // the line (for syntax errors) or the field as a JSON pointer (e.g. `/objects/1/material`).
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -31,16 +32,45 @@ struct Relief {
   int layers = 16;             // PomFixed: N; PomAdaptive: Nmax (Nmin = 4); Iterative: cap
 };
 
+// A procedural colour source (docs/scene-format.md "procedural"; docs/blocks/noise.md §5): the
+// unit evaluates Perlin noise at the pixel's (u, v[, t]) instead of sampling the texture.
+enum class ProceduralKind { Fbm, Smoke, Water };
+struct Procedural {
+  ProceduralKind kind = ProceduralKind::Fbm;
+  int octaves = 4;          // K, 1..NoiseOctaves
+  double frequency = 8;     // lattice cells per texture repeat
+  int seed = 0;             // lattice shift (37 s, 91 s) mod 256 cells
+  double time = 0;          // t of frame 0 (render --frames N --dt T adds frame * T)
+  double speed = 0;         // time as the third noise dimension z = speed * t (0: 2-D noise)
+  bool footprint_limit = true;  // fade out the octaves above the footprint's Nyquist frequency
+  double threshold = 0.2, gain = 2;  // smoke: opacity = clamp((turbulence - threshold) * gain, 0, 1)
+  double amplitude = 0.5;            // water: height amplitude (cells per unit of the octave sum)
+  std::array<double, 3> light{0.4, 0.3, 0.866};  // water: tangent-space light direction
+  std::array<double, 3> color0{0, 0, 0}, color1{255, 255, 255};  // value 0 -> color0, 1 -> color1
+};
+
+// The material's specular lobe for the shading stage (docs/blocks/brdf.md "In the unit").
+struct Specular {
+  std::string model = "auto";  // a brdf::name() model, or "auto": the unit's model (`texunit plan`)
+  int n = 32;                  // exponent, 1..1000
+  double color[3] = {1, 1, 1}; // ks per channel, 0..2
+};
+
 struct Material {
   std::string name;
   std::string texture;
   Filter filter = Filter::Ewa;
   WeightSource weights = WeightSource::Formula;
+  // EWA sub-texel border weights (seed 003 §2): a gauss::clip variant name (docs/blocks/ewa.md
+  // "Border weights"); empty: off (the all-or-nothing Q < 1 test).
+  std::string clip;
   double max_aniso = 16;
   // Trilinear's GL LOD rule (texture/trilinear_lod.hpp): lambda + lod_bias clamped to
   // [min_lod, max_lod] (levels), then to the pyramid.
   double lod_bias = 0, min_lod = 0, max_lod = 12;
   std::optional<Relief> relief;
+  std::optional<Procedural> procedural;  // colour from noise; `texture` still fixes the uv grid
+  std::optional<Specular> specular;  // absent: diffuse only (when the scene has a light)
 };
 
 struct TextureSpec {
@@ -56,6 +86,18 @@ struct Object {
   std::string name;
   std::string material;
   std::vector<persp::Triangle> triangles;  // uv in texture repeats (1 = the texture's width)
+  // Per triangle, the normals at its three vertices (interpolated over it); empty: face normals.
+  std::vector<std::array<std::array<double, 3>, 3>> normals;
+};
+
+// The scene's light (shading stage): a point light at `position` or a directional one shining
+// along `direction`, its colour and the ambient level.
+struct Light {
+  bool positional = false;
+  double position[3] = {0, 0, 0};
+  double direction[3] = {0, -1, 0};
+  double color[3] = {1, 1, 1};
+  double ambient = 0.2;
 };
 
 // The object's triangles with uv in level-0 texels of a tex_width x tex_height texture.
@@ -64,6 +106,7 @@ std::vector<persp::Triangle> in_texels(const Object& o, int tex_width, int tex_h
 struct Budget {
   double max_texel_err = 1.0 / 16;  // texture-coordinate error, texels
   double min_psnr_db = 35;          // image quality against the float EWA reference
+  double max_brdf_mad = 0.01;       // specular model: mean |F - F_Blinn| on the thesis grid (`plan`)
 };
 
 struct Scene {
@@ -73,6 +116,7 @@ struct Scene {
   std::map<std::string, Material> materials;
   std::vector<Object> objects;
   Budget budget;
+  std::vector<Light> lights;  // at most one (the shading stage's); empty: no shading
   std::vector<std::string> warnings;  // e.g. zero-area triangles dropped (load() prints them)
 };
 
@@ -88,8 +132,15 @@ Scene load(const std::string& path);  // also prints the scene's warnings to std
 // brick wall with relief (grazing angles and strong anisotropy on purpose).
 const std::string& default_scene_json();
 Scene default_scene();
+// docs/scenes/procedural.json embedded (the demo's procedural materials): the default scene's
+// ground with fBm and its wall with smoke, 128 x 96.
+const std::string& procedural_scene_json();
+Scene procedural_scene();
 // The same scene with every material's relief removed (the texture path alone).
 Scene without_relief(Scene s);
+// The same scene with every material's EWA border weights set to the clip variant `clip`
+// ("off" or empty: none); throws std::invalid_argument for an unknown variant.
+Scene with_clip(Scene s, const std::string& clip);
 
 // Builds the texture named `name` (procedural or PNG) with its mip pyramid.
 tex::Texture build_texture(const Scene& s, const std::string& name);
@@ -97,5 +148,8 @@ tex::Texture build_texture(const Scene& s, const std::string& name);
 const char* to_string(Filter f);
 const char* to_string(WeightSource w);
 const char* to_string(ReliefMethod m);
+const char* to_string(ProceduralKind k);
+// The scene at time t: every procedural material's time set to its own time + t (frames).
+Scene at_time(Scene s, double t);
 
 }  // namespace tu::scene

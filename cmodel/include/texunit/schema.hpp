@@ -59,6 +59,7 @@
 #define TU_REC_RELIEF(X)                             \
   X(rel, 1, "POM relief on")                         \
   X(radapt, 1, "adaptive layer count")               \
+  X(riter, 1, "iterative parallax (cap = rlayers)")  \
   X(rlayers, kPomNW, "layers (1..63)")               \
   X(rscale, kPomSW, "height scale S")                \
   X(hbase, kTexAddrW, "depth map: base word address") \
