@@ -108,6 +108,11 @@ package tu_formats_pkg;
   localparam int TexRamLog2Words = 20;  // simulation texel RAM of the texture-unit top: 2^N RGBA8 words
   localparam int PerspLatency = 8;  // per-pixel pipeline latency in cycles, II = 1
   localparam int PerspSetupLatency = 2;  // per-scanline set-up (tu_persp_setup) latency in cycles, II = 1
+  localparam int ObjSplatWF = 16;  // splat weight: fraction bits (product of two PerspUvF fractions)
+  localparam int ObjSplatWW = 17;  // splat weight code 0..2^ObjSplatWF: unsigned, exact
+  localparam int ObjAccWW = 40;  // pixel weight sum: unsigned, ObjSplatWF frac (< 2^24 samples), saturating
+  localparam int ObjAccCW = 48;  // pixel colour sum per channel: unsigned, ObjSplatWF frac, saturating
+  localparam int ObjUvCoefF = 32;  // uv plane coefficients u0, ui, uj (level-0 texels): signed int64, frac bits
   localparam int EllNumW = 48;  // derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac
   localparam int EllNumF = 32;
   localparam int EllNxW = 112;  // exact numerators (span set-up, tu_texture_unit): signed, 2 PerspF frac, |n| < 2^30

@@ -152,6 +152,20 @@ SV
     if "$tu" render default --engine cmodel --threads -1 --out "$tmp/bad" 2>"$tmp/err"; then fail "accepted --threads -1"; fi
     grep -q "threads" "$tmp/err" || fail "message: $(cat "$tmp/err")"
     ;;
+  objspace_render)
+    # render --pipeline object-space: both engines write their image and print holes / overlaps;
+    # an engine without the pipeline and an exceeded sample cap exit 2 without output.
+    for e in ref cmodel; do
+      "$tu" render docs/scenes/ui_quad.json --pipeline object-space --engine $e --out "$tmp/o" >"$tmp/out" 2>/dev/null
+      [ -s "$tmp/o/objspace_$e.png" ] || fail "no objspace_$e.png"
+      grep -q "object space: 2 triangles, .* samples (1.00 per covered pixel).* 0 holes" "$tmp/out" || fail "stats: $(cat "$tmp/out")"
+    done
+    if "$tu" render docs/scenes/ui_quad.json --pipeline object-space --engine rtl --out "$tmp/bad" 2>"$tmp/err"; then fail "accepted rtl"; fi
+    grep -q "engine must be ref or cmodel" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    if "$tu" render docs/scenes/ui_quad.json --pipeline object-space --max-samples 100 --out "$tmp/bad2" 2>"$tmp/err"; then fail "cap ignored"; fi
+    grep -q "object 'panel' (/objects/0): .*--max-samples" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    [ ! -e "$tmp/bad2/objspace_ref.png" ] || fail "partial output written"
+    ;;
   shard_vectors_cosim)
     # 4 shards == the unsharded run: vector rows tile the set in order; the merged co-simulation
     # (file split by `cosim --shard`, and per-shard vector files) equals the whole file's run

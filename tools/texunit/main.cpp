@@ -18,6 +18,7 @@
 #include "plan.hpp"
 #include "render_cmd.hpp"
 #include "sysmodel_cmd.hpp"
+#include "objspace_cmd.hpp"
 #include "report.hpp"
 #include "texunit/parallel.hpp"
 #include "texunit/rtl_gen.hpp"
@@ -395,6 +396,8 @@ int main(int argc, char** argv) {
   auto* rnd = tu::cli::add_render(app, render_args);
   tu::cli::SysmodelArgs sysmodel_args;
   auto* sysm = tu::cli::add_sysmodel(app, sysmodel_args);
+  tu::cli::ObjspaceArgs objspace_args;
+  auto* objs = tu::cli::add_objspace(app, objspace_args);
 
   try {
     app.parse(argc, argv);
@@ -408,6 +411,7 @@ int main(int argc, char** argv) {
     if (*mrg) return tu::cli::run_merge(merge_args);
     if (*rnd) return tu::cli::run_render(render_args);
     if (*sysm) return tu::cli::run_sysmodel(sysmodel_args);
+    if (*objs) return tu::cli::run_objspace(objspace_args);
     if (*cos) return cmd_cosim(block, file, stall, seed, fst, json, rtl_variant, shard);
     if (*gen) return cmd_gen_rtl(root, check);
     if (*rep) {

@@ -277,6 +277,35 @@ std::string package(const Config& c, const std::string& origin) {
 
 }  // namespace
 
+uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::Filter(const scene::Material&)>& filter_of,
+                           bool relief_stage, std::optional<scene::WeightSource> weights, bool ell_recurrence) {
+  scene::Scene t = scene::without_relief(s);
+  t.footprint = ell_recurrence ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
+  for (auto& [name, m] : t.materials) m.filter = filter_of(m);
+  render::CmodelOptions o = render::texture_path_only();
+  o.weights = weights;
+  const render::Frame fr = render::render_cmodel(t, std::nullopt, o);
+  const auto wl = sysmodel::scene_workload(t, fr);
+  std::vector<int> top_level;  // per object: its texture's top mip level
+  for (const auto& ob : t.objects)
+    top_level.push_back(scene::build_texture(t, t.materials.at(ob.material).texture).num_levels() - 1);
+  std::vector<ewa::PixelCost> costs;
+  for (size_t i = 0; i < wl.pixels.size(); ++i) {
+    const auto& w = wl.pixels[i];
+    const auto& rec = fr.pixels[i];
+    const size_t obj = static_cast<size_t>(rec.object);
+    const scene::Filter f = t.materials.at(t.objects[obj].material).filter;
+    ewa::PixelCost c = sysmodel::cost_of(w);
+    c.engine = render::engine_of(f);
+    if (c.engine == ewa::Engine::Trilinear) {
+      // A B1-guard pixel is recorded with 1 texel (the workload's guard is EWA's: no level tried).
+      c.one_level = ewa::trilinear_one_level(rec.texels == 1, static_cast<int>(std::floor(rec.lod)), top_level[obj]);
+    }
+    costs.push_back(c);
+  }
+  return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage, ell_recurrence)));
+}
+
 int run(const Options& opt) {
   scene::Scene s = opt.scene == "default" ? scene::default_scene() : scene::load(opt.scene);
   // No noise unit in the RTL top yet: procedural materials are planned on their texture path, the
@@ -522,31 +551,7 @@ int run(const Options& opt) {
   //    unit with the plan's filter per material, and the full unit as authored.
   auto scene_cycles = [&](std::function<scene::Filter(const scene::Material&)> filter_of, bool relief_stage,
                           std::optional<scene::WeightSource> weights, bool rec) -> uint64_t {
-    scene::Scene t = scene::without_relief(s);
-    t.footprint = rec ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
-    for (auto& [name, m] : t.materials) m.filter = filter_of(m);
-    render::CmodelOptions o = render::texture_path_only();
-    o.weights = weights;
-    const render::Frame fr = render::render_cmodel(t, std::nullopt, o);
-    const auto wl = sysmodel::scene_workload(t, fr);
-    std::vector<int> top_level;  // per object: its texture's top mip level
-    for (const auto& ob : t.objects)
-      top_level.push_back(scene::build_texture(t, t.materials.at(ob.material).texture).num_levels() - 1);
-    std::vector<ewa::PixelCost> costs;
-    for (size_t i = 0; i < wl.pixels.size(); ++i) {
-      const auto& w = wl.pixels[i];
-      const auto& rec = fr.pixels[i];
-      const size_t obj = static_cast<size_t>(rec.object);
-      const scene::Filter f = t.materials.at(t.objects[obj].material).filter;
-      ewa::PixelCost c = sysmodel::cost_of(w);
-      c.engine = render::engine_of(f);
-      if (c.engine == ewa::Engine::Trilinear) {
-        // A B1-guard pixel is recorded with 1 texel (the workload's guard is EWA's: no level tried).
-        c.one_level = ewa::trilinear_one_level(rec.texels == 1, static_cast<int>(std::floor(rec.lod)), top_level[obj]);
-      }
-      costs.push_back(c);
-    }
-    return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage, rec)));
+    return scene_stream_cycles(s, filter_of, relief_stage, weights, rec);
   };
   auto authored = [](const scene::Material& m) { return m.filter; };
   auto planned_filter = [&](const scene::Material& m) {

@@ -5,8 +5,13 @@
 // of the specialised unit against the full unit.
 #pragma once
 
+#include <cstdint>
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
+
+#include "texunit/scene.hpp"
 
 namespace tu::plan {
 
@@ -26,5 +31,12 @@ struct BudgetError : std::runtime_error {
 };
 
 int run(const Options& opt);
+
+// Clocks of the RTL texture unit (texture path) for a scene with `filter_of` choosing each
+// material's filter: ewa::stream_cycles on the C-model render's per-pixel work (exact against
+// Verilator, TextureUnitRtl.CyclesMatchPrediction).
+uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::Filter(const scene::Material&)>& filter_of,
+                             bool relief_stage, std::optional<scene::WeightSource> weights = std::nullopt,
+                             bool ell_recurrence = false);
 
 }  // namespace tu::plan

@@ -15,6 +15,7 @@
 #include "texunit/parallel.hpp"
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
+#include "objspace/objspace.hpp"
 
 namespace tu::cli {
 
@@ -74,7 +75,27 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
   r->add_option("--threads", a.threads, "cmodel / rtl engines: threads for the C-model render (default 0: "
                 "every core); the image is the same for any count")
       ->check(CLI::Range(0, 4096));
+  r->add_option("--pipeline", a.pipeline,
+                "screen: B1 -> B2 -> filter per pixel; object-space: each triangle rotated parallel to the "
+                "screen, textured on a sample grid (one mip level per polygon), samples rotated back, projected "
+                "and splatted (docs/blocks/objspace.md; ref and cmodel engines)")
+      ->check(CLI::IsMember({"screen", "object-space"}));
+  r->add_option("--os-spacing", a.os_spacing, "object-space: sample spacing in pixels at the plane's distance")
+      ->check(CLI::Range(0.05, 64.0));
+  r->add_option("--max-samples", a.max_samples, "object-space: cap on the render's samples (more: exit 2)")
+      ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
   return r;
+}
+
+static void print_objspace_stats(const objspace::Stats& st) {
+  std::printf("object space: %llu triangles, %llu tiles, %llu samples (%.2f per covered pixel), %llu off screen, "
+              "%llu guarded, %llu splats, %llu foreign-surface splats dropped; %llu covered pixels: %llu holes, "
+              "%llu overlaps (sum s > 4), max sum s %.1f, %llu accumulator saturations\n",
+              (unsigned long long)st.triangles, (unsigned long long)st.tiles, (unsigned long long)st.samples,
+              st.samples_per_pixel(), (unsigned long long)st.off_screen, (unsigned long long)st.guarded,
+              (unsigned long long)st.splats, (unsigned long long)st.foreign, (unsigned long long)st.covered,
+              (unsigned long long)st.holes, (unsigned long long)st.overlaps, st.max_weight,
+              (unsigned long long)st.acc_saturated);
 }
 
 int run_render(const RenderArgs& a) {
@@ -101,7 +122,7 @@ int run_render(const RenderArgs& a) {
   auto frame_png = [&](int i) {
     char name[32];
     std::snprintf(name, sizeof name, "_%04d.png", i);
-    return (std::filesystem::path(a.out_dir) / (a.engine + (a.frames > 1 ? name : ".png"))).string();
+    return (std::filesystem::path(a.out_dir) / ((a.pipeline == "object-space" ? "objspace_" : "") + a.engine + (a.frames > 1 ? name : ".png"))).string();
   };
   const std::string png = frame_png(0);
   std::vector<std::string> png_tmps;
@@ -115,7 +136,16 @@ int run_render(const RenderArgs& a) {
   opt.threads = a.threads;
   render::Frame frame;
   bool ok = true;
-  if (a.engine == "rtl") {
+  if (a.pipeline == "object-space") {
+    if (a.engine != "ref" && a.engine != "cmodel")
+      throw std::invalid_argument("render --pipeline object-space: --engine must be ref or cmodel (not " + a.engine + ")");
+    if (a.frames > 1 || !a.vs.empty())
+      throw std::invalid_argument("render --pipeline object-space: one frame, without --vs");
+    const objspace::Options oo{a.os_spacing, a.max_samples};
+    auto r = a.engine == "cmodel" ? objspace::render_cmodel(s, oo) : objspace::render_ref(s, oo);
+    frame = std::move(r.frame);
+    print_objspace_stats(r.stats);
+  } else if (a.engine == "rtl") {
     cosim::RtlRenderOptions ro;
     ro.has_ewa = a.rtl_unit != "bilinear";
     ro.corridor_unit = a.rtl_unit == "corridor";

@@ -18,6 +18,9 @@ struct RenderArgs {
   std::string vs;                   // print the PSNR against this engine's render (ref | cmodel | truth)
   int frames = 1;   // an animation: frame i at every procedural material's time + i * dt
   double dt = 0.04;
+  std::string pipeline = "screen";  // screen | object-space (docs/blocks/objspace.md)
+  double os_spacing = 1;            // object-space: sample spacing, pixels at the plane distance
+  uint64_t max_samples = 1ull << 28;  // object-space: sample cap of the render
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);

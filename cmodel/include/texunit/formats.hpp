@@ -126,6 +126,12 @@
   X(TexRamLog2Words, 20, "simulation texel RAM of the texture-unit top: 2^N RGBA8 words")      \
   X(PerspLatency, 8, "per-pixel pipeline latency in cycles, II = 1")                          \
   X(PerspSetupLatency, 2, "per-scanline set-up (tu_persp_setup) latency in cycles, II = 1")   \
+  /* Object-space pipeline (docs/blocks/objspace.md): splat weights and pixel accumulators */ \
+  X(ObjSplatWF, 2 * kPerspUvF, "splat weight: fraction bits (product of two PerspUvF fractions)") \
+  X(ObjSplatWW, kObjSplatWF + 1, "splat weight code 0..2^ObjSplatWF: unsigned, exact")       \
+  X(ObjAccWW, 40, "pixel weight sum: unsigned, ObjSplatWF frac (< 2^24 samples), saturating")  \
+  X(ObjAccCW, 48, "pixel colour sum per channel: unsigned, ObjSplatWF frac, saturating")      \
+  X(ObjUvCoefF, 32, "uv plane coefficients u0, ui, uj (level-0 texels): signed int64, frac bits") \
   /* Ellipse parameters and LOD (docs/blocks/ellipse.md) */                                    \
   X(EllNumW, 48, "derivative numerators nUx..nVy (or Jacobian entries): signed, EllNumF frac") \
   X(EllNumF, 32, "")                                                                            \
