@@ -53,20 +53,6 @@ struct Procedural {
   std::array<double, 3> color0{0, 0, 0}, color1{255, 255, 255};  // value 0 -> color0, 1 -> color1
 };
 
-truct Procedural {
-  ProceduralKind kind = ProceduralKind::Fbm;
-  int octaves = 4;          // K, 1..NoiseOctaves
-  double frequency = 8;     // lattice cells per texture repeat
-  int seed = 0;             // lattice shift (37 s, 91 s) mod 256 cells
-  double time = 0;          // t of frame 0 (render --frames N --dt T adds frame * T)
-  double speed = 0;         // time as the third noise dimension z = speed * t (0: 2-D noise)
-  bool footprint_limit = true;  // fade out the octaves above the footprint's Nyquist frequency
-  double threshold = 0.2, gain = 2;  // smoke: opacity = clamp((turbulence - threshold) * gain, 0, 1)
-  double amplitude = 0.5;            // water: height amplitude (cells per unit of the octave sum)
-  std::array<double, 3> light{0.4, 0.3, 0.866};  // water: tangent-space light direction
-  std::array<double, 3> color0{0, 0, 0}, color1{255, 255, 255};  // value 0 -> color0, 1 -> color1
-};
-
 // The material's specular lobe for the shading stage (docs/blocks/brdf.md "In the unit").
 struct Specular {
   std::string model = "auto";  // a brdf::name() model, or "auto": the unit's model (`texunit plan`)
