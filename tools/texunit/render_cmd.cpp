@@ -307,7 +307,8 @@ bool demo_render(const std::string& out_dir, int threads) {
   demo_render_cmodel(flat, flat_refs, out_dir, threads);
   demo_render_relief(s, relief_refs, out_dir, threads);
   demo_render_procedural(out_dir, threads);
-  return demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
+  const bool rtl_ok = demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
+  return demo_render_shaded(out_dir, threads) && rtl_ok;
 }
 
 namespace {
