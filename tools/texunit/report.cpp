@@ -162,10 +162,15 @@ std::string rtl_hash(const std::string& root, const std::string& top, const std:
   std::string users;
   for (const auto& f : sources)
     if (!is_package(f)) users += slurp(f);
-  for (const auto& f : manifest.headers()) users += slurp(f);
+  // Only the headers the top's files `include` (a record added to tu_records.svh for the top
+  // does not make the reciprocal's synthesis stale).
+  std::vector<std::string> headers;
+  for (const auto& f : manifest.headers())
+    if (users.find("\"" + fs::path(f).filename().string() + "\"") != std::string::npos) headers.push_back(f);
+  for (const auto& f : headers) users += slurp(f);
   for (const auto& f : sources)
     h = fnv1a(fs::path(f).filename().string() + (is_package(f) ? package_part(slurp(f), users) : slurp(f)), h);
-  for (const auto& f : manifest.headers()) h = fnv1a(fs::path(f).filename().string() + slurp(f), h);
+  for (const auto& f : headers) h = fnv1a(fs::path(f).filename().string() + slurp(f), h);
   char key[17];
   std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(h));
   return key;
