@@ -350,7 +350,9 @@ Splat splat_fx(const persp::Unit::Coefs& k, int i, int j) {
 
 Result render_ref(const scene::Scene& s, const Options& opt) {
   const Prepared pr(s, opt);
-  const auto& [tris, cov, texs] = pr;
+  const auto& tris = pr.tris;  // not a structured binding: clang 14 (the fuzz build) cannot capture one
+  const auto& cov = pr.cov;
+  const auto& texs = pr.texs;
   const int w = s.camera.width, h = s.camera.height;
   Accum<double> acc(cov.size());
   Result r;
@@ -375,7 +377,9 @@ Result render_ref(const scene::Scene& s, const Options& opt) {
 
 Result render_cmodel(const scene::Scene& s, const Options& opt) {
   const Prepared pr(s, opt);
-  const auto& [tris, cov, texs] = pr;
+  const auto& tris = pr.tris;  // not a structured binding: clang 14 (the fuzz build) cannot capture one
+  const auto& cov = pr.cov;
+  const auto& texs = pr.texs;
   const int w = s.camera.width, h = s.camera.height;
   // Per tile: the projective map in B1's formats and the uv plane in ObjUvCoefF bits.
   struct TileFx {
