@@ -55,10 +55,12 @@ cosim::Report cosim_report(const json& j, const std::string& file) {
   r.stall_prob = num("stall_prob");
   r.wall_s = num("wall_s");
   r.shard = j.value("shard", "");
-  static const std::set<std::string> known = {
-      "block", "vectors", "outputs", "mismatches", "model_mismatches", "extra_outputs", "in_order", "hung",
-      "max_abs_err", "max_ulp_err", "rms_err", "err_points", "err_sum_sq", "flagged", "latency_cycles",
-      "ii_cycles", "sim_cycles", "stall_prob", "wall_s", "shard", "ok", "first_mismatch"};
+  // The keys Report::json always writes, and "shard": any other number is the error metric.
+  static const auto known = [] {
+    std::set<std::string> k = {"shard"};
+    for (const auto& [key, v] : json::parse(cosim::Report{}.json()).items()) k.insert(key);
+    return k;
+  }();
   for (const auto& [k, v] : j.items())
     if (!known.count(k) && v.is_number()) r.err_metric = k;  // the block's name for max_abs_err
   r.first_mismatch = j.value("first_mismatch", "");

@@ -696,11 +696,12 @@ Row Row::from_json(const std::string& text) {
   r.area_um2 = num("area_um2"), r.period_ns = num("period_ns"), r.fmax_mhz = num("fmax_mhz");
   r.stdcell_cells = cnt("stdcell_cells"), r.critical_path = str("critical_path"), r.stdcell_source = str("stdcell_source");
   r.notes = str("notes");
-  static const std::set<std::string> known = {
-      "block", "variant", "scheme", "err_unit", "max_abs_err", "rms_err", "max_ulp_err", "latency_cycles",
-      "ii_cycles", "cycles_source", "cells", "flip_flops", "multipliers", "area_source", "rtl_top", "memory_bits",
-      "cmodel_ns_per_item", "rtl_sim_items_per_s", "rtl_sim_source", "area_um2", "period_ns", "fmax_mhz",
-      "latency_ns", "ns_per_item", "stdcell_cells", "critical_path", "stdcell_source", "notes"};
+  // The keys json() always writes (a default row has no extra keys): the rest are the extras.
+  static const auto known = [] {
+    std::set<std::string> k;
+    for (const auto& [key, v] : nlohmann::json::parse(Row{}.json()).items()) k.insert(key);
+    return k;
+  }();
   for (const auto& [k, v] : j.items()) {
     if (known.count(k)) continue;
     const std::string val = v.is_number_float() ? jnum(v.get<double>()) : v.is_null() ? "null" : v.dump();
