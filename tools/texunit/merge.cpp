@@ -58,7 +58,8 @@ cosim::Report cosim_report(const json& j, const std::string& file) {
   // The keys Report::json always writes, and "shard": any other number is the error metric.
   static const auto known = [] {
     std::set<std::string> k = {"shard"};
-    for (const auto& [key, v] : json::parse(cosim::Report{}.json()).items()) k.insert(key);
+    const auto j0 = json::parse(cosim::Report{}.json());  // named: items() does not extend its life
+    for (const auto& [key, v] : j0.items()) k.insert(key);
     return k;
   }();
   for (const auto& [k, v] : j.items())

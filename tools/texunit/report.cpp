@@ -699,7 +699,8 @@ Row Row::from_json(const std::string& text) {
   // The keys json() always writes (a default row has no extra keys): the rest are the extras.
   static const auto known = [] {
     std::set<std::string> k;
-    for (const auto& [key, v] : nlohmann::json::parse(Row{}.json()).items()) k.insert(key);
+    const auto j0 = nlohmann::json::parse(Row{}.json());  // named: items() does not extend its life
+    for (const auto& [key, v] : j0.items()) k.insert(key);
     return k;
   }();
   for (const auto& [k, v] : j.items()) {
