@@ -55,7 +55,7 @@ const std::array<uint32_t, fmt::kFelNMax>& recip_table() {
 int probe_count(int64_t e, int max_probes) {
   const auto& lg = log2_int_table();
   int n = 1;
-  while (n < max_probes && e > lg[static_cast<size_t>(n)]) ++n;
+  while (n < max_probes && e > lg[static_cast<size_t>(n)] + kRatioTol) ++n;
   return n;
 }
 
@@ -70,7 +70,7 @@ Setup setup(const ewa::fx::In& in, const tex::Texture& t, const Config& cfg) {
   } else {
     const int64_t e = std::max<int64_t>(0, int64_t(o.lmaj) - o.lmin);
     su.n = probe_count(e, nmax);
-    if (e > log2_int_table()[static_cast<size_t>(nmax)]) su.flags |= kClamped;
+    if (e > log2_int_table()[static_cast<size_t>(nmax)] + kRatioTol) su.flags |= kClamped;
     su.lam = std::max<int32_t>(o.lmin, o.lmaj - log2_int_table()[static_cast<size_t>(nmax)]);
     // The EWA's direction: phi (vectoring) is the minor axis, the major a quarter turn away.
     const int64_t d = static_cast<int64_t>(o.ae) - static_cast<int64_t>(o.ce);

@@ -3,9 +3,9 @@
 // B2's outputs (lmaj, lmin: log2 major / anisotropy-clamped minor semi-axis, s18.10, floored;
 // the conic ae, be, ce for the direction; lrho; flags).
 //
-//  1. Ratio e = lmaj - lmin >= 0 (u.EllLogF, log2 s1/s2). N = min(n >= 1 : e <= Lg[n]), Lg[n] =
-//     floor(log2(n) 2^EllLogF) (a 16-entry table): exactly ceil(2^(e / 2^EllLogF)) on the decoded
-//     e; clamped to Nmax (flag kClamped).
+//  1. Ratio e = lmaj - lmin >= 0 (u.EllLogF, log2 s1/s2). N = min(n >= 1 : e <= Lg[n] + kRatioTol),
+//     Lg[n] = floor(log2(n) 2^EllLogF) (a 16-entry table): exactly ceil(2^((e - kRatioTol) /
+//     2^EllLogF)) on the decoded e (feline_ref.hpp's tolerance); clamped to Nmax (flag kClamped).
 //  2. Probe LOD: log2 rho_p = max(lmin, lmaj - Lg[Nmax]) into the trilinear engine's GL step
 //     tex::trilinear_lod (bias, [min_lod, max_lod], magnification, pyramid clamp; u.TexLodF).
 //  3. Direction: the EWA's CORDIC (ewa::fx::vectoring on the conic, rotation of theta) -> c, s
