@@ -10,8 +10,10 @@
 //            [min_lod, max_lod] clamps, magnification and pyramid clamp (tex::lod_rule_ref), as
 //            the trilinear filter;
 //   probe i (0 .. N-1) at t_i = (2i - (N-1)) / (N-1) (0 for N = 1) along the major axis:
-//            (u, v) + t_i (s1 - s2) (cos theta, sin theta), spaced over a line of length
-//            2 (s1 - s2), so that the end probes' discs of radius s2 touch the ellipse's ends;
+//            (u, v) + t_i (s1 - m) (cos theta, sin theta), m = max(s2, s1 / Nmax) the minor axis
+//            as the probes' LOD sees it, spaced over a line of length 2 (s1 - m), so that the end
+//            probes' discs of radius m touch the ellipse's ends (with N clamped, 2 (s1 - s2)
+//            would put Nmax discs of radius s1 / Nmax beyond the ellipse);
 //   weight w_i = the EWA's Gaussian pixel model (1 - Q/2)^8 at Q = (d_i / s1)^2, d_i the probe's
 //            distance from the centre (the ellipse's own weight along its major axis);
 //   colour = sum w_i trilinear(lambda, probe_i) / sum w_i.
