@@ -22,12 +22,14 @@ const tex::Texture& bricks() {
 }
 
 // Step 1 on every ratio code e (log2 s1/s2, EllLogF fraction bits) up to 2^15 (log2 32 = 5 above
-// the largest B2 anisotropy clamp) and every cap: N = min(Nmax, ceil(2^e)) exactly.
+// the largest B2 anisotropy clamp) and every cap: N = min(Nmax, ceil(2^(e - tau))) exactly, and
+// equal to the float reference's count on the decoded ratio.
 TEST(FelineFx, ProbeCountExhaustiveOverRatioCodes) {
   for (int nmax = 1; nmax <= fmt::kFelNMax; ++nmax) {
     for (int64_t e = 0; e < (int64_t(1) << 15); ++e) {
       const double ratio = std::exp2(std::ldexp(double(e), -fmt::kEllLogF));
-      const int want = static_cast<int>(std::min<double>(nmax, std::ceil(ratio)));
+      const double tol = std::exp2(std::ldexp(double(e - feline::kRatioTol), -fmt::kEllLogF));
+      const int want = static_cast<int>(std::min<double>(nmax, std::max(1.0, std::ceil(tol))));
       ASSERT_EQ(ffx::probe_count(e, nmax), want) << "e " << e << " nmax " << nmax;
       ASSERT_EQ(ffx::probe_count(e, nmax), feline::probe_count(ratio, 1, nmax)) << e;
     }
@@ -52,7 +54,9 @@ TEST(FelineRef, ProbesAlongTheMajorAxis) {
   EXPECT_NEAR(one.color.r, tri.r, 1e-9);
   EXPECT_EQ(one.texels, 8);
   EXPECT_EQ(feline::filter_axes(t, 100, 50, 8, 2, 0.4, p).probes, 4);
-  EXPECT_EQ(feline::filter_axes(t, 100, 50, 8.01, 2, 0.4, p).probes, 5);
+  EXPECT_EQ(feline::filter_axes(t, 100, 50, 8.02, 2, 0.4, p).probes, 4);  // within the tolerance
+  EXPECT_EQ(feline::filter_axes(t, 100, 50, 8.05, 2, 0.4, p).probes, 5);
+  EXPECT_EQ(feline::filter_axes(t, 100, 50, 3.01, 3, 0.4, p).probes, 1);
   const auto clamped = feline::filter_axes(t, 100, 50, 64, 1, 0.4, p);
   EXPECT_EQ(clamped.probes, 8);
   EXPECT_DOUBLE_EQ(clamped.lod, 3);  // log2(64 / 8)

@@ -13,6 +13,22 @@ using namespace tu;
 using sysmodel::CacheConfig;
 using sysmodel::TexelCache;
 
+// The default scene's texture path at 64 x 48, and the C-model options that trace texel reads.
+const scene::Scene& quarter_default() {
+  static const auto s = [] {
+    auto d = scene::without_relief(scene::default_scene());
+    d.camera.width /= 4;
+    d.camera.height /= 4;
+    return d;
+  }();
+  return s;
+}
+render::CmodelOptions traced() {
+  auto o = render::texture_path_only();
+  o.trace_texels = true;
+  return o;
+}
+
 TEST(TexelCache, LruAndSetMapping) {
   // 2 sets x 2 ways of 16-texel (64 B) lines: lines 0, 2, 4 map to set 0.
   TexelCache c(CacheConfig{256, 64, 2, 0});
@@ -30,11 +46,8 @@ TEST(TexelCache, LruAndSetMapping) {
 }
 
 TEST(TexelCache, TraceCountsEachFiltersReads) {
-  auto s = scene::without_relief(scene::default_scene());
-  s.camera.width /= 4;
-  s.camera.height /= 4;
-  auto opt = render::texture_path_only();
-  opt.trace_texels = true;
+  const auto& s = quarter_default();
+  const auto opt = traced();
   for (auto f : {scene::Filter::Nearest, scene::Filter::Bilinear, scene::Filter::Trilinear, scene::Filter::Feline,
                  scene::Filter::Ewa}) {
     const auto fr = render::render_cmodel(s, f, opt);
@@ -50,11 +63,8 @@ TEST(TexelCache, TraceCountsEachFiltersReads) {
 }
 
 TEST(TexelCache, SceneHitRateAndStallCycles) {
-  auto s = scene::without_relief(scene::default_scene());
-  s.camera.width /= 4;
-  s.camera.height /= 4;
-  auto opt = render::texture_path_only();
-  opt.trace_texels = true;
+  const auto& s = quarter_default();
+  const auto opt = traced();
   const auto fr = render::render_cmodel(s, scene::Filter::Ewa, opt);
   const auto small = sysmodel::run_cache(fr, CacheConfig{1024, 64, 1, 0});
   const auto big = sysmodel::run_cache(fr, CacheConfig{64 * 1024, 64, 8, 0});

@@ -55,7 +55,7 @@ const std::array<uint32_t, fmt::kFelNMax>& recip_table() {
 int probe_count(int64_t e, int max_probes) {
   const auto& lg = log2_int_table();
   int n = 1;
-  while (n < max_probes && e > lg[static_cast<size_t>(n)]) ++n;
+  while (n < max_probes && e > lg[static_cast<size_t>(n)] + kRatioTol) ++n;
   return n;
 }
 
@@ -70,7 +70,7 @@ Setup setup(const ewa::fx::In& in, const tex::Texture& t, const Config& cfg) {
   } else {
     const int64_t e = std::max<int64_t>(0, int64_t(o.lmaj) - o.lmin);
     su.n = probe_count(e, nmax);
-    if (e > log2_int_table()[static_cast<size_t>(nmax)]) su.flags |= kClamped;
+    if (e > log2_int_table()[static_cast<size_t>(nmax)] + kRatioTol) su.flags |= kClamped;
     su.lam = std::max<int32_t>(o.lmin, o.lmaj - log2_int_table()[static_cast<size_t>(nmax)]);
     // The EWA's direction: phi (vectoring) is the minor axis, the major a quarter turn away.
     const int64_t d = static_cast<int64_t>(o.ae) - static_cast<int64_t>(o.ce);
@@ -82,8 +82,10 @@ Setup setup(const ewa::fx::In& in, const tex::Texture& t, const Config& cfg) {
     }
     ewa::fx::rotation(theta, &su.c, &su.s);
     su.sig1 = sigma(o.lmaj, &su.flags);
-    // e truncated to EwaExpF bits, at most FelTF integer bits (r = 2^-16: one code).
-    const int64_t er = std::min<int64_t>(e >> kDrop, int64_t(fmt::kFelTF) << fmt::kEwaExpF);
+    // r = m / s1 with m the clamped minor (2^lam): log2 ratio truncated to EwaExpF bits, at most
+    // FelTF integer bits (r = 2^-16: one code).
+    const int64_t el = std::max<int64_t>(0, int64_t(o.lmaj) - su.lam);  // B2 may floor lmin a code above lmaj
+    const int64_t er = std::min<int64_t>(el >> kDrop, int64_t(fmt::kFelTF) << fmt::kEwaExpF);
     su.rho = (1u << fmt::kFelTF) - ewa::fx::exp2_neg(static_cast<uint32_t>(er));
     su.delta = static_cast<uint64_t>(round_shift(static_cast<int64_t>(su.sig1 * su.rho), fmt::kFelTF));
     su.recip = recip_table()[static_cast<size_t>(su.n - 1)];

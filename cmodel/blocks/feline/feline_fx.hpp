@@ -3,16 +3,17 @@
 // B2's outputs (lmaj, lmin: log2 major / anisotropy-clamped minor semi-axis, s18.10, floored;
 // the conic ae, be, ce for the direction; lrho; flags).
 //
-//  1. Ratio e = lmaj - lmin >= 0 (u.EllLogF, log2 s1/s2). N = min(n >= 1 : e <= Lg[n]), Lg[n] =
-//     floor(log2(n) 2^EllLogF) (a 16-entry table): exactly ceil(2^(e / 2^EllLogF)) on the decoded
-//     e; clamped to Nmax (flag kClamped).
+//  1. Ratio e = lmaj - lmin >= 0 (u.EllLogF, log2 s1/s2). N = min(n >= 1 : e <= Lg[n] + kRatioTol),
+//     Lg[n] = floor(log2(n) 2^EllLogF) (a 16-entry table): exactly ceil(2^((e - kRatioTol) /
+//     2^EllLogF)) on the decoded e (feline_ref.hpp's tolerance); clamped to Nmax (flag kClamped).
 //  2. Probe LOD: log2 rho_p = max(lmin, lmaj - Lg[Nmax]) into the trilinear engine's GL step
 //     tex::trilinear_lod (bias, [min_lod, max_lod], magnification, pyramid clamp; u.TexLodF).
 //  3. Direction: the EWA's CORDIC (ewa::fx::vectoring on the conic, rotation of theta) -> c, s
 //     (s1.EwaCsF).
 //  4. Line: s1 = exp2 of lmaj truncated to EwaExpF bits (the EWA's exp2 ROM; clamped to
-//     [2^-FelSigF, 2^FelAxisMaxLog2], flag kAxisClamp), u.FelSigF; ratio r = s2 / s1 =
-//     2^-(e truncated to EwaExpF bits) (ROM, floor), rho = 1 - r (u0.FelTF); D = s1 - s2 =
+//     [2^-FelSigF, 2^FelAxisMaxLog2], flag kAxisClamp), u.FelSigF; ratio r = m / s1 =
+//     2^-((lmaj - log2 rho_p) truncated to EwaExpF bits) (ROM, floor; m = the clamped minor
+//     max(s2, s1 / Nmax)), rho = 1 - r (u0.FelTF); D = s1 - m =
 //     s1 rho, R = 1/(N-1) (ROM u1.FelRecipF, nearest; 0 for N = 1), half step h = (D R) (c, s)
 //     (each product rounded half up, s.FelSigF), distance step tq = rho R (u0.FelTF, half up).
 //  5. Probe i (0 .. N-1), k = 2i - (N-1): position (u, v) + k h rounded half up to TexUvF bits and

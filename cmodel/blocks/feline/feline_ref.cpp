@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ewa/ewa_ref.hpp"
+#include "texunit/formats.hpp"
 #include "texture/trilinear_lod.hpp"
 
 namespace tu::feline {
@@ -12,7 +13,8 @@ int probe_count(double s1, double s2, int max_probes) {
   if (!(s1 > 0)) return 1;
   if (!(s2 > 0)) return max_probes;
   // A ratio within 1e-12 of an integer n is n probes (s1 / s2 of an exact ratio rounds either way).
-  return static_cast<int>(std::clamp(std::ceil(s1 / s2 * (1 - 1e-12)), 1.0, double(max_probes)));
+  const double r = s1 / s2 * std::exp2(-std::ldexp(double(kRatioTol), -fmt::kEllLogF));
+  return static_cast<int>(std::clamp(std::ceil(r * (1 - 1e-12)), 1.0, double(max_probes)));
 }
 
 double probe_t(int i, int n) { return n <= 1 ? 0.0 : double(2 * i - (n - 1)) / (n - 1); }
@@ -30,7 +32,8 @@ Result filter_axes(const tex::Texture& t, double u, double v, double s1, double 
   const double minor = std::max(s2, s1 / p.max_probes);
   r.lod = tex::lod_rule_ref(minor > 0 ? std::log2(minor) : -INFINITY, p.lod_bias, p.min_lod, p.max_lod,
                             top, &r.tri_flags);
-  const double c = std::cos(theta), s = std::sin(theta), half = s1 - s2;
+  // The line of the clamped minor axis: the end probes' discs (radius minor) touch the ellipse's ends.
+  const double c = std::cos(theta), s = std::sin(theta), half = std::max(0.0, s1 - minor);
   double wsum = 0;
   for (int i = 0; i < r.probes; ++i) {
     const double d = probe_t(i, r.probes) * half;
