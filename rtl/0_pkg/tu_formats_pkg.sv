@@ -93,6 +93,22 @@ package tu_formats_pkg;
   localparam int PomRefineLatency = 7;  // tu_pom_refine: normalise, 4 reciprocal stages, w, T''; II = 1
   localparam int IpxCap = 16;  // iterative parallax: default iteration cap
   localparam int IpxEps = 256;  // iterative parallax: default threshold |d| < IpxEps * 2^-PomUvF (2^-8)
+  localparam int DmCodeW = 8;  // voxel: safe step code, unsigned, value code * 2^-DmQF texel
+  localparam int DmQF = 4;  // step quantum 2^-DmQF texel (codes rounded down)
+  localparam int DmEtaF = 6;  // tracer position tolerance eta = 2^-DmEtaF texel (inside the map's margin)
+  localparam int DmDF = 24;  // ray depth D in [0, 1]: unsigned, DmDF fraction bits (exact accumulator)
+  localparam int DmDW = 25;  // D code 0..2^DmDF
+  localparam int DmKF = 8;  // K = floor(2^(DmDF + PomUvF - DmQF + DmKF) / lambda): fraction bits
+  localparam int DmKW = 29;  // K <= 2^28 since lambda >= 1 texel (2^16 codes)
+  localparam int DmLambdaW = 32;  // lambda = ceil(sqrt(L2)): texels of ray per unit D, PomUvF fraction bits
+  localparam int DmL2W = 64;  // L2 = (W Pu)^2 + (W Pv)^2 + (S W)^2: unsigned, 2 PomUvF fraction bits
+  localparam int DmLayersW = 8;  // distance-map layers D: unsigned 1..255
+  localparam int DmCap = 32;  // default iteration cap
+  localparam int DmFinish = 8;  // linear steps of one layer in the finish (then DmBisect bisection steps)
+  localparam int DmBisect = 4;  // bisection steps of the finish
+  localparam int DmCapMax = 50;  // cap 1..DmCapMax: steps + finish reads fit PomNW bits
+  localparam int DmSetupBits = 4;  // tu_dm_trace: square-root / quotient bits per clock of its set-up
+  localparam int DmSetupCycles = 17;  // tu_dm_trace set-up: L2, isqrt, K = 2^44 / lambda
   localparam int PerspXyW = 12;  // pixel indices x, y and span offset n: unsigned, 0..4095
   localparam int PerspF = 40;  // fraction bits of coefficients A..I and of accumulators p_u, p_v, q
   localparam int PerspPW = 54;  // A..F, p_u, p_v: signed, PerspF fraction bits, |p| < 2^13
@@ -241,9 +257,9 @@ package tu_formats_pkg;
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
   localparam int MaterialW = 56;  // material fields of a pixel
-  localparam int ReliefW = 59;  // material relief fields
+  localparam int ReliefW = 94;  // material relief fields
   localparam int TriW = 104;  // per-triangle footprint constants
   localparam int FpixW = 81;  // pixel on its way to the filter
-  localparam int PixW = 140;  // pixel before the relief stage
+  localparam int PixW = 175;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

@@ -24,6 +24,9 @@ typedef struct packed {
   logic [tu_formats_pkg::TexAddrW-1:0] hbase;  // depth map: base word address
   logic [3:0] hlw;  // depth map: log2 width
   logic [3:0] hlh;  // depth map: log2 height
+  logic rdm;  // distance map (cap = rlayers, relief::dm_cap)
+  logic [tu_formats_pkg::DmLayersW-1:0] dlayers;  // distance map: layers
+  logic [tu_formats_pkg::TexAddrW-1:0] dbase;  // distance map: base word address in the depth RAM
 } tu_relief_t;
 // per-triangle footprint constants
 typedef struct packed {

@@ -13,6 +13,10 @@
 // pixel (the march's count of pixels, the iterative engine's Idle): order and the port need no
 // arbitration; a method switch costs the drain of the other engine. HasMarch / HasIter leave an
 // engine out (a pixel of the missing method runs on the other one).
+// Distance-map pixels (dm_i, HasDm): tu_dm_trace (§13.8) with P from the set-up's stage 5, cap n_i,
+// the map at dbase_i with dlayers_i layers (side 2^lw_i, square), the finish against the depth map
+// at base_i; one pixel in flight (Idle, Run, Done), handed over like iterative pixels; its result
+// (fract(x)) passes the refinement with k = 0.
 // DepthPort = 0: the engines' bricks ROMs (HasIter = 0 only); 1: the external depth RAM (d_* ports,
 // 1-cycle read latency) with the map's base and log2 sides given with each pixel. side_i is
 // carried to side_o with its pixel (unused: tie to 0).
@@ -21,7 +25,8 @@ module tu_pom_unit #(
   parameter int DepthPort = 0,
   parameter int SideW = 1,
   parameter int HasMarch = 1,
-  parameter int HasIter = 0
+  parameter int HasIter = 0,
+  parameter int HasDm = 0   // the distance-map tracer (DepthPort = 1 only)
 ) (
   input  logic                                clk_i,
   input  logic                                rst_ni,
@@ -36,6 +41,9 @@ module tu_pom_unit #(
   input  logic [tu_formats_pkg::PomNW-1:0]    n_i,
   input  logic                                wrap_i,
   input  logic                                iter_i,   // iterative parallax (cap n_i)
+  input  logic                                dm_i,     // distance map (cap n_i)
+  input  logic [tu_formats_pkg::DmLayersW-1:0] dlayers_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0] dbase_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0] base_i,
   input  logic [3:0]                          lw_i,
   input  logic [3:0]                          lh_i,
@@ -59,12 +67,14 @@ module tu_pom_unit #(
   localparam int NW  = tu_formats_pkg::PomNW;
   localparam int DW  = tu_formats_pkg::PomDenW;
   localparam int AW  = tu_formats_pkg::TexAddrW;
+  localparam int LyW = tu_formats_pkg::DmLayersW;
   localparam int XW  = AW + 8 + SideW;   // depth map, side: set-up -> engine
-  localparam int SSideW = 2 * UvW + 2 + XW;  // iter, T, wrap, depth map, side
+  localparam int SSideW = 2 * UvW + 3 + tu_formats_pkg::PomSW + LyW + AW + XW;  // iter, dm, T, wrap, S, distance map, depth map, side
 
   // A unit with one engine runs every pixel on it.
-  logic iter;
-  assign iter = (HasIter != 0) && (iter_i || HasMarch == 0);
+  logic iter, dm;
+  assign dm   = (HasDm != 0) && (dm_i || (HasMarch == 0 && HasIter == 0));
+  assign iter = (HasIter != 0) && !dm && (iter_i || HasMarch == 0);
 
   // ---- Set-up --------------------------------------------------------------------------------
   logic           s_valid, s_ready, s_back, s_clamped;
@@ -73,17 +83,19 @@ module tu_pom_unit #(
   logic [SSideW-1:0] s_side;
   tu_pom_setup #(.SideW(SSideW)) u_setup (
     .clk_i, .rst_ni, .in_valid_i, .in_ready_o,
-    .vx_i, .vy_i, .vz_i, .s_i, .n_i, .side_i({iter, u_i, v_i, wrap_i, base_i, lw_i, lh_i, side_i}),
+    .vx_i, .vy_i, .vz_i, .s_i, .n_i, .side_i({iter, dm, u_i, v_i, wrap_i, s_i, dlayers_i, dbase_i, base_i, lw_i, lh_i, side_i}),
     .out_valid_o(s_valid), .out_ready_i(s_ready),
     .du_o(s_du), .dv_o(s_dv), .pu_o(s_pu), .pv_o(s_pv), .n_o(s_n), .back_o(s_back),
     .clamped_o(s_clamped), .side_o(s_side)
   );
-  logic           s_iter, s_wrap;
+  logic           s_iter, s_dm, s_wrap;
   logic [UvW-1:0] s_u, s_v;
-  logic [AW-1:0]  s_base;
+  logic [tu_formats_pkg::PomSW-1:0] s_s;
+  logic [LyW-1:0] s_dlayers;
+  logic [AW-1:0]  s_dbase, s_base;
   logic [3:0]     s_lw, s_lh;
   logic [SideW-1:0] s_user;
-  assign {s_iter, s_u, s_v, s_wrap, s_base, s_lw, s_lh, s_user} = s_side;
+  assign {s_iter, s_dm, s_u, s_v, s_wrap, s_s, s_dlayers, s_dbase, s_base, s_lw, s_lh, s_user} = s_side;
 
   // ---- Engines ---------------------------------------------------------------------------------
   localparam int MSideW = 2 * UvW + 3 + SideW;  // dT, wrap, back, clamped, side
@@ -98,14 +110,22 @@ module tu_pom_unit #(
   logic [15:0]       i_u, i_v;
   logic [NW-1:0]     i_iters;
   logic [MSideW-1:0] i_side;
+  logic              x_in_valid, x_in_ready, x_valid, x_ready, x_req;
+  logic [AW-1:0]     x_addr;
+  logic [15:0]       x_u, x_v;
+  logic [NW-1:0]     x_steps;
+  logic [MSideW-1:0] x_side;
   logic [1:0]        m_cnt_q;  // pixels in the march engine (marching, output register)
-  logic              m_empty, i_empty;
+  logic              m_empty, i_empty, x_empty;
   assign m_empty = (m_cnt_q == 2'd0);
   assign i_empty = i_in_ready;  // tu_iter_parallax is ready only when it holds no pixel
+  assign x_empty = x_in_ready;  // tu_dm_trace likewise
 
-  assign m_in_valid = s_valid && !s_iter && i_empty;
-  assign i_in_valid = s_valid && s_iter && m_empty;
-  assign s_ready = s_iter ? (i_in_ready && m_empty) : (m_in_ready && i_empty);
+  assign m_in_valid = s_valid && !s_iter && !s_dm && i_empty && x_empty;
+  assign i_in_valid = s_valid && s_iter && m_empty && x_empty;
+  assign x_in_valid = s_valid && s_dm && m_empty && i_empty;
+  assign s_ready = s_dm ? (x_in_ready && m_empty && i_empty)
+                 : s_iter ? (i_in_ready && m_empty && x_empty) : (m_in_ready && i_empty && x_empty);
 
   if (HasMarch != 0) begin : g_march
     tu_pom_march #(.SideW(MSideW), .DepthPort(DepthPort)) u_march (
@@ -157,38 +177,62 @@ module tu_pom_unit #(
     assign unused_i = ^{i_in_valid, i_ready, s_pu, s_pv};
   end
 
+  if (HasDm != 0) begin : g_dm
+    tu_dm_trace #(.SideW(MSideW)) u_dm (
+      .clk_i, .rst_ni, .in_valid_i(x_in_valid), .in_ready_o(x_in_ready),
+      .u_i(s_u), .v_i(s_v), .pu_i(s_pu), .pv_i(s_pv), .s_i(s_s), .cap_i(s_n),
+      .layers_i(s_dlayers), .hbase_i(s_base), .dbase_i(s_dbase), .lw_i(s_lw),
+      .side_i({UvW'(0), UvW'(0), s_wrap, s_back, s_clamped, s_user}),
+      .d_req_o(x_req), .d_addr_o(x_addr), .d_data_i,
+      .out_valid_o(x_valid), .out_ready_i(x_ready),
+      .u_o(x_u), .v_o(x_v), .steps_o(x_steps), .side_o(x_side)
+    );
+  end else begin : g_no_dm
+    assign x_in_ready = 1'b1;  // empty
+    assign x_valid = 1'b0;
+    assign x_req = 1'b0;
+    assign x_addr = '0;
+    assign x_u = '0;
+    assign x_v = '0;
+    assign x_steps = '0;
+    assign x_side = '0;
+    logic unused_x;
+    assign unused_x = ^{x_in_valid, x_ready, s_s, s_dlayers, s_dbase};
+  end
+
   // One engine holds pixels at a time: the depth port and the refinement's input are its.
-  assign d_req_o  = m_req || i_req;
-  assign d_addr_o = i_req ? i_addr : m_addr;
+  assign d_req_o  = m_req || i_req || x_req;
+  assign d_addr_o = x_req ? x_addr : i_req ? i_addr : m_addr;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) m_cnt_q <= '0;
     else m_cnt_q <= m_cnt_q + 2'(m_in_valid && m_in_ready) - 2'(m_valid && m_ready);
   end
 
-  // ---- Refinement (iterative: k = 0, so T'' = fract(T)) ----------------------------------------
+  // ---- Refinement (iterative, distance map: k = 0, so T'' = fract(T)) ------------------------
   logic              r_valid, r_ready, r_iter;
   logic [UvW-1:0]    r_u, r_v;
   logic [NW-1:0]     r_k, r_iters;
   logic [DW-1:0]     r_a, r_den;
   logic [MSideW-1:0] r_side;
-  assign r_valid = m_valid || i_valid;
+  assign r_valid = m_valid || i_valid || x_valid;
   assign m_ready = r_ready;
   assign i_ready = r_ready;
-  assign r_iter  = i_valid;
-  assign r_u     = i_valid ? UvW'(i_u) : m_u;
-  assign r_v     = i_valid ? UvW'(i_v) : m_v;
-  assign r_k     = i_valid ? '0 : m_steps;
-  assign r_a     = i_valid ? '0 : m_a;
-  assign r_den   = i_valid ? '0 : m_den;
-  assign r_side  = i_valid ? i_side : m_side;
+  assign x_ready = r_ready;
+  assign r_iter  = i_valid || x_valid;
+  assign r_u     = i_valid ? UvW'(i_u) : x_valid ? UvW'(x_u) : m_u;
+  assign r_v     = i_valid ? UvW'(i_v) : x_valid ? UvW'(x_v) : m_v;
+  assign r_k     = r_iter ? '0 : m_steps;
+  assign r_a     = r_iter ? '0 : m_a;
+  assign r_den   = r_iter ? '0 : m_den;
+  assign r_side  = i_valid ? i_side : x_valid ? x_side : m_side;
   logic [NW-1:0] f_steps;
   logic          f_iter;
   tu_pom_refine #(.SideW(2 + NW + 2 + SideW)) u_refine (
     .clk_i, .rst_ni, .in_valid_i(r_valid), .in_ready_o(r_ready),
     .u_i(r_u), .v_i(r_v), .du_i(r_side[MSideW-1 -: UvW]), .dv_i(r_side[SideW+3 +: UvW]),
     .steps_i(r_k), .a_i(r_a), .den_i(r_den), .wrap_i(r_side[SideW+2]),
-    .side_i({r_iter, i_nonconv && r_iter, i_iters, r_side[SideW+1:0]}),
+    .side_i({r_iter, i_nonconv && i_valid, i_valid ? i_iters : x_steps, r_side[SideW+1:0]}),
     .out_valid_o, .out_ready_i,
     .u_o, .v_o, .steps_o(f_steps), .w_o, .discard_o,
     .side_o({f_iter, nonconv_o, r_iters, back_o, clamped_o, side_o})

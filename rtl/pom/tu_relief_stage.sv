@@ -14,14 +14,18 @@
 // joins the FIFO head with the POM result when the head is shifted (head-of-line), so pixels
 // without a shift stream at 1 pixel / clock and wait only for older shifted pixels.
 // Stream cycles without back-pressure: relief::stage_cycles (same structure, cycle by cycle).
-// flags_o: relief::ReliefFlag bits {back (POM), nonconv (iterative), Vz guard}; steps_o: march
-// steps or iterations (0 when not shifted).
+// Distance-map pixels (dm_i; HasDistanceMap from the unit configuration): tu_pom_unit's
+// tu_dm_trace with the map at dbase_i (dlayers_i layers, the depth map's side) and the cap layers_i
+// (the driver's relief::dm_cap); steps_o = map steps + finish reads.
+// flags_o: relief::ReliefFlag bits {back (POM, distance map), nonconv (iterative), Vz guard};
+// steps_o: march steps or iterations (0 when not shifted).
 `include "tu_assert.svh"
 module tu_relief_stage #(
   parameter int SideW = 1,
   // Relief engines (the texture-unit top passes tu_unit_cfg_pkg's HasPom / HasIterParallax)
   parameter int HasPom = 1,
   parameter int HasIterParallax = 1,
+  parameter int HasDistanceMap = 1,
   // Sideband FIFO entries: more than the pixels the POM path holds (3 + 7 + 2 + 7), so a
   // full POM path never stalls the pixels behind it for lack of FIFO room.
   parameter int FifoDepth = 32
@@ -38,6 +42,9 @@ module tu_relief_stage #(
   input  logic                                 guard_i,
   input  logic                                 adaptive_i,
   input  logic                                 iter_i,
+  input  logic                                 dm_i,
+  input  logic [tu_formats_pkg::DmLayersW-1:0] dlayers_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0]  dbase_i,
   input  logic [tu_formats_pkg::PomNW-1:0]     layers_i,
   input  logic [tu_formats_pkg::PomSW-1:0]     scale_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]  hbase_i,
@@ -96,7 +103,8 @@ module tu_relief_stage #(
   endfunction
 
   // ---- Layers N (3 stages; its side data moves in lockstep under an identical controller) ----
-  localparam int LW = 2 * PF + 3 * VW + SW + NW + 2 + AW + 8;
+  localparam int LyW  = tu_formats_pkg::DmLayersW;
+  localparam int LW = 2 * PF + 3 * VW + SW + NW + 3 + LyW + 2 * AW + 8;
   logic          l_valid, l_out_valid, l_en, m_ready;
   logic [NW-1:0] l_n;
   logic [LL-1:0] l_stage_valid;
@@ -115,7 +123,7 @@ module tu_relief_stage #(
   always_ff @(posedge clk_i) begin
     if (l_en) begin
       l_side_q[0] <= {frac(u_i, lw_i), frac(v_i, lh_i), vx_i, vy_i, vz_i, scale_i, layers_i,
-                      adaptive_i && !iter_i, iter_i, hbase_i, hlw_i, hlh_i};
+                      adaptive_i && !iter_i && !dm_i, iter_i, dm_i, dlayers_i, dbase_i, hbase_i, hlw_i, hlh_i};
       for (int k = 1; k < LL; k++) l_side_q[k] <= l_side_q[k-1];
     end
   end
@@ -123,10 +131,12 @@ module tu_relief_stage #(
   logic [VW-1:0] m_vx, m_vy, m_vz;
   logic [SW-1:0] m_s;
   logic [NW-1:0] m_layers, m_n;
-  logic          m_adaptive, m_iter;
-  logic [AW-1:0] m_hbase;
+  logic          m_adaptive, m_iter, m_dm;
+  logic [LyW-1:0] m_dlayers;
+  logic [AW-1:0] m_hbase, m_dbase;
   logic [3:0]    m_hlw, m_hlh;
-  assign {m_fu, m_fv, m_vx, m_vy, m_vz, m_s, m_layers, m_adaptive, m_iter, m_hbase, m_hlw, m_hlh} =
+  assign {m_fu, m_fv, m_vx, m_vy, m_vz, m_s, m_layers, m_adaptive, m_iter, m_dm, m_dlayers, m_dbase,
+          m_hbase, m_hlw, m_hlh} =
       l_side_q[LL-1];
   assign m_n = m_adaptive ? l_n : m_layers;
 
@@ -136,10 +146,12 @@ module tu_relief_stage #(
   logic [NW-1:0]   p_n, p_steps;
   logic [tu_formats_pkg::PomWW-1:0] p_w;
   logic            p_discard, p_back, p_clamped, p_nonconv, p_iter;
-  tu_pom_unit #(.DepthPort(1), .SideW(NW + 1), .HasMarch(HasPom), .HasIter(HasIterParallax)) u_pom (
+  tu_pom_unit #(.DepthPort(1), .SideW(NW + 1), .HasMarch(HasPom), .HasIter(HasIterParallax),
+                .HasDm(HasDistanceMap)) u_pom (
     .clk_i, .rst_ni, .in_valid_i(l_out_valid), .in_ready_o(m_ready),
     .u_i(PUvW'(m_fu)), .v_i(PUvW'(m_fv)), .vx_i(m_vx), .vy_i(m_vy), .vz_i(m_vz), .s_i(m_s),
-    .n_i(m_n), .wrap_i(1'b1), .iter_i(m_iter), .base_i(m_hbase), .lw_i(m_hlw), .lh_i(m_hlh),
+    .n_i(m_n), .wrap_i(1'b1), .iter_i(m_iter), .dm_i(m_dm), .dlayers_i(m_dlayers), .dbase_i(m_dbase),
+    .base_i(m_hbase), .lw_i(m_hlw), .lh_i(m_hlh),
     .side_i({m_iter, m_n}),
     .d_req_o, .d_addr_o, .d_data_i,
     .out_valid_o(p_valid), .out_ready_i(p_ready),
@@ -178,5 +190,5 @@ module tu_relief_stage #(
 
   // valid/ready protocol checks (rtl/common/tu_assert.svh)
   `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, n_o, steps_o, flags_o, side_o})
-  `TU_ASSERT_HANDSHAKE(InHandshake, in_valid_i, in_ready_o, {u_i, v_i, lw_i, lh_i, rel_i, guard_i, adaptive_i, iter_i, layers_i, scale_i, hbase_i, hlw_i, hlh_i, side_i})
+  `TU_ASSERT_HANDSHAKE(InHandshake, in_valid_i, in_ready_o, {u_i, v_i, lw_i, lh_i, rel_i, guard_i, adaptive_i, iter_i, dm_i, dlayers_i, dbase_i, layers_i, scale_i, hbase_i, hlw_i, hlh_i, side_i})
 endmodule

@@ -5,7 +5,7 @@
 // back, so the stage sees pixels waiting for their view word.
 module tu_relief_stage_sim #(
   parameter int SideW = 20,
-  parameter int Words = 1 << 17  // depth RAM words (the test's maps take ~72,000)
+  parameter int Words = 1 << 21  // depth RAM words (the default scene with its distance map: 1,114,112)
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -19,6 +19,9 @@ module tu_relief_stage_sim #(
   input  logic                                 guard_i,
   input  logic                                 adaptive_i,
   input  logic                                 iter_i,
+  input  logic                                 dm_i,
+  input  logic [tu_formats_pkg::DmLayersW-1:0] dlayers_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0]  dbase_i,
   input  logic [tu_formats_pkg::PomNW-1:0]     layers_i,
   input  logic [tu_formats_pkg::PomSW-1:0]     scale_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]  hbase_i,
@@ -51,7 +54,7 @@ module tu_relief_stage_sim #(
 
   tu_relief_stage #(.SideW(SideW)) u_stage (
     .clk_i, .rst_ni, .in_valid_i, .in_ready_o, .u_i, .v_i, .lw_i, .lh_i, .rel_i, .guard_i,
-    .adaptive_i, .iter_i, .layers_i, .scale_i, .hbase_i, .hlw_i, .hlh_i, .side_i,
+    .adaptive_i, .iter_i, .dm_i, .dlayers_i, .dbase_i, .layers_i, .scale_i, .hbase_i, .hlw_i, .hlh_i, .side_i,
     .view_valid_i(view_valid), .view_ready_o(view_ready), .view_ok_i, .vx_i, .vy_i, .vz_i, .vc_i,
     .d_req_o(d_req), .d_addr_o(d_addr), .d_data_i(d_word[7:0]),
     .out_valid_o, .out_ready_i, .u_o, .v_o, .n_o, .steps_o, .flags_o, .side_o

@@ -35,6 +35,7 @@ module tu_texture_unit #(
   parameter int ShadeModel  = tu_unit_cfg_pkg::ShadeModel,
   parameter int HasPom      = {31'b0, tu_unit_cfg_pkg::HasPom},
   parameter int HasIterParallax = {31'b0, tu_unit_cfg_pkg::HasIterParallax},
+  parameter int HasDistanceMap = {31'b0, tu_unit_cfg_pkg::HasDistanceMap},
   // B2's Jacobian: 0 analytic (tu_ellipse), 1 the seed's forward-difference recurrences
   // (tu_ellipse_rec: latency EllRecLatency > PerspLatency, so B1's output waits in a FIFO)
   parameter int EllRecurrence = {31'b0, tu_unit_cfg_pkg::EllRecurrence},
@@ -87,6 +88,9 @@ module tu_texture_unit #(
   input  logic [tu_formats_pkg::TexAddrW-1:0]   hbase_i,
   input  logic [3:0]                            hlw_i,
   input  logic [3:0]                            hlh_i,
+  input  logic                                  rdm_i,     // distance map (cap = rlayers)
+  input  logic [tu_formats_pkg::DmLayersW-1:0]  dlayers_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0]   dbase_i,   // the map in the depth RAM
   // per-pixel tangent-space view, one word per pixel of a relief span, in pixel order
   input  logic                                  view_valid_i,
   output logic                                  view_ready_o,
@@ -167,6 +171,9 @@ module tu_texture_unit #(
     in_rel.hbase   = hbase_i;
     in_rel.hlw     = hlw_i;
     in_rel.hlh     = hlh_i;
+    in_rel.rdm     = rdm_i;
+    in_rel.dlayers = dlayers_i;
+    in_rel.dbase   = dbase_i;
   end
   assign span_side = {a_i, d_i, g_i, h_i, x0_i, x1_i, y_i, in_tri, in_mat, in_rel};
   assign in_ready_o = ps_in_ready && ns_in_ready;
@@ -319,11 +326,13 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::PomNW-1:0] rs_n, rs_steps;
   logic [2:0]                       rs_flags;
   if (HasRelief != 0) begin : g_relief
-    tu_relief_stage #(.SideW(RSideW), .HasPom(HasPom), .HasIterParallax(HasIterParallax)) u_relief (
+    tu_relief_stage #(.SideW(RSideW), .HasPom(HasPom), .HasIterParallax(HasIterParallax),
+                      .HasDistanceMap(HasDistanceMap)) u_relief (
       .clk_i, .rst_ni, .in_valid_i(pj_valid), .in_ready_o(pj_ready),
       .u_i(b1_u), .v_i(b1_v), .lw_i(sb_pix.fpix.mat.tlw), .lh_i(sb_pix.fpix.mat.tlh), .rel_i(pj_rel.rel),
       .guard_i(b1_flag), .adaptive_i(pj_rel.radapt), .iter_i(pj_rel.riter), .layers_i(pj_rel.rlayers), .scale_i(pj_rel.rscale),
-      .hbase_i(pj_rel.hbase), .hlw_i(pj_rel.hlw), .hlh_i(pj_rel.hlh), .side_i(rs_in),
+      .hbase_i(pj_rel.hbase), .hlw_i(pj_rel.hlw), .hlh_i(pj_rel.hlh),
+      .dm_i(pj_rel.rdm), .dlayers_i(pj_rel.dlayers), .dbase_i(pj_rel.dbase), .side_i(rs_in),
       .view_valid_i, .view_ready_o, .view_ok_i, .vx_i, .vy_i, .vz_i, .vc_i,
       .d_req_o, .d_addr_o, .d_data_i,
       .out_valid_o(rs_valid), .out_ready_i(rs_ready), .u_o(rs_u), .v_o(rs_v), .n_o(rs_n), .steps_o(rs_steps), .flags_o(rs_flags),
@@ -566,7 +575,7 @@ module tu_texture_unit #(
   `TU_ASSERT_HANDSHAKE(InHandshakeB2, in_valid_i, in_ready_o, {kux_i, kvx_i, kuy_i, kvy_i, m_i, nn_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, tclamp_i,
                                                                  wsrc_i, cap_i, filt_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
-                                                                 hlw_i, hlh_i})
+                                                                 hlw_i, hlh_i, rdm_i, dlayers_i, dbase_i})
   `TU_ASSERT_HANDSHAKE(ViewHandshake, view_valid_i, view_ready_o, {view_ok_i, vx_i, vy_i, vz_i, vc_i})
   `TU_ASSERT_HANDSHAKE(ShadeHandshake, shade_valid_i, shade_ready_o, {shade_i})
 endmodule

@@ -11,8 +11,11 @@ module tu_texture_unit_sim #(
   parameter int HasShading  = {31'b0, tu_unit_cfg_pkg::HasShading},
   parameter int HasPom      = {31'b0, tu_unit_cfg_pkg::HasPom},
   parameter int HasIterParallax = {31'b0, tu_unit_cfg_pkg::HasIterParallax},
+  parameter int HasDistanceMap = {31'b0, tu_unit_cfg_pkg::HasDistanceMap},
   parameter int EllRecurrence = {31'b0, tu_unit_cfg_pkg::EllRecurrence},
-  parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words
+  parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words,
+  // the depth RAM also holds the distance maps (the default scene's wall: 1,114,112 words)
+  parameter int DepthWords = 2 * Words
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -63,6 +66,9 @@ module tu_texture_unit_sim #(
   input  logic [tu_formats_pkg::TexAddrW-1:0]   hbase_i,
   input  logic [3:0]                            hlw_i,
   input  logic [3:0]                            hlh_i,
+  input  logic                                  rdm_i,
+  input  logic [tu_formats_pkg::DmLayersW-1:0]  dlayers_i,
+  input  logic [tu_formats_pkg::TexAddrW-1:0]   dbase_i,
   // pixel output
   output logic                                  out_valid_o,
   input  logic                                  out_ready_i,
@@ -91,13 +97,14 @@ module tu_texture_unit_sim #(
   logic [tu_formats_pkg::ShadeWordW-1:0] shade;
   tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear), .HasTriFilter(HasTriFilter), .HasNearest(HasNearest),
                     .HasRelief(HasRelief), .HasShading(HasShading),
-                    .HasPom(HasPom), .HasIterParallax(HasIterParallax), .EllRecurrence(EllRecurrence)) u_tu (
+                    .HasPom(HasPom), .HasIterParallax(HasIterParallax), .HasDistanceMap(HasDistanceMap),
+                    .EllRecurrence(EllRecurrence)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
     .kuy_i, .kvy_i, .m_i, .nn_i, .dm_i, .dexp_i, .laniso_i, .maxlod_i, .lbias_i, .lminlod_i, .lmaxlod_i,
     .tbase_i, .tlw_i, .tlh_i, .tclamp_i, .wsrc_i, .cap_i, .filt_i,
-    .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i,
+    .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i, .rdm_i, .dlayers_i, .dbase_i,
     .view_valid_i(view_valid), .view_ready_o(view_ready), .view_ok_i(view[3 * VzW + tu_formats_pkg::PomCW]),
     .vx_i(view[2 * VzW + tu_formats_pkg::PomCW +: VzW]), .vy_i(view[VzW + tu_formats_pkg::PomCW +: VzW]),
     .vz_i(view[tu_formats_pkg::PomCW +: VzW]), .vc_i(view[0 +: tu_formats_pkg::PomCW]),
@@ -113,7 +120,7 @@ module tu_texture_unit_sim #(
     .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
   );
   // view word: {ok, vx, vy, vz, c} from bit 3 VzW + PomCW down
-  tu_texel_ram #(.Words(Words)) u_depth (
+  tu_texel_ram #(.Words(DepthWords)) u_depth (
     .clk_i, .rd_en_i(d_req), .rd_addr_i(d_addr), .rd_data_o(d_word),
     .wr_en_i(ram_we_i && ram_sel_i == 2'd1), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
   );

@@ -290,6 +290,40 @@ TEST(TextureUnitRtl, IterativeReliefSceneEqualsCModelWithCyclesPredicted) {
   }
 }
 
+// Distance-map relief (seed 003 §7) through the relief stage's tracer (tu_dm_trace): the default
+// scene's wall with method distance_map / distance_map_refined (a 64-texel bricks map, 16 map
+// layers, cap 32), every pixel == render_cmodel (colour, cap, map steps + finish reads, flags), 30 %
+// stalls (the classic map; the refined one runs the same RTL on other codes: without stalls only);
+// without stalls the cycles are predicted (ewa::texture_unit_cycles).
+TEST(TextureUnitRtl, DistanceMapReliefSceneEqualsCModelWithCyclesPredicted) {
+  auto s = small_scene();
+  s.textures.at("bricks").size = 64;  // the map (64 x 64 x 16) and the colour texture
+  for (auto method : {scene::ReliefMethod::DistanceMap, scene::ReliefMethod::DistanceMapRefined}) {
+    s.materials.at("wall").relief->method = method;
+    cosim::RtlRenderOptions o;
+    o.relief = true;
+    if (method == scene::ReliefMethod::DistanceMap) {
+      o.stall_prob = 0.3;
+      const auto r = cosim::render_rtl(s, o);
+      EXPECT_TRUE(r.ok()) << r.first_mismatch;
+    }
+    o.stall_prob = 0;
+    const auto r0 = cosim::render_rtl(s, o);
+    EXPECT_TRUE(r0.ok()) << r0.first_mismatch;
+    size_t shifted = 0, steps = 0;
+    for (const auto& p : r0.frame.pixels) {
+      shifted += p.relief_n > 0;
+      steps += static_cast<size_t>(p.relief_steps);
+    }
+    EXPECT_GT(shifted, 300u);
+    EXPECT_EQ(r0.cycles, r0.predicted_cycles);
+    std::printf("%s cap 32: %zu px, %zu shifted (%.2f map steps + finish reads each); cycles measured %llu "
+                "predicted %llu\n",
+                scene::to_string(method), r0.frame.pixels.size(), shifted, double(steps) / double(std::max<size_t>(1, shifted)),
+                (unsigned long long)r0.cycles, (unsigned long long)r0.predicted_cycles);
+  }
+}
+
 // EWA sub-texel border weights are not in the RTL unit yet (docs/blocks/ewa.md "Border
 // weights"): a message naming the material's field, before any simulation.
 TEST(TextureUnitRtl, BorderWeightsAreRejectedNamingTheField) {

@@ -3,16 +3,20 @@
 // view bubbles on (a) every covered pixel of the default scene (wall: relief, ground: none) with
 // pom_fixed / pom_adaptive / iterative and 8 / 32 layers, (b) seeded random pixels with extremes,
 // POM and iterative mixed; stream cycles without stalls equal relief::stage_cycles; non-relief
-// pixels stream at 1 pixel / clock.
+// pixels stream at 1 pixel / clock; (c) distance-map pixels (tu_dm_trace): the default scene's
+// wall and seeded random pixels with extremes, mixed with POM and iterative ones.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <random>
 #include <tuple>
 
+#include "distmap/distance_map.hpp"
 #include "pom/relief.hpp"
 #include "relief_stage_rtl.hpp"
 #include "texture/texture.hpp"
@@ -23,23 +27,38 @@ namespace {
 using namespace tu;
 using cosim::ReliefPixel;
 
-// Depth maps in the RAM model, one after another.
+// Depth maps in the RAM model, one after another, each followed by its distance map if it has one.
 struct Bank {
   std::vector<relief::Maps> maps;
-  std::vector<uint32_t> base;
+  std::vector<uint32_t> base, dbase;
   std::vector<uint32_t> ram;
   int add(const img::Gray8& height) { return add(relief::make_maps(height)); }
+  // With the distance map of `height` (classic or refined) for relief scale `scale`.
+  int add_dm(const img::Gray8& height, int layers, double scale, bool refined) {
+    relief::Maps m = relief::make_maps(height);
+    dm::Params p;
+    p.layers = layers;
+    p.scale = scale;
+    p.refined = refined;
+    m.dist = std::make_shared<const dm::Map>(dm::build(m.depth, p));
+    return add(std::move(m));
+  }
   int add(relief::Maps m) {
     maps.push_back(std::move(m));
     base.push_back(static_cast<uint32_t>(ram.size()));
     for (uint8_t d : maps.back().depth.px) ram.push_back(d);
+    dbase.push_back(static_cast<uint32_t>(ram.size()));
+    if (maps.back().dist)
+      for (uint8_t c : maps.back().dist->code) ram.push_back(c);
     return static_cast<int>(maps.size()) - 1;
   }
   void place(ReliefPixel* p, int m) const {
-    const auto& d = maps[static_cast<size_t>(m)].depth;
+    const auto& mm = maps[static_cast<size_t>(m)];
     p->hbase = base[static_cast<size_t>(m)];
-    p->hlw = std::countr_zero(static_cast<unsigned>(d.width));
-    p->hlh = std::countr_zero(static_cast<unsigned>(d.height));
+    p->hlw = std::countr_zero(static_cast<unsigned>(mm.depth.width));
+    p->hlh = std::countr_zero(static_cast<unsigned>(mm.depth.height));
+    p->dbase = dbase[static_cast<size_t>(m)];
+    p->dlayers = mm.dist ? mm.dist->layers : 0;
   }
 };
 
@@ -56,7 +75,10 @@ struct Expect {
   bool shift;
 };
 relief::Method method_of(const ReliefPixel& p) {
-  return p.iter ? relief::Method::Iterative : p.adaptive ? relief::Method::PomAdaptive : relief::Method::PomFixed;
+  return p.dm     ? relief::Method::DistanceMap
+         : p.iter ? relief::Method::Iterative
+         : p.adaptive ? relief::Method::PomAdaptive
+                      : relief::Method::PomFixed;
 }
 Expect expect(const Bank& b, int map, const ReliefPixel& p) {
   if (!(p.rel && !p.guard && p.ok)) return {p.u, p.v, 0, 0, 0, false};
@@ -66,15 +88,30 @@ Expect expect(const Bank& b, int map, const ReliefPixel& p) {
                                            p.layers);
   return {r.u, r.v, r.n, r.steps, r.flags, true};
 }
-relief::StagePixel stage_pixel(const Expect& e, const ReliefPixel& p) { return {e.shift, e.steps, p.iter}; }
-const char* method_name(relief::Method m) {
-  return m == relief::Method::PomFixed ? "pom_fixed" : m == relief::Method::PomAdaptive ? "pom_adaptive" : "iterative";
+relief::StagePixel stage_pixel(const Expect& e, const ReliefPixel& p) {
+  return relief::stage_pixel(e.shift, e.steps, method_of(p));
 }
+const char* method_name(relief::Method m) { return scene::to_string(m); }
 
 // The complexity texel the shader samples at the unshifted uv (relief::layers_at).
 uint32_t complexity_at(const relief::Maps& m, const ReliefPixel& p) {
   const int du = fmt::kPomUvF - fmt::kTexUvF;
   return pom::tex_nearest(m.complexity, relief::shift_code(p.u, du - p.lw), relief::shift_code(p.v, du - p.lh));
+}
+
+// A random view: a unit vector, grazing (|vz| tiny), behind (vz < 0), straight on, or any.
+pom::View random_view(std::mt19937_64& rng, std::uniform_real_distribution<double>& uni,
+                      std::uniform_int_distribution<int>& pct) {
+  double x = uni(rng), y = uni(rng), z = uni(rng);
+  const int vk = pct(rng);
+  if (vk < 15) z = uni(rng) * 0.02;  // grazing, either side
+  else if (vk < 25) z = -std::fabs(z);
+  else if (vk < 30) x = y = 0, z = 1;
+  else z = std::fabs(z);
+  relief::TangentView tv;
+  const double l = std::sqrt(x * x + y * y + z * z);
+  if (l > 1e-9) tv = {x / l, y / l, z / l};
+  return relief::quantise(tv, 0);
 }
 
 struct Checked {
@@ -118,13 +155,14 @@ struct ScenePixels {
   std::vector<int> maps;
 };
 ScenePixels scene_pixels(Bank& b, relief::Method method, int layers) {
-  const auto s = scene::default_scene();
+  auto s = scene::default_scene();
   const auto cov = render::visibility(s);
   int wall = -1;
   for (size_t o = 0; o < s.objects.size(); ++o)
     if (s.materials.at(s.objects[o].material).relief) wall = static_cast<int>(o);
   const auto& wall_mat = s.objects[static_cast<size_t>(wall)].material;
-  const auto& mat = s.materials.at(wall_mat);
+  auto& mat = s.materials.at(wall_mat);
+  mat.relief->method = method;  // distance maps: make_maps builds the map
   const int map = b.add(relief::make_maps(s, wall_mat));  // as render_cmodel
   std::vector<std::pair<int, int>> log2s;  // colour texture level 0 per object
   for (const auto& ob : s.objects) {
@@ -149,7 +187,8 @@ ScenePixels scene_pixels(Bank& b, relief::Method method, int layers) {
       p.scale = q.scale;
       p.adaptive = method == relief::Method::PomAdaptive;
       p.iter = method == relief::Method::Iterative;
-      p.layers = layers;
+      p.dm = method == relief::Method::DistanceMap;
+      p.layers = p.dm ? static_cast<int>(relief::dm_cap(layers)) : layers;
       b.place(&p, map);
       p.vc = complexity_at(b.maps[static_cast<size_t>(map)], p);
     }
@@ -223,17 +262,7 @@ TEST(ReliefStageCosim, RandomAndExtremesWithStalls) {
     p.layers = lk < 10 ? 1 : lk < 20 ? 63 : layers(rng);
     const int sk = pct(rng);
     p.scale = sk < 5 ? 0 : sk < 10 ? 65535 : static_cast<uint32_t>(pct(rng) * 655);
-    // view: a unit vector; grazing (|vz| tiny), behind (vz < 0), straight on, or any
-    double x = uni(rng), y = uni(rng), z = uni(rng);
-    const int vk = pct(rng);
-    if (vk < 15) z = uni(rng) * 0.02;  // grazing, either side
-    else if (vk < 25) z = -std::fabs(z);
-    else if (vk < 30) x = y = 0, z = 1;
-    else z = std::fabs(z);
-    relief::TangentView tv;
-    const double l = std::sqrt(x * x + y * y + z * z);
-    if (l > 1e-9) tv = {x / l, y / l, z / l};
-    p.view = relief::quantise(tv, 0);
+    p.view = random_view(rng, uni, pct);
     b.place(&p, m);
     p.vc = complexity_at(b.maps[static_cast<size_t>(m)], p);
     px.push_back(p);
@@ -326,5 +355,119 @@ TEST(ReliefStageCosim, NonReliefPixelsAtOnePerClock) {
   std::vector<ReliefPixel> one = {px[100]};
   std::printf("one shifted pixel, %u march steps: output in cycle %llu (plain pixel: cycle 1)\n", e.steps,
               static_cast<unsigned long long>(cycles(one) - 1));
+}
+
+// (c) Distance maps: the default scene's wall traced through its 256 x 256 x 16 classic map, with
+// 30 % stalls and view bubbles, then without stalls: cycles = relief::stage_cycles.
+TEST(ReliefStageCosim, DistanceMapSceneWithStallsAndCycles) {
+  Bank b;
+  const auto sp = scene_pixels(b, relief::Method::DistanceMap, 32);
+  size_t shifted = 0, moved = 0;
+  uint64_t steps = 0;
+  std::vector<relief::StagePixel> sched;
+  for (size_t i = 0; i < sp.px.size(); ++i) {
+    const auto e = expect(b, sp.maps[i], sp.px[i]);
+    shifted += e.shift;
+    steps += e.steps;
+    moved += e.u != sp.px[i].u || e.v != sp.px[i].v;
+    sched.push_back(stage_pixel(e, sp.px[i]));
+  }
+  const auto c = check(b, sp.maps, sp.px, 0.3, 13);
+  EXPECT_EQ(c.mismatches, 0u) << c.first;
+  EXPECT_GT(moved, 5000u);
+  const auto c0 = check(b, sp.maps, sp.px, 0, 1);
+  EXPECT_EQ(c0.mismatches, 0u) << c0.first;
+  const uint64_t predicted = relief::stage_cycles(sched);
+  EXPECT_EQ(c0.run.cycles, predicted);
+  std::printf("scene distance_map cap 32: %zu pixels, %zu shifted (%.3f map steps + finish reads each), %zu moved; "
+              "%llu cycles with 30%% stalls; no stalls: %llu measured, %llu predicted\n",
+              sp.px.size(), shifted, double(steps) / double(shifted), moved,
+              static_cast<unsigned long long>(c.run.cycles), static_cast<unsigned long long>(c0.run.cycles),
+              static_cast<unsigned long long>(predicted));
+}
+
+// Seeded random distance-map pixels with extremes (grazing, behind, straight and zero views; caps
+// 1 and DmCapMax; flat maps that stop at once or reach the bottom; 1 and 255 map layers; a
+// refined map), mixed with POM and iterative pixels that share the depth port. TU_DM_RANDOM=N
+// runs N pixels instead of 3,000 (the 1,000,000-pixel run of docs/blocks/relief.md §13.8).
+TEST(ReliefStageCosim, DistanceMapRandomAndExtremesWithStalls) {
+  const char* count_env = std::getenv("TU_DM_RANDOM");
+  const int count = count_env ? std::max(1, std::atoi(count_env)) : 3000;
+  std::mt19937_64 rng(2027);
+  Bank b;
+  struct DmMap {
+    int map;
+    uint32_t scale;
+  };
+  std::vector<DmMap> dms;
+  auto add = [&](const img::Gray8& h, int layers, double scale, bool refined) {
+    dms.push_back({b.add_dm(h, layers, scale, refined), relief::quantise({}, scale).scale});
+  };
+  add(img::Gray8(4, 4, 255), 4, 0.5, false);         // depth 0: the surface at the top
+  add(img::Gray8(8, 8, 0), 3, 0.25, false);          // depth 255: every ray reaches the bottom
+  add(tex::bricks(64).height, 16, 0.05, false);
+  add(tex::bricks(32).height, 1, 0.125, false);      // one layer
+  add(noise(16, 16, rng), 255, 0.25, false);         // 255 layers
+  add(tex::bricks(16).height, 8, 0.25, true);        // refined
+  add(noise(32, 32, rng), 16, 0.1, false);
+  const int pom_map = b.add(tex::bricks(64).height);
+  std::uniform_int_distribution<int> pct(0, 99), layers(1, 63);
+  std::uniform_real_distribution<double> uni(-1, 1);
+  std::vector<ReliefPixel> px;
+  std::vector<int> maps;
+  for (int i = 0; i < count; ++i) {
+    ReliefPixel p;
+    p.u = static_cast<int32_t>(rng());
+    p.v = pct(rng) < 10 ? std::numeric_limits<int32_t>::min() : static_cast<int32_t>(rng());
+    p.lw = pct(rng) % 11;
+    p.lh = pct(rng) < 50 ? p.lw : pct(rng) % 11;
+    p.rel = pct(rng) < 85;
+    p.guard = pct(rng) < 5;
+    p.ok = pct(rng) < 95;
+    const int kind = pct(rng);
+    p.dm = kind < 60;
+    p.iter = !p.dm && kind < 75;
+    p.adaptive = !p.dm && !p.iter && pct(rng) < 50;
+    const int lk = pct(rng);
+    p.layers = lk < 10 ? 1 : lk < 20 ? 63 : layers(rng);
+    int m = pom_map;
+    if (p.dm) {
+      const auto& d = dms[static_cast<size_t>(pct(rng)) % dms.size()];
+      m = d.map;
+      p.scale = d.scale;
+      p.layers = static_cast<int>(relief::dm_cap(p.layers));
+    } else {
+      p.scale = static_cast<uint32_t>(pct(rng) * 655);
+    }
+    p.view = random_view(rng, uni, pct);
+    if (pct(rng) < 2) p.view.vx = p.view.vy = p.view.vz = 0;  // V = 0: clamped, no shift
+    b.place(&p, m);
+    p.vc = complexity_at(b.maps[static_cast<size_t>(m)], p);
+    px.push_back(p);
+    maps.push_back(m);
+  }
+  size_t dm_px = 0, moved = 0, guard = 0, capped = 0;
+  std::vector<relief::StagePixel> sched;
+  for (size_t i = 0; i < px.size(); ++i) {
+    const auto e = expect(b, maps[i], px[i]);
+    dm_px += e.shift && px[i].dm;
+    moved += e.shift && px[i].dm && (e.u != px[i].u || e.v != px[i].v);
+    guard += e.shift && px[i].dm && (e.flags & relief::kReliefVzGuard) != 0;
+    capped += e.shift && px[i].dm && px[i].layers == 1;
+    sched.push_back(stage_pixel(e, px[i]));
+  }
+  EXPECT_GT(dm_px, static_cast<size_t>(count) / 3);
+  EXPECT_GT(moved, static_cast<size_t>(count) / 10);
+  EXPECT_GT(guard, static_cast<size_t>(count) / 60);
+  const auto c = check(b, maps, px, 0.3, 7);
+  EXPECT_EQ(c.mismatches, 0u) << c.first;
+  const auto c0 = check(b, maps, px, 0, 7);
+  EXPECT_EQ(c0.mismatches, 0u) << c0.first;
+  EXPECT_EQ(c0.run.cycles, relief::stage_cycles(sched));
+  std::printf("distance-map random: %zu pixels, %zu traced (%zu moved, %zu Vz guard, %zu cap 1), %llu cycles (30%% "
+              "stalls); no stalls %llu measured, %llu predicted\n",
+              px.size(), dm_px, moved, guard, capped, static_cast<unsigned long long>(c.run.cycles),
+              static_cast<unsigned long long>(c0.run.cycles),
+              static_cast<unsigned long long>(relief::stage_cycles(sched)));
 }
 }  // namespace

@@ -11,7 +11,7 @@ namespace tu::cosim {
 
 namespace {
 enum Col { kU, kV, kLw, kLh, kRel, kGuard, kAdaptive, kIter, kLayers, kScale, kHbase, kHlw, kHlh, kSide,
-           kOk, kVx, kVy, kVz, kVc, kCols };
+           kOk, kVx, kVy, kVz, kVc, kDm, kDlayers, kDbase, kCols };
 constexpr uint32_t kSideMask = (1u << 20) - 1;  // tu_relief_stage_sim's SideW
 
 int64_t sext32(uint64_t x) { return static_cast<int32_t>(static_cast<uint32_t>(x)); }
@@ -42,6 +42,9 @@ ReliefRun run_relief_stage(const std::vector<ReliefPixel>& px, const std::vector
     r[kVy] = static_cast<uint16_t>(p.view.vy);
     r[kVz] = static_cast<uint16_t>(p.view.vz);
     r[kVc] = p.vc;
+    r[kDm] = p.dm;
+    r[kDlayers] = static_cast<uint64_t>(p.dlayers);
+    r[kDbase] = p.dbase;
     rows.push_back(std::move(r));
   }
   std::mt19937_64 rng(seed ^ 0x5eedf00dull);
@@ -66,6 +69,9 @@ ReliefRun run_relief_stage(const std::vector<ReliefPixel>& px, const std::vector
     d.vy_i = static_cast<uint16_t>(r[kVy]);
     d.vz_i = static_cast<uint16_t>(r[kVz]);
     d.vc_i = static_cast<uint8_t>(r[kVc]);
+    d.dm_i = static_cast<uint8_t>(r[kDm]);
+    d.dlayers_i = static_cast<uint8_t>(r[kDlayers]);
+    d.dbase_i = static_cast<uint32_t>(r[kDbase]);
     d.view_bubble_i = view_bubble_prob > 0 && bubble(rng);
   };
   auto sample = [](Vtu_relief_stage_sim& d) { return Row{d.u_o, d.v_o, d.n_o, d.side_o, d.steps_o, d.flags_o}; };

@@ -14,7 +14,10 @@ struct ReliefPixel {
   int lw = 0, lh = 0;    // log2 sides of the colour texture's level 0
   bool rel = false, guard = false, adaptive = false;
   bool iter = false;     // iterative parallax (cap = layers)
+  bool dm = false;       // distance map (cap = layers, relief::dm_cap)
   int layers = 1;        // 1..63
+  int dlayers = 0;       // distance map: layers, word address of voxel (0, 0, 0)
+  uint32_t dbase = 0;
   uint32_t scale = 0;    // S code
   uint32_t hbase = 0;    // depth map: word address of texel (0, 0), log2 sides
   int hlw = 0, hlh = 0;

@@ -22,6 +22,7 @@ namespace tu::cosim {
 
 namespace {
 constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;  // tu_texture_unit_sim Words
+constexpr uint64_t kDepthWords = 2 * kRamWords;                         // tu_texture_unit_sim DepthWords
 constexpr uint64_t kViewWords = kRamWords;                              // tu_view_src Words
 constexpr uint64_t kShadeWords = uint64_t(1) << 16;                     // tu_view_src Words of the shade stream
 
@@ -33,7 +34,7 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kClamp,
   kWsrc, kCap, kFilt, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
-  kRowSize
+  kRdm, kDlayers, kDbase, kRowSize
 };
 
 template <class V>
@@ -86,6 +87,9 @@ void drive(V& d, const Row& r) {
   d.hbase_i = static_cast<uint32_t>(r[kHbase]);
   d.hlw_i = static_cast<uint8_t>(r[kHlw]);
   d.hlh_i = static_cast<uint8_t>(r[kHlh]);
+  d.rdm_i = static_cast<uint8_t>(r[kRdm]);
+  d.dlayers_i = static_cast<uint8_t>(r[kDlayers]);
+  d.dbase_i = static_cast<uint32_t>(r[kDbase]);
 }
 
 template <class V>
@@ -129,11 +133,6 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (m.procedural)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/procedural: the noise unit is not in the RTL "
                                   "texture unit yet (docs/blocks/noise.md §5); render it with --engine cmodel or ref");
-  for (const auto& [name, m] : s.materials)
-    if (o.relief && m.relief &&
-        (m.relief->method == scene::ReliefMethod::DistanceMap || m.relief->method == scene::ReliefMethod::DistanceMapRefined))
-      throw std::invalid_argument(s.source + ": /materials/" + name + "/relief/method: the distance-map tracer is not in "
-                                  "the RTL texture unit yet; render with --engine cmodel or without relief (--no-relief)");
   // The full unit shades (HasShading); a light needs it, and a model the materials name must be its.
   const bool shade_unit = o.has_ewa && !o.corridor_unit;  // the corridor plan has no lights
   if (!shade_unit && !s.lights.empty())
@@ -164,23 +163,27 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     std::vector<Coefs> coefs;
     std::optional<relief::Maps> maps;  // with o.relief and a relief material
     uint64_t hbase = 0;                // its depth map in the depth RAM
+    uint64_t dbase = 0;                // its distance map (after the depth map), if it has one
   };
   std::vector<Obj> objs;
   std::vector<uint32_t> ram, depth_ram;
   for (size_t oi = 0; oi < s.objects.size(); ++oi) {
     const auto& ob = s.objects[oi];
-    Obj x{scene::build_texture(s, s.materials.at(ob.material).texture), ram.size(), {}, std::nullopt, 0};
+    Obj x{scene::build_texture(s, s.materials.at(ob.material).texture), ram.size(), {}, std::nullopt, 0, 0};
     if (o.relief && s.materials.at(ob.material).relief) {
       x.maps = relief::make_maps(s, ob.material);
       x.hbase = depth_ram.size();
       for (uint8_t d : x.maps->depth.px) depth_ram.push_back(d);
+      x.dbase = depth_ram.size();
+      if (x.maps->dist)
+        for (uint8_t c : x.maps->dist->code) depth_ram.push_back(c);
     }
     const auto words = texture_words(x.tex);
     ram.insert(ram.end(), words.begin(), words.end());
-    if (ram.size() > kRamWords || depth_ram.size() > kRamWords)
+    if (ram.size() > kRamWords || depth_ram.size() > kDepthWords)
       throw std::runtime_error(s.source + ": textures need " + std::to_string(ram.size()) + " texel words and " +
-                               std::to_string(depth_ram.size()) + " depth words, the RTL RAM models hold " +
-                               std::to_string(kRamWords) + " each");
+                               std::to_string(depth_ram.size()) + " depth and distance-map words, the RTL RAM models hold " +
+                               std::to_string(kRamWords) + " and " + std::to_string(kDepthWords));
     x.coefs = render::setup_fx(s, oi, x.tex.levels[0].width, x.tex.levels[0].height);
     objs.push_back(std::move(x));
   }
@@ -250,7 +253,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         r[kRel] = 1;
         r[kRadapt] = rel.method == scene::ReliefMethod::PomAdaptive;
         r[kRiter] = rel.method == scene::ReliefMethod::Iterative;
-        r[kRlayers] = static_cast<uint64_t>(std::clamp(rel.layers, 1, 63));
+        r[kRdm] = ob.maps->dist != nullptr;
+        r[kRlayers] = r[kRdm] ? relief::dm_cap(rel.layers) : static_cast<uint64_t>(std::clamp(rel.layers, 1, 63));
+        r[kDlayers] = r[kRdm] ? static_cast<uint64_t>(ob.maps->dist->layers) : 0;
+        r[kDbase] = ob.dbase;
         r[kRscale] = q.scale;
         r[kHbase] = ob.hbase;
         r[kHlw] = static_cast<uint64_t>(log2_size(ob.maps->depth.width));
@@ -289,8 +295,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         if (shade_unit) shades.push_back(brdf::shade::pack(shade.fx_in(rays, c.object, c.triangle, px, y)));
         relief::StagePixel rp;
         if (ob.maps && pix < expect.pixels.size() && expect.pixels[pix].relief_n > 0)
-          rp = {true, static_cast<uint32_t>(expect.pixels[pix].relief_steps),
-                m.relief->method == scene::ReliefMethod::Iterative};
+          rp = relief::stage_pixel(true, static_cast<uint32_t>(expect.pixels[pix].relief_steps), m.relief->method);
         relief_px.push_back(rp);
       }
       x = x1 + 1;

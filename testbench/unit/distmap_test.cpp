@@ -2,12 +2,14 @@
 // refined maps against the exact geometry, the seed's worked example, and the sphere tracer.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
 
 #include "distmap/distance_map.hpp"
 #include "distmap/dm_trace.hpp"
+#include "pom/relief.hpp"
 #include "pom/relief_quality.hpp"
 #include "texunit/formats.hpp"
 #include "texture/texture.hpp"
@@ -308,6 +310,38 @@ TEST(DistanceMap, TracerGuards) {
   EXPECT_THROW(dm::trace(m, d, 0, 0, v, 8), std::invalid_argument);
   v.scale = m.scale_code;
   EXPECT_EQ(dm::trace(m, d, 0, 0, v, 0).steps, 0u);  // cap 0
+}
+
+// The unit's cap and step count: relief::dm_cap clamps to 1..DmCapMax, so the map steps plus the
+// finish's reads (at most 1 + DmFinish + DmBisect) fit PomNW bits, on every ray of a map whose
+// rays need many steps (grazing views over deep noise); the stage model's view of a traced pixel.
+TEST(DistanceMap, CapAndStepsFitTheUnitsStepCount) {
+  EXPECT_EQ(relief::dm_cap(0), 1u);
+  EXPECT_EQ(relief::dm_cap(-5), 1u);
+  EXPECT_EQ(relief::dm_cap(32), 32u);
+  EXPECT_EQ(relief::dm_cap(256), static_cast<uint32_t>(fmt::kDmCapMax));
+  EXPECT_EQ(fmt::kDmCapMax + 1 + fmt::kDmFinish + fmt::kDmBisect, (1 << fmt::kPomNW) - 1);
+  const img::Gray8 d = pom::map_noisy(32);
+  const dm::Map m = build_map(d, 32, 0.5, false);
+  std::mt19937 rng(9);
+  std::uniform_int_distribution<int32_t> uv(0, (1 << fmt::kPomUvF) - 1), vxy(-(1 << 14), 1 << 14), vz(0, 2000);
+  uint32_t max_total = 0, capped = 0;
+  for (int i = 0; i < 3000; ++i) {
+    pom::View v;
+    v.vx = vxy(rng), v.vy = vxy(rng), v.vz = vz(rng), v.scale = m.scale_code;
+    const auto o = dm::trace(m, d, uv(rng), uv(rng), v, relief::dm_cap(255), fmt::kDmFinish);
+    max_total = std::max(max_total, o.steps + o.finish_steps);
+    capped += o.capped;
+  }
+  std::printf("cap %d: max map steps + finish reads %u, %u of 3000 rays capped\n", fmt::kDmCapMax, max_total, capped);
+  EXPECT_GT(capped, 0u);  // the extreme is reached
+  EXPECT_LE(max_total, (1u << fmt::kPomNW) - 1);
+  // A traced pixel in the stage model: an iterative-like pixel of DmSetupCycles + 1 + steps.
+  const auto sp = relief::stage_pixel(true, 7, scene::ReliefMethod::DistanceMapRefined);
+  EXPECT_TRUE(sp.shift && sp.iter);
+  EXPECT_EQ(sp.steps, static_cast<uint32_t>(fmt::kDmSetupCycles) + 8);
+  EXPECT_FALSE(relief::stage_pixel(false, 7, scene::ReliefMethod::DistanceMap).shift);
+  EXPECT_EQ(relief::stage_pixel(true, 7, scene::ReliefMethod::PomFixed).steps, 7u);
 }
 
 // Fixed point against the float reference (same map, same loop).

@@ -22,6 +22,7 @@
 #include "brdf/brdf_error.hpp"
 #include "brdf/brdf_shade.hpp"
 #include "ewa/ewa_cycles.hpp"
+#include "pom/relief.hpp"
 #include "texunit/shading.hpp"
 #include "texunit/render.hpp"
 #include "texunit/texture_unit_model.hpp"
@@ -146,6 +147,63 @@ std::string fmt(const char* f, double x) {
   return b;
 }
 
+// Relief method per material: each candidate method at the material's layers through the
+// bit-accurate C-model render (bilinear, so the relief method is the only difference), its PSNR
+// on the material's pixels against the float reference (the 256-layer exact march), its cost the
+// relief stage's cycles per pixel of the material (relief::stage_cycles over its pixels in raster
+// order: exact, = the RTL, ReliefStageCosim); the cheapest meeting min_psnr_db, else the best.
+// distance_map_refined is a candidate only where the material authors it (its map takes tens of
+// seconds to build on a 256-texel height; on the maps of docs/blocks/relief.md §13.6 it equals
+// the classic one).
+struct ReliefCandidate {
+  scene::ReliefMethod method;
+  double psnr_db = 0, cycles_per_px = 0, steps_per_px = 0;
+  uint64_t map_bytes = 0;  // distance maps: W x H x D voxels of DmCodeW bits
+};
+struct ReliefChoice {
+  scene::ReliefMethod authored, chosen;
+  bool meets = false;
+  std::vector<ReliefCandidate> cands;
+};
+ReliefChoice choose_relief(const scene::Scene& s, const std::string& material, const render::Frame& ref) {
+  const auto authored = s.materials.at(material).relief->method;
+  ReliefChoice c{authored, authored, false, {}};
+  using M = scene::ReliefMethod;
+  std::vector<M> methods = {M::PomFixed, M::PomAdaptive, M::Iterative, M::DistanceMap};
+  if (authored == M::DistanceMapRefined) methods.push_back(M::DistanceMapRefined);
+  auto mine = [&](const render::PixelRecord& p) {
+    return s.objects[static_cast<size_t>(p.object)].material == material;
+  };
+  for (M m : methods) {
+    scene::Scene t = s;
+    t.materials.at(material).relief->method = m;
+    ReliefCandidate k{m};
+    if (m == M::DistanceMap || m == M::DistanceMapRefined) k.map_bytes = relief::make_maps(t, material).dist->bytes();
+    const render::Frame f = render::render_cmodel(t, scene::Filter::Bilinear, render::CmodelOptions{});
+    k.psnr_db = render::psnr_covered(f, ref, mine);
+    std::vector<relief::StagePixel> px;
+    double steps = 0;
+    for (const auto& p : f.pixels)
+      if (mine(p)) {
+        px.push_back(relief::stage_pixel(p.relief_n > 0, static_cast<uint32_t>(p.relief_steps), m));
+        steps += p.relief_steps;
+      }
+    const double n = static_cast<double>(std::max<size_t>(1, px.size()));
+    k.cycles_per_px = static_cast<double>(relief::stage_cycles(px)) / n;
+    k.steps_per_px = steps / n;
+    c.cands.push_back(k);
+  }
+  const ReliefCandidate* best = nullptr;
+  for (const auto& k : c.cands)
+    if (k.psnr_db >= s.budget.min_psnr_db && (!best || k.cycles_per_px < best->cycles_per_px)) best = &k;
+  c.meets = best != nullptr;
+  if (!best)
+    for (const auto& k : c.cands)
+      if (!best || k.psnr_db > best->psnr_db) best = &k;
+  c.chosen = best->method;
+  return c;
+}
+
 // Cheapest row with an RTL among `cands` meeting `ok`; else a BudgetError naming `field`.
 const TRow* cheapest(const std::vector<const TRow*>& cands, const std::function<bool(const TRow&)>& ok,
                      const std::function<double(const TRow&)>& score, const std::string& field,
@@ -246,6 +304,7 @@ struct Config {
   bool ell_recurrence = false;  // B2: the seed's recurrences (tu_ellipse_rec) instead of the analytic unit
   bool shading = false;
   brdf::Model shade_model = shading::kUnitModel;
+  bool distance_map = false;  // the distance-map tracer (tu_dm_trace) in the relief stage
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -260,6 +319,7 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam bit HasRelief = 1'b" << c.relief << ";\n"
      << "  localparam bit HasPom = 1'b" << c.pom << ";  // tu_pom_layers + tu_pom_march\n"
      << "  localparam bit HasIterParallax = 1'b" << c.iter_parallax << ";\n"
+     << "  localparam bit HasDistanceMap = 1'b" << c.distance_map << ";  // tu_dm_trace\n"
      << "  localparam int PomMaxLayers = " << c.pom_max_layers << ";\n"
      << "  // bit 0: formula (tu_gauss_weight), bit 1: 1-D table, bit 2: 2-D table\n"
      << "  localparam logic [2:0] WeightSources = 3'd" << c.weight_sources << ";\n"
@@ -340,7 +400,7 @@ int run(const Options& opt) {
   if (bil.pixels.empty()) throw std::runtime_error(s.source + ": the scene covers no pixel");
   std::vector<double> aniso, lod;
   std::map<std::string, size_t> material_pixels;
-  bool relief = false, iterative = false, pom = false;
+  bool relief = false, iterative = false, pom = false, dist_map = false;
   int max_layers = 0;
   for (const auto& p : bil.pixels) {
     aniso.push_back(p.aniso);
@@ -350,7 +410,10 @@ int run(const Options& opt) {
     if (m.relief) {
       relief = true;
       max_layers = std::max(max_layers, m.relief->layers);
-      (m.relief->method == scene::ReliefMethod::Iterative ? iterative : pom) = true;
+      const auto meth = m.relief->method;
+      (meth == scene::ReliefMethod::Iterative                                           ? iterative
+       : meth == scene::ReliefMethod::DistanceMap || meth == scene::ReliefMethod::DistanceMapRefined ? dist_map
+                                                                                         : pom) = true;
     }
   }
   const double q_aniso = quantile(aniso, kQuantile), q_lod = quantile(lod, kQuantile);
@@ -412,6 +475,46 @@ int run(const Options& opt) {
   }
   const double filter_psnr = render::psnr_covered(planned_frame, ewa);
   const render::Frame* chosen_frame = filter == "ewa" ? &ewa : filter == "trilinear" ? &*tri : &bil;
+
+  // 2b. Relief method per material (choose_relief). The planned unit keeps the engines of the
+  //     authored methods (the scene must render on it as written); the choice is reported, with the
+  //     distance map's memory.
+  json relief_json = json::object();
+  std::string relief_why;
+  if (relief) {
+    const render::Frame ref_bil = render::render_ref(s, scene::Filter::Bilinear);
+    for (const auto& [name, m] : s.materials) {
+      if (!m.relief || !material_pixels.count(name)) continue;
+      const ReliefChoice c = choose_relief(s, name, ref_bil);
+      json cands = json::array();
+      std::string line;
+      for (const auto& k : c.cands) {
+        json j = {{"method", scene::to_string(k.method)}, {"psnr_db", k.psnr_db}, {"cycles_per_px", k.cycles_per_px},
+                  {"steps_per_px", k.steps_per_px}};
+        if (k.map_bytes)
+          j["map"] = {{"voxels", k.map_bytes}, {"bits_per_voxel", tu::fmt::kDmCodeW}, {"bits", k.map_bytes * tu::fmt::kDmCodeW}};
+        cands.push_back(j);
+        line += std::string(line.empty() ? "" : ", ") + scene::to_string(k.method) + " " + fmt("%.2f dB", k.psnr_db) +
+                " " + fmt("%.2f cycles/px", k.cycles_per_px) +
+                (k.map_bytes ? " (map " + std::to_string(k.map_bytes) + " voxels x " + std::to_string(tu::fmt::kDmCodeW) +
+                                   " bits)"
+                             : "");
+      }
+      relief_json[name] = {{"authored", scene::to_string(c.authored)},
+                           {"chosen", scene::to_string(c.chosen)},
+                           {"meets_min_psnr_db", c.meets},
+                           {"layers", m.relief->layers},
+                           {"candidates", cands},
+                           {"source", "C-model bilinear render vs the float reference (256-layer march) on the "
+                                      "material's pixels; cycles: relief::stage_cycles per pixel of the material"}};
+      relief_why += (relief_why.empty() ? "" : "\n") + std::string("  ") + name + ": " + line + "\n    -> " +
+                    scene::to_string(c.chosen) + (c.meets ? " (cheapest meeting " : " (best; none meets ") +
+                    fmt("%g dB", s.budget.min_psnr_db) + ")" +
+                    (c.chosen != c.authored ? std::string("; the scene authors ") + scene::to_string(c.authored) +
+                                                  " and the planned unit keeps its engine"
+                                            : "");
+    }
+  }
 
   // 3. Blocks and variants from the measured table.
   const std::string psnr_field = s.source + ": /error_budget/min_psnr_db = " + fmt("%g", s.budget.min_psnr_db);
@@ -540,10 +643,11 @@ int run(const Options& opt) {
   // The full unit: everything in, relief up to the scene format's 256 layers.
   Config planned_shaded = planned;
   planned_shaded.shading = shade;
+  planned_shaded.distance_map = dist_map;
   if (brdf_row) planned_shaded.shade_model = shading::model_of(brdf_row->variant);
   // The full unit: F_MSH (the thesis's model) when the scene does not need another.
   const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n,
-                          planned.persp_lanes, false, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel};
+                          planned.persp_lanes, false, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel, true};
 
   // 5. Scene cycles of the RTL texture unit (texture path), from the exact cycle model
   //    ewa::stream_cycles on the bit-accurate C-model render's per-pixel work (equal to Verilator:
@@ -579,6 +683,7 @@ int run(const Options& opt) {
               {"filter_psnr_db", std::isinf(filter_psnr) ? json("reference") : json(filter_psnr)},
               {"filter_reasons", filter_why},
               {"relief", relief},
+              {"relief_methods", relief_json},
               {"shading", shade ? json({{"model", brdf_row->name()}, {"why", shade_why}, {"latency_cycles", brdf_row->latency}})
                                 : json(false)},
               {"persp", persp->name()},
@@ -618,7 +723,11 @@ int run(const Options& opt) {
   for (const auto& [name, f] : mat_filter) per_mat += (per_mat.empty() ? "" : ", ") + name + " " + f;
   std::printf("filters: %s; the plan's picture %s against the float EWA\n  (%s)\n", per_mat.c_str(),
               std::isinf(filter_psnr) ? "is" : (fmt("%.2f", filter_psnr) + " dB").c_str(), filter_why.c_str());
-  std::printf("relief: %s\n", relief ? (pom && iterative ? "pom + iterative" : pom ? "pom" : "iterative") : "none (no relief hardware)");
+  std::string relief_engines;
+  for (const auto& [on, name] : {std::pair{pom, "pom"}, {iterative, "iterative"}, {dist_map, "distance map"}})
+    if (on) relief_engines += (relief_engines.empty() ? "" : " + ") + std::string(name);
+  std::printf("relief: %s\n", relief ? relief_engines.c_str() : "none (no relief hardware)");
+  if (!relief_why.empty()) std::printf("relief methods (PSNR vs the float reference, relief stage cycles):\n%s\n", relief_why.c_str());
   std::printf("persp: %s, max %.4g texel\n", persp->name().c_str(), persp->max_abs);
   std::printf("shading: %s\n", shade ? (brdf_row->name() + ", " + shade_why).c_str() : shade_why.c_str());
   if (weights) std::printf("weights: %s, %.2f dB (%s); clip volume: %s, %.2f dB (C-model EWA render with border "

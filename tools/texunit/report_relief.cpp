@@ -11,6 +11,7 @@
 #include "block.hpp"
 #include "cosim.hpp"
 #include "distmap/dm_trace.hpp"
+#include "pom/relief.hpp"
 #include "pom/relief_quality.hpp"
 #include "pom_vec_common.hpp"
 
@@ -53,9 +54,10 @@ Row measured_row(const std::string& variant, const vec::VectorFile& vf, bool per
   return r;
 }
 
-// Distance-map tracer (C model only, docs/blocks/relief.md §13): the bricks 64x64 tile at 60 deg,
-// S = 0.125, 16 layers, with the finish; error = |uv - float reference| in uv LSB; cycles modelled
-// (one map or depth read per clock), no RTL yet.
+// Distance-map tracer (docs/blocks/relief.md §13): the bricks 64x64 tile at 60 deg, S = 0.125, 16
+// layers, with the finish; error = |uv - float reference| in uv LSB; cycles per pixel of the tile's
+// stream through the relief stage's tracer tu_dm_trace (relief::stage_cycles, equal to Verilator:
+// ReliefStageCosim.DistanceMap*).
 Row dm_row(bool refined) {
   constexpr int kSide = 64;
   const img::Gray8 depth = pom::map_bricks(kSide);
@@ -70,7 +72,8 @@ Row dm_row(bool refined) {
   v.vy = static_cast<int32_t>(std::lround(std::sin(th) * std::sin(ph) * (1 << fmt::kPomVzF)));
   v.vz = static_cast<int32_t>(std::lround(std::cos(th) * (1 << fmt::kPomVzF)));
   v.scale = m.scale_code;
-  double max_e = 0, se = 0, steps = 0, cycles = 0;
+  double max_e = 0, se = 0, steps = 0;
+  std::vector<relief::StagePixel> stream;
   const auto t0 = std::chrono::steady_clock::now();
   for (int y = 0; y < kSide; ++y)
     for (int x = 0; x < kSide; ++x) {
@@ -84,8 +87,9 @@ Row dm_row(bool refined) {
         se += e * e;
       }
       steps += o.steps + o.finish_steps;
-      cycles += o.steps + 1 + o.finish_steps;
+      stream.push_back(relief::stage_pixel(true, o.steps + o.finish_steps, scene::ReliefMethod::DistanceMap));
     }
+  const double trace_ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
   const double n = double(kSide) * kSide;
   Row row;
   row.block = "distance_map";
@@ -95,11 +99,10 @@ Row dm_row(bool refined) {
   row.rms_err = std::sqrt(se / (2 * n));
   row.err_unit = "uv LSB (2^-16) vs the float tracer";
   row.latency_cycles = -1;
-  row.ii_cycles = cycles / n;
-  row.cycles_source = "estimated (model: one map or depth read per clock, k + 1 + finish; no RTL)";
+  row.ii_cycles = static_cast<double>(relief::stage_cycles(stream)) / n;
+  row.cycles_source = "relief::stage_cycles of the tile's stream through tu_dm_trace (= Verilator, ReliefStageCosim)";
   row.memory_bits = static_cast<int64_t>(m.bytes()) * 8;
-  row.cmodel_ns_per_item =
-      std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / n / 2;  // 2 tracers
+  row.cmodel_ns_per_item = trace_ns / n / 2;  // 2 tracers
   char b[160];
   std::snprintf(b, sizeof b, "bricks 64x64, S 0.125, 16 layers (%zu bytes): %.3f reads/px", m.bytes(), steps / n);
   row.notes = b;

@@ -41,7 +41,7 @@
 #include <string>
 #include <vector>
 
-#include "distmap/dm_formats.hpp"
+#include "texunit/formats.hpp"
 #include "texunit/image.hpp"
 
 namespace tu::dm {

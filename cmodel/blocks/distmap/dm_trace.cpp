@@ -27,9 +27,9 @@ bool below(const img::Gray8& depth, const Ray& r, int64_t d) {
   return 255 * d >= int64_t(pom::tex_nearest(depth, r.at_u(d), r.at_v(d))) * kDOne;
 }
 
-// Bisection between lo (above) and hi (at or below): 4 fetches; returns hi.
+// Bisection between lo (above) and hi (at or below): DmBisect fetches; returns hi.
 int64_t bisect(const img::Gray8& depth, const Ray& r, int64_t lo, int64_t hi, uint32_t* fetches) {
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < fmt::kDmBisect; ++i) {
     const int64_t mid = (lo + hi) >> 1;
     ++*fetches;
     (below(depth, r, mid) ? hi : lo) = mid;
@@ -149,7 +149,7 @@ TraceRef trace_ref(const Map& m, const img::Gray8& depth, double u, double v, do
         if (below_f(nd)) {
           hit = true;
           double hi = nd;
-          for (int b = 0; b < 4; ++b, ++o.finish_steps) {
+          for (int b = 0; b < fmt::kDmBisect; ++b, ++o.finish_steps) {
             const double mid = 0.5 * (lo + hi);
             (below_f(mid) ? hi : lo) = mid;
           }

@@ -135,7 +135,7 @@ FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, 
   FxShift o;
   if (method == Method::DistanceMap || method == Method::DistanceMapRefined) {
     if (!m.dist) throw std::invalid_argument("relief::shift_uv_fx: a distance-map method without its map");
-    o.n = static_cast<uint32_t>(std::clamp(layers, 1, 255));
+    o.n = dm_cap(layers);
     const auto r = dm::trace(*m.dist, m.depth, u - iu, v - iv, view, o.n, fmt::kDmFinish);
     o.steps = r.steps + r.finish_steps;
     o.vz_guard = r.clamped;
@@ -170,6 +170,8 @@ FxShift shift_uv_fx(const Maps& m, int64_t u, int64_t v, const pom::View& view, 
   o.back = r.back;
   return o;
 }
+
+uint32_t dm_cap(int layers) { return static_cast<uint32_t>(std::clamp(layers, 1, fmt::kDmCapMax)); }
 
 int64_t shift_code(int64_t c, int by) { return by >= 0 ? c * (int64_t(1) << by) : c >> -by; }
 
@@ -252,10 +254,16 @@ StageModel::Fired StageModel::step(bool in_valid, bool out_ready) {
   return f;
 }
 
+StagePixel stage_pixel(bool shift, uint32_t steps, Method m) {
+  if (!shift) return {};
+  const bool dm = m == Method::DistanceMap || m == Method::DistanceMapRefined;
+  return {true, dm ? static_cast<uint32_t>(fmt::kDmSetupCycles) + 1 + steps : steps, dm || m == Method::Iterative};
+}
+
 uint64_t stage_cycles(const std::vector<StagePixel>& px, int fifo_depth) {
   StageModel m(px, fifo_depth);
   uint64_t t = 0, last = 0;
-  const auto idle_limit = 1000 + 70 * static_cast<uint64_t>(px.size());
+  const auto idle_limit = 1000 + 160 * static_cast<uint64_t>(px.size());  // a distance-map pixel: <= 85 clocks
   while (m.outputs() < px.size()) {
     if (t > idle_limit) throw std::logic_error("relief::stage_cycles: no progress");
     if (m.step(true, true).out) last = t;

@@ -72,7 +72,8 @@ uint32_t layers_at(const Maps& m, int64_t u, int64_t v, const pom::View& view, M
 //      view  pom::View (s16.14 tangent-space view, S u0.16), e.g. quantise(tangent_view(...))
 //      method, layers: PomFixed N = layers; PomAdaptive Nmin = 4, Nmax = layers, N from
 //      pom::layers(Vz, complexity at (u, v)); Iterative: cap = layers, direction (P, 1);
-//      DistanceMap*: dm::trace through m.dist, cap = layers (1..255), finish DmFinish steps.
+//      DistanceMap*: dm::trace through m.dist, cap = dm_cap(layers), finish DmFinish steps;
+//      steps = map steps + finish reads (<= 63).
 //      layers is clamped to 1..63 (the unit's PomNW bits).
 // Out: u, v  shifted coordinates (same units; the integer part of the input is kept, so a
 //      REPEAT texture lookup is unchanged by the wrap of the march), steps = march steps or
@@ -107,6 +108,9 @@ struct TexelShift {
 };
 TexelShift shift_texel_uv_fx(const Maps& m, int64_t u, int64_t v, int lw, int lh,
                              const pom::View& view, Method method, int layers);
+// The distance-map tracer's cap: layers clamped to 1..DmCapMax (so that its map steps plus the
+// finish's reads fit the unit's PomNW-bit step count).
+uint32_t dm_cap(int layers);
 // c * 2^by (by >= 0) or floor(c * 2^by) (by < 0).
 int64_t shift_code(int64_t c, int by);
 
@@ -125,6 +129,12 @@ struct StagePixel {
   bool iter = false;
 };
 uint64_t stage_cycles(const std::vector<StagePixel>& px, int fifo_depth = 32);
+// A pixel of method m as the stage model sees it (steps: shift_texel_uv_fx's). The distance-map
+// tracer (tu_dm_trace) holds one pixel at a time like the iterative engine (Idle, Run, Done) and
+// is handed over by the same rule; its Run lasts DmSetupCycles + 2 + steps clocks (set-up, the
+// first read, one clock per map read and per finish read), i.e. that of an iterative pixel with
+// DmSetupCycles + 1 + steps iterations.
+StagePixel stage_pixel(bool shift, uint32_t steps, Method m);
 
 // The same model one clock at a time, for a stage inside the texture unit (ewa::texture_unit_cycles):
 // the pixels px are offered in order; each clock, in_ready(out_ready) (from the registered state,

@@ -109,6 +109,23 @@
   X(PomRefineLatency, 7, "tu_pom_refine: normalise, 4 reciprocal stages, w, T''; II = 1")     \
   X(IpxCap, 16, "iterative parallax: default iteration cap")                                  \
   X(IpxEps, 256, "iterative parallax: default threshold |d| < IpxEps * 2^-PomUvF (2^-8)")      \
+  /* Distance-map relief tracer (docs/blocks/relief.md §13, tu_dm_trace) */                     \
+  X(DmCodeW, 8, "voxel: safe step code, unsigned, value code * 2^-DmQF texel")                \
+  X(DmQF, 4, "step quantum 2^-DmQF texel (codes rounded down)")                                \
+  X(DmEtaF, 6, "tracer position tolerance eta = 2^-DmEtaF texel (inside the map's margin)")    \
+  X(DmDF, 24, "ray depth D in [0, 1]: unsigned, DmDF fraction bits (exact accumulator)")       \
+  X(DmDW, kDmDF + 1, "D code 0..2^DmDF")                                                      \
+  X(DmKF, 8, "K = floor(2^(DmDF + PomUvF - DmQF + DmKF) / lambda): fraction bits")           \
+  X(DmKW, 29, "K <= 2^28 since lambda >= 1 texel (2^16 codes)")                               \
+  X(DmLambdaW, 32, "lambda = ceil(sqrt(L2)): texels of ray per unit D, PomUvF fraction bits")   \
+  X(DmL2W, 64, "L2 = (W Pu)^2 + (W Pv)^2 + (S W)^2: unsigned, 2 PomUvF fraction bits")          \
+  X(DmLayersW, 8, "distance-map layers D: unsigned 1..255")                                    \
+  X(DmCap, 32, "default iteration cap")                                                       \
+  X(DmFinish, 8, "linear steps of one layer in the finish (then DmBisect bisection steps)")   \
+  X(DmBisect, 4, "bisection steps of the finish")                                              \
+  X(DmCapMax, (1 << kPomNW) - 1 - 1 - kDmFinish - kDmBisect, "cap 1..DmCapMax: steps + finish reads fit PomNW bits") \
+  X(DmSetupBits, 4, "tu_dm_trace: square-root / quotient bits per clock of its set-up")        \
+  X(DmSetupCycles, 1 + 2 * (32 / kDmSetupBits), "tu_dm_trace set-up: L2, isqrt, K = 2^44 / lambda") \
   /* Perspective divide (docs/blocks/persp.md) */                                               \
   X(PerspXyW, 12, "pixel indices x, y and span offset n: unsigned, 0..4095")                    \
   X(PerspF, 40, "fraction bits of coefficients A..I and of accumulators p_u, p_v, q")           \

@@ -64,7 +64,10 @@
   X(rscale, kPomSW, "height scale S")                \
   X(hbase, kTexAddrW, "depth map: base word address") \
   X(hlw, 4, "depth map: log2 width")                 \
-  X(hlh, 4, "depth map: log2 height")
+  X(hlh, 4, "depth map: log2 height")                 \
+  X(rdm, 1, "distance map (cap = rlayers, relief::dm_cap)") \
+  X(dlayers, kDmLayersW, "distance map: layers")    \
+  X(dbase, kTexAddrW, "distance map: base word address in the depth RAM")
 // Per-triangle footprint constants a pixel carries to tu_ellipse.
 #define TU_REC_TRI(X)                        \
   X(dm, kEllDetW, "det3 mantissa")           \

@@ -9,6 +9,7 @@ package tu_unit_cfg_pkg;
   localparam bit HasRelief = 1'b1;
   localparam bit HasPom = 1'b0;  // tu_pom_layers + tu_pom_march
   localparam bit HasIterParallax = 1'b1;
+  localparam bit HasDistanceMap = 1'b0;  // tu_dm_trace
   localparam int PomMaxLayers = 8;
   // bit 0: formula (tu_gauss_weight), bit 1: 1-D table, bit 2: 2-D table
   localparam logic [2:0] WeightSources = 3'd2;
