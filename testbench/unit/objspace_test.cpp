@@ -14,19 +14,10 @@
 namespace {
 using namespace tu;
 
-scene::Scene quad_scene(const std::string& vertices, int w = 64, int h = 48) {
-  const std::string json = R"({"texunit_scene": 1,
-    "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "up": [0, 1, 0], "fovy_deg": 60,
-               "width": )" + std::to_string(w) + R"(, "height": )" + std::to_string(h) + R"(, "z_near": 0.1},
-    "textures": {"t": {"builtin": "checkerboard", "size": 64, "cells": 4, "wrap": "repeat"}},
-    "materials": {"m": {"texture": "t", "filter": "trilinear"}},
-    "objects": [{"name": "q", "type": "quad", "material": "m", "vertices": )" + vertices + R"(,
-                 "uv": [[0, 1], [1, 1], [1, 0], [0, 0]]}]})";
-  return scene::parse(json, "<test>", ".");
-}
+using objspace::quad_scene;
 // Fills the view at distance 2 (fronto-parallel) and a floor receding at a grazing angle.
 const char* kFront = "[[-2, -1.5, -2], [2, -1.5, -2], [2, 1.5, -2], [-2, 1.5, -2]]";
-const char* kFloor = "[[-3, -0.3, -0.5], [3, -0.3, -0.5], [3, -0.3, -12], [-3, -0.3, -12]]";
+const std::string kFloor = objspace::stiff_quad_vertices()[0];
 
 // The sanitizer build (Debug, ASan + UBSan) checks the same code paths on 1/16 of the samples.
 #if defined(__SANITIZE_ADDRESS__)
@@ -117,20 +108,9 @@ TEST(ObjSpace, PerSampleDatapathErrorBound) {
   // cases: grazing (89.9 degrees), magnification (the near plane), a far plane.
   std::mt19937_64 rng(7);
   SplatErr e;
-  std::uniform_real_distribution<double> U(-1, 1);
-  for (int k = 0; k < 60; ++k) {
-    // Tilts keep every vertex at least |z| / 2 in front: a plane through the eye has D = 0 and an
-    // unbounded grid (the sample cap, SampleCapNamesTheObject).
-    const double z = -1 - 20 * (U(rng) + 1), s = 0.5 + std::fabs(z) * 0.6, tilt = 0.5 * U(rng) * std::fabs(z) / s;
-    char v[256];
-    std::snprintf(v, sizeof v, "[[%f, %f, %f], [%f, %f, %f], [%f, %f, %f], [%f, %f, %f]]", -s, -s, z + tilt * s, s,
-                  -s, z + tilt * s, s, s, z - tilt * s * U(rng), -s, s, z - tilt * s);
-    measure(quad_scene(v, 256, 192), 20000 / kThin, &e);
-  }
+  for (int k = 0; k < 60; ++k) measure(quad_scene(objspace::random_quad_vertices(rng), 256, 192), 20000 / kThin, &e);
   const uint64_t random_n = e.n;
-  for (const char* v : {kFloor, "[[-3, -0.002, -0.2], [3, -0.002, -0.2], [3, -0.0001, -150], [-3, -0.0001, -150]]",
-                        "[[-0.2, -0.2, -0.1001], [0.2, -0.2, -0.1001], [0.2, 0.2, -0.1001], [-0.2, 0.2, -0.1001]]",
-                        "[[-900, -700, -800], [900, -700, -800], [900, 700, -800], [-900, 700, -800]]"})
+  for (const auto& v : objspace::stiff_quad_vertices())
     measure(quad_scene(v, 256, 192), 200000 / kThin, &e);
   std::printf("per-sample datapath vs float: %llu samples (%llu random), max |dp| %.6f px, RMS %.6f px, "
               "max |dw| %.6f, guarded %llu\n",
@@ -144,8 +124,7 @@ TEST(ObjSpace, PerSampleDatapathErrorBound) {
 
 TEST(ObjSpace, FrontoParallelQuadHasOneSamplePerPixelAndNoHoles) {
   const auto s = quad_scene(kFront);
-  for (auto* f : {&objspace::render_ref, &objspace::render_cmodel}) {
-    const auto r = f(s, {});
+  for (const auto& r : {objspace::render_ref(s), objspace::render_cmodel(s)}) {
     EXPECT_EQ(r.stats.covered, 64u * 48u);
     EXPECT_EQ(r.stats.holes, 0u);
     EXPECT_EQ(r.stats.overlaps, 0u);
@@ -171,6 +150,24 @@ TEST(ObjSpace, GrazingFloorOverlapsAndWideSpacingLeavesCountedHoles) {
   for (const auto& p : sparse.frame.pixels)
     painted += p.texels == 0 && p.color.r == 0 && p.color.g == 0 && p.color.b == 80;
   EXPECT_EQ(painted, sparse.stats.holes);  // holes shown, not filled
+}
+
+// The datapath hook is the one the render uses (texunit render --engine rtl passes the RTL there):
+// the C model through it gives the same frame, a datapath one pixel off does not.
+TEST(ObjSpace, RenderUsesTheDatapathItIsGiven) {
+  const auto s = quad_scene(kFront);
+  const auto base = objspace::render_cmodel(s);
+  auto cmodel = [](const std::vector<objspace::SampleIn>& in, std::vector<objspace::Splat>& out) {
+    for (size_t k = 0; k < in.size(); ++k) out[k] = objspace::splat_fx(*in[k].k, in[k].i, in[k].j);
+  };
+  auto shifted = [&](const std::vector<objspace::SampleIn>& in, std::vector<objspace::Splat>& out) {
+    cmodel(in, out);
+    for (auto& sp : out) ++sp.x;
+  };
+  const auto same = objspace::render_cmodel(s, {}, cmodel), off = objspace::render_cmodel(s, {}, shifted);
+  EXPECT_TRUE(same.frame.image.px == base.frame.image.px);
+  EXPECT_EQ(same.stats.splats, base.stats.splats);
+  EXPECT_FALSE(off.frame.image.px == base.frame.image.px);
 }
 
 TEST(ObjSpace, SampleCapNamesTheObject) {

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sc_context.hpp"
 #include "texunit/sysmodel.hpp"
 
 namespace tu::sysmodel {
@@ -190,20 +191,6 @@ void validate(const Pipeline& p, const Workload& w) {
   }
   if (n != w.pixels.size()) throw std::invalid_argument("workload: span pixels != pixel records");
 }
-
-// A fresh simulation context per run (SystemC allows one elaboration per context).
-struct Context {
-  Context() {
-    setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
-    sc_core::sc_curr_simcontext = new sc_core::sc_simcontext;
-    sc_core::sc_default_global_context = sc_core::sc_curr_simcontext;
-  }
-  ~Context() {
-    delete sc_core::sc_curr_simcontext;
-    sc_core::sc_curr_simcontext = nullptr;
-    sc_core::sc_default_global_context = nullptr;
-  }
-};
 
 }  // namespace
 

@@ -6,10 +6,13 @@
 
 #include <chrono>
 #include <cstdio>
+#include <tuple>
 
 #include "ewa/ewa_cycles.hpp"
 #include "objspace/objspace.hpp"
+#include "objspace/schemes.hpp"
 #include "plan.hpp"
+#include "texunit/objspace_accum.hpp"
 #include "texunit/render.hpp"
 
 namespace tu::cli {
@@ -68,9 +71,17 @@ int run_objspace(const ObjspaceArgs& a) {
   const objspace::Options oo{a.spacing, a.max_samples};
   const double tri_clk = engine_clocks(ewa::Engine::Trilinear);
   objspace::Result ref_r;
+  // The C model's sample stream as the accumulation model needs it (bank bits, guard).
+  std::vector<sysmodel::AccumSample> stream;
+  auto record = [&](const std::vector<objspace::SampleIn>& in, std::vector<objspace::Splat>& out) {
+    for (size_t k = 0; k < in.size(); ++k) {
+      out[k] = objspace::splat_fx(*in[k].k, in[k].i, in[k].j);
+      stream.push_back(sysmodel::AccumSample::of(out[k].x, out[k].y, out[k].guard));
+    }
+  };
   for (const bool fx : {false, true}) {
     const auto t0 = std::chrono::steady_clock::now();
-    auto r = fx ? objspace::render_cmodel(s, oo) : objspace::render_ref(s, oo);
+    auto r = fx ? objspace::render_cmodel(s, oo, record) : objspace::render_ref(s, oo);
     const double sec = seconds_since(t0);
     const auto& st = r.stats;
     const double spp = double(st.samples) / n;
@@ -89,6 +100,22 @@ int run_objspace(const ObjspaceArgs& a) {
   }
   std::printf("clocks/px unit: object space with the unit's trilinear engine (%.0f clocks per sample); 1/clk: one "
               "sample per clock; screen space: the RTL texture unit (ewa::stream_cycles)\n", tri_clk);
+  // The sample stream through S datapath lanes into the banked pixel buffer (SystemC, timing of
+  // the structure; the texture lookups are not in it: an S-sample-per-clock texture engine is
+  // assumed), against the structural estimate.
+  std::printf("object-space accumulation (SystemC, tlm/src/objspace_accum.cpp), %zu samples, %zu covered pixels, "
+              "1 divider:\n%-22s %14s %12s %12s %10s %9s\n", stream.size(), truth.pixels.size(), "scheme", "clocks",
+              "clocks/px", "conflict %", "= est.", "seconds");
+  for (const auto& [lanes, bx, by] : std::vector<std::tuple<int, int, int>>{{1, 2, 2}, {2, 4, 2}, {4, 8, 2}, {4, 4, 4}}) {
+    sysmodel::AccumScheme sc;
+    sc.lanes = lanes, sc.bank_x = bx, sc.bank_y = by;
+    sc.datapath_latency = sched::schedule(objspace::sample_scheme()).latency;
+    const auto r = sysmodel::simulate_accumulation(sc, stream, truth.pixels.size());
+    const auto e = sysmodel::estimate_accumulation(sc, stream, truth.pixels.size());
+    std::printf("%-22s %14llu %12.2f %12.2f %10s %9.2f\n", sc.name().c_str(), (unsigned long long)r.total_cycles,
+                double(r.total_cycles) / n, 100.0 * double(r.conflict_clocks) / double(std::max<uint64_t>(1, r.issue_clocks)),
+                r.total_cycles == e.total_cycles ? "yes" : "NO", r.sim_seconds);
+  }
   return 0;
 }
 

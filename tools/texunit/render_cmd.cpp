@@ -17,6 +17,7 @@
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
 #include "objspace/objspace.hpp"
+#include "objspace_rtl.hpp"
 
 namespace tu::cli {
 
@@ -81,12 +82,16 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
   r->add_option("--pipeline", a.pipeline,
                 "screen: B1 -> B2 -> filter per pixel; object-space: each triangle rotated parallel to the "
                 "screen, textured on a sample grid (one mip level per polygon), samples rotated back, projected "
-                "and splatted (docs/blocks/objspace.md; ref and cmodel engines)")
+                "and splatted (docs/blocks/objspace.md; ref, cmodel and rtl engines: rtl = the per-sample "
+                "datapath tu_objspace_sample)")
       ->check(CLI::IsMember({"screen", "object-space"}));
   r->add_option("--os-spacing", a.os_spacing, "object-space: sample spacing in pixels at the plane's distance")
       ->check(CLI::Range(0.05, 64.0));
   r->add_option("--max-samples", a.max_samples, "object-space: cap on the render's samples (more: exit 2)")
       ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
+  r->add_option("--os-stall-prob", a.os_stall_prob,
+                "object-space rtl: probability of an input bubble and of output back-pressure per cycle")
+      ->check(CLI::Range(0.0, 0.9));
   return r;
 }
 
@@ -99,6 +104,27 @@ static void print_objspace_stats(const objspace::Stats& st) {
               (unsigned long long)st.splats, (unsigned long long)st.foreign, (unsigned long long)st.covered,
               (unsigned long long)st.holes, (unsigned long long)st.overlaps, st.max_weight,
               (unsigned long long)st.acc_saturated);
+}
+
+// The object-space render with the per-sample datapath in RTL: every sample's splat compared
+// with the C model's, the frame with the C-model render's on every pixel, the simulated cycles
+// with the estimate (sum over the runs of samples + the scheme's latency, no stalls).
+static bool objspace_rtl_render(const scene::Scene& s, const objspace::Options& oo, double stall_prob,
+                                render::Frame* frame) {
+  cosim::ObjspaceRtlOptions ro;
+  ro.stall_prob = stall_prob;
+  const auto r = cosim::render_objspace_rtl(s, oo, ro);
+  print_objspace_stats(r.result.stats);
+  std::printf("rtl per-sample datapath (tu_objspace_sample): %llu samples in %llu runs, %llu mismatches against the "
+              "C model%s%s; %llu pixels differ from the C-model render; cycles measured %llu, predicted %llu "
+              "(samples + runs x latency, %s); simulated %.0f samples/s (%.2f s)\n",
+              (unsigned long long)r.samples, (unsigned long long)r.runs, (unsigned long long)r.mismatches,
+              r.first_mismatch.empty() ? "" : "; first: ", r.first_mismatch.c_str(),
+              (unsigned long long)r.differing_pixels, (unsigned long long)r.sim_cycles,
+              (unsigned long long)r.predicted_cycles, stall_prob > 0 ? "without stalls: here a lower bound" : "exact without stalls",
+              double(r.samples) / std::max(1e-9, r.sim_wall_s), r.sim_wall_s);
+  *frame = r.result.frame;
+  return r.ok() && (stall_prob > 0 || r.sim_cycles == r.predicted_cycles);
 }
 
 int run_render(const RenderArgs& a) {
@@ -143,14 +169,18 @@ int run_render(const RenderArgs& a) {
   render::Frame frame;
   bool ok = true;
   if (a.pipeline == "object-space") {
-    if (a.engine != "ref" && a.engine != "cmodel")
-      throw std::invalid_argument("render --pipeline object-space: --engine must be ref or cmodel (not " + a.engine + ")");
+    if (a.engine != "ref" && a.engine != "cmodel" && a.engine != "rtl")
+      throw std::invalid_argument("render --pipeline object-space: --engine must be ref, cmodel or rtl (not " + a.engine + ")");
     if (a.frames > 1 || !a.vs.empty())
       throw std::invalid_argument("render --pipeline object-space: one frame, without --vs");
     const objspace::Options oo{a.os_spacing, a.max_samples};
-    auto r = a.engine == "cmodel" ? objspace::render_cmodel(s, oo) : objspace::render_ref(s, oo);
-    frame = std::move(r.frame);
-    print_objspace_stats(r.stats);
+    if (a.engine == "rtl") {
+      ok = objspace_rtl_render(s, oo, a.os_stall_prob, &frame);
+    } else {
+      auto r = a.engine == "cmodel" ? objspace::render_cmodel(s, oo) : objspace::render_ref(s, oo);
+      frame = std::move(r.frame);
+      print_objspace_stats(r.stats);
+    }
   } else if (a.engine == "rtl") {
     cosim::RtlRenderOptions ro;
     ro.has_ewa = a.rtl_unit != "bilinear";
@@ -198,7 +228,7 @@ int run_render(const RenderArgs& a) {
                                 : render::render_ref(a.no_relief ? scene::without_relief(si) : si, f);
   };
   auto render_at = [&](const scene::Scene& si) { return render_with(a.engine, si); };
-  if (a.engine != "rtl") frame = render_at(s);
+  if (a.engine != "rtl" && a.pipeline != "object-space") frame = render_at(s);
   std::optional<img::Rgba8Image> heat;  // --vs: |ENGINE - VS| per pixel, 64 levels = red
   const std::string heat_png = (std::filesystem::path(a.out_dir) / ("heat_" + a.engine + "_vs_" + a.vs + ".png")).string();
   if (!a.vs.empty()) {

@@ -22,6 +22,7 @@ struct RenderArgs {
   std::string pipeline = "screen";  // screen | object-space (docs/blocks/objspace.md)
   double os_spacing = 1;            // object-space: sample spacing, pixels at the plane distance
   uint64_t max_samples = 1ull << 28;  // object-space: sample cap of the render
+  double os_stall_prob = 0;           // object-space rtl: random stalls of the per-sample datapath
 };
 
 CLI::App* add_render(CLI::App& app, RenderArgs& a);

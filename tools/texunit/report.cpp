@@ -460,6 +460,7 @@ std::vector<Spec> registry_specs() {
       {"persp", "incremental", "persp", rtl_or_null("persp"), "tu_persp", "texels"},
       {"persp", "direct", "persp", &direct, "tu_persp_direct", "texels"},
       {"persp", "klane4", "persp_k4", rtl_or_null("persp_k4"), "tu_persp_klane", "texels (item = 4 pixels)"},
+      {"persp", "texel_depth", "persp_texel_depth", nullptr, "", "texels (C model only: no RTL)"},
       {"persp_setup", "setup", "persp_setup", rtl_or_null("persp_setup"), "tu_persp_setup", "seed value (0: exact)"},
       {"ellipse", "analytic", "ellipse", rtl_or_null("ellipse"), "tu_ellipse", "LOD (mip levels)"},
       {"ellipse", "recurrence", "ellipse_rec", rtl_or_null("ellipse_rec"), "tu_ellipse_rec",

@@ -16,10 +16,12 @@ std::vector<Block> make_pom_unit_blocks();  // pom_unit_block.cpp
 Block make_persp();       // persp_block.cpp
 Block make_persp_k4();    // persp_block.cpp
 Block make_persp_setup(); // persp_block.cpp
+Block make_persp_texel_depth();  // persp_block.cpp (no RTL)
 Block make_ellipse();     // ellipse_block.cpp
 Block make_ellipse_rec(); // ellipse_block.cpp
 Block make_ewa();         // ewa_block.cpp
 Block make_ewa_border();  // ewa_border_block.cpp
+Block make_objspace_sample();  // objspace_block.cpp
 std::vector<Block> make_brdf_blocks();  // brdf_block.cpp
 std::vector<Block> make_perlin_blocks();  // perlin_block.cpp
 
@@ -35,10 +37,12 @@ const std::vector<Block>& all() {
     b.push_back(make_persp());
     b.push_back(make_persp_k4());
     b.push_back(make_persp_setup());
+    b.push_back(make_persp_texel_depth());
     b.push_back(make_ellipse());
     b.push_back(make_ellipse_rec());
     b.push_back(make_ewa());
     b.push_back(make_ewa_border());
+    b.push_back(make_objspace_sample());
     for (auto& m : make_brdf_blocks()) b.push_back(std::move(m));
     for (auto& p : make_perlin_blocks()) b.push_back(std::move(p));
     return b;

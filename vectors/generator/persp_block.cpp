@@ -12,6 +12,8 @@
 
 #include "block.hpp"
 #include "persp/persp.hpp"
+#include "persp/schemes.hpp"
+#include "persp/texel_depth.hpp"
 
 namespace tu::blocks {
 
@@ -230,6 +232,61 @@ Block make_persp() {
   return b;
 }
 
+
+// ---------------- texel-depth variant (persp/texel_depth.hpp, no RTL) ----------------
+// One vector = one pixel of a span, as block persp, plus the span's last offset m2: the variant
+// needs both ends (T1, T2, q1, q2 from the same quantised seeds and increments as B1). Error: the
+// same as B1's, against the same exact rational; a span with a guarded end is flagged throughout.
+namespace {
+persp::texel_depth::Span td_span(const Row& in) {
+  return persp::texel_depth::setup({P::from_bits(in[0]), P::from_bits(in[1]), Q::from_bits(in[2])}, P::from_bits(in[3]),
+                            P::from_bits(in[4]), Q::from_bits(in[5]), static_cast<int>(in[7]));
+}
+}  // namespace
+
+Block make_persp_texel_depth() {
+  const Block px = make_persp();
+  Block b;
+  b.name = "persp_texel_depth";
+  b.description = "texel-depth texturing (seed 001 §3): w = z1 s / (z2 - s (z2 - z1)) from the span ends, "
+                  "T = T1 + (T2 - T1) w; 1 reciprocal + 3 multiplies per pixel";
+  b.fields.assign(px.fields.begin(), px.fields.begin() + 7);
+  b.fields.push_back(field("m2", vec::Role::In, "u" + std::to_string(kN) + ".0"));
+  b.fields.insert(b.fields.end(), px.fields.begin() + 7, px.fields.end());
+  b.sets = px.sets;
+  b.inputs = [px](const std::string& set, uint64_t count, uint64_t seed) {
+    std::vector<Row> rows = px.inputs(set, count, seed);
+    // m2 of a row = the last offset of its span (rows n = 0, 1, ... until the next n = 0).
+    for (size_t i = 0; i < rows.size();) {
+      size_t j = i + 1;
+      while (j < rows.size() && rows[j][6] != 0) ++j;
+      for (size_t k = i; k < j; ++k) rows[k].push_back(rows[j - 1][6]);
+      i = j;
+    }
+    return rows;
+  };
+  b.model = [](const Row& in) {
+    const persp::Pixel p = persp::texel_depth::pixel(td_span(in), static_cast<int>(in[6]));
+    return Row{Uv::from_raw(p.u).bits(), Uv::from_raw(p.v).bits(), p.flag ? 1u : 0u};
+  };
+  b.ref = [](const Row& in) { return ref_at(in, 0); };
+  b.error = [](const Row& in, const Row& out, const Row& ref) {
+    if (td_span(in).guard) {  // must be flagged and saturated
+      ErrPoint e;
+      const uint64_t sat = Uv::from_raw(Uv::kMaxRaw).bits();
+      const bool ok = out[2] == 1 && out[0] == sat && out[1] == sat;
+      e.valid = !ok;
+      e.abs = e.ulp = ok ? 0 : INFINITY;
+      return e;
+    }
+    return pixel_error(in, out, ref, 0);
+  };
+  b.starts_run = [](const Row& in) { return in[6] == 0; };
+  b.latency_cycles = sched::schedule(persp::texel_depth_scheme()).latency;
+  b.ii_cycles = 1;
+  b.err_metric = "max_texel_err";
+  return b;
+}
 
 // ---------------- k-lane unit (rtl/persp/tu_persp_klane.sv), K = 4 ----------------
 // One vector = a group of 4 consecutive pixels of a span starting at offset n (a multiple of 4),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -375,7 +376,7 @@ Result render_ref(const scene::Scene& s, const Options& opt) {
   return r;
 }
 
-Result render_cmodel(const scene::Scene& s, const Options& opt) {
+Result render_cmodel(const scene::Scene& s, const Options& opt, const Datapath& datapath) {
   const Prepared pr(s, opt);
   const auto& tris = pr.tris;  // not a structured binding: clang 14 (the fuzz build) cannot capture one
   const auto& cov = pr.cov;
@@ -410,22 +411,47 @@ Result render_cmodel(const scene::Scene& s, const Options& opt) {
     }
   };
   Result r;
+  // Samples go through the datapath in batches (the RTL engine simulates one batch per run); the
+  // accumulation is order-independent (exact sums, saturation at the format's maximum).
+  constexpr size_t kBatch = size_t(1) << 16;
+  std::vector<SampleIn> batch;
+  std::vector<img::Rgba8> colour;
+  std::vector<int> object;
+  std::vector<Splat> out;
+  batch.reserve(kBatch);
+  auto flush = [&] {
+    out.assign(batch.size(), Splat{});
+    if (datapath) {
+      datapath(batch, out);
+    } else {
+      for (size_t q = 0; q < batch.size(); ++q) out[q] = splat_fx(*batch[q].k, batch[q].i, batch[q].j);
+    }
+    for (size_t q = 0; q < batch.size(); ++q) {
+      const Splat& sp = out[q];
+      if (sp.guard) {
+        ++r.stats.guarded;
+        continue;
+      }
+      const img::Rgba8 c = colour[q];
+      splat_into(cov, w, h, object[q], sp.x, sp.y, sp.w, &r.stats, [&](size_t p, uint32_t wt) {
+        sat_add(&acc.w[p], wt, kWMax, p);
+        const uint8_t ch[4] = {c.r, c.g, c.b, c.a};
+        for (int ci = 0; ci < 4; ++ci) sat_add(&acc.c[ci][p], uint64_t(wt) * ch[ci], kCMax, p);
+      });
+    }
+    batch.clear(), colour.clear(), object.clear();
+  };
   for_each_sample(s, tris, opt, &r.stats, [&](const TriangleSetup& t, const Tile& tl, int i, int j) {
     const size_t ti = static_cast<size_t>(t.object);
     const TileFx& k = fx[static_cast<size_t>(&t - tris.data())][static_cast<size_t>(&tl - t.tiles.data())];
-    const Splat sp = splat_fx(k.k, i, j);
-    if (sp.guard) {
-      ++r.stats.guarded;
-      return;
-    }
     const uint32_t lod = static_cast<uint32_t>(round_i64(std::ldexp(t.lambda, fmt::kTexLodF)));
-    const img::Rgba8 c = tex::trilinear(texs[ti], lod, uv_fx(k.u[0], k.u[1], k.u[2], i, j), uv_fx(k.v[0], k.v[1], k.v[2], i, j));
-    splat_into(cov, w, h, t.object, sp.x, sp.y, sp.w, &r.stats, [&](size_t p, uint32_t wt) {
-      sat_add(&acc.w[p], wt, kWMax, p);
-      const uint8_t ch[4] = {c.r, c.g, c.b, c.a};
-      for (int q = 0; q < 4; ++q) sat_add(&acc.c[q][p], uint64_t(wt) * ch[q], kCMax, p);
-    });
+    batch.push_back({&k.k, i, j});
+    colour.push_back(
+        tex::trilinear(texs[ti], lod, uv_fx(k.u[0], k.u[1], k.u[2], i, j), uv_fx(k.v[0], k.v[1], k.v[2], i, j)));
+    object.push_back(t.object);
+    if (batch.size() == kBatch) flush();
   });
+  flush();
   // I = round half up (sum w c / sum w): floor((2 sum w c + sum w) / (2 sum w)), exact.
   auto div = [](uint64_t num, uint64_t den) {
     return static_cast<uint8_t>(std::min<u128>(255, (2 * u128(num) + den) / (2 * u128(den))));
@@ -439,6 +465,36 @@ Result render_cmodel(const scene::Scene& s, const Options& opt) {
       [&](size_t p) { return std::ldexp(static_cast<double>(acc.w[p]), -fmt::kObjSplatWF); });
   for (uint8_t v : acc.sat) r.stats.acc_saturated += v;
   return r;
+}
+
+scene::Scene quad_scene(const std::string& vertices, int w, int h) {
+  const std::string json = R"({"texunit_scene": 1,
+    "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "up": [0, 1, 0], "fovy_deg": 60,
+               "width": )" + std::to_string(w) + R"(, "height": )" + std::to_string(h) + R"(, "z_near": 0.1},
+    "textures": {"t": {"builtin": "checkerboard", "size": 64, "cells": 4, "wrap": "repeat"}},
+    "materials": {"m": {"texture": "t", "filter": "trilinear"}},
+    "objects": [{"name": "q", "type": "quad", "material": "m", "vertices": )" + vertices + R"(,
+                 "uv": [[0, 1], [1, 1], [1, 0], [0, 0]]}]})";
+  return scene::parse(json, "<objspace quad>", ".");
+}
+
+std::string random_quad_vertices(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> U(-1, 1);
+  const double z = -1 - 20 * (U(rng) + 1), s = 0.5 + std::fabs(z) * 0.6, tilt = 0.5 * U(rng) * std::fabs(z) / s;
+  const double far = U(rng);
+  char v[256];
+  std::snprintf(v, sizeof v, "[[%f, %f, %f], [%f, %f, %f], [%f, %f, %f], [%f, %f, %f]]", -s, -s, z + tilt * s, s, -s,
+                z + tilt * s, s, s, z - tilt * s * far, -s, s, z - tilt * s);
+  return v;
+}
+
+const std::vector<std::string>& stiff_quad_vertices() {
+  static const std::vector<std::string> v = {
+      "[[-3, -0.3, -0.5], [3, -0.3, -0.5], [3, -0.3, -12], [-3, -0.3, -12]]",
+      "[[-3, -0.002, -0.2], [3, -0.002, -0.2], [3, -0.0001, -150], [-3, -0.0001, -150]]",
+      "[[-0.2, -0.2, -0.1001], [0.2, -0.2, -0.1001], [0.2, 0.2, -0.1001], [-0.2, 0.2, -0.1001]]",
+      "[[-900, -700, -800], [900, -700, -800], [900, 700, -800], [-900, 700, -800]]"};
+  return v;
 }
 
 }  // namespace tu::objspace

@@ -32,7 +32,10 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <random>
+#include <string>
 #include <vector>
 
 #include "persp/persp.hpp"
@@ -95,20 +98,41 @@ struct Result {
   render::Frame frame;  // records: texels = 8 x (sum s_i rounded), lod = the polygon's lambda
   Stats stats;
 };
-Result render_ref(const scene::Scene& s, const Options& opt = {});
-Result render_cmodel(const scene::Scene& s, const Options& opt = {});
-
 // ---- the per-sample datapath (C model) ----
 struct Splat {
   int64_t x = 0, y = 0;   // top-left covering pixel floor(px), floor(py)
   uint32_t w[4] = {};     // (x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1): u(ObjSplatWW).ObjSplatWF
   bool guard = false;     // B1 guard: no position
+  friend bool operator==(const Splat&, const Splat&) = default;
 };
 Splat splat_fx(const persp::Unit::Coefs& k, int i, int j);
+
+// The per-sample datapath applied to a batch of samples (in order): out[k] = the splat of
+// sample k. Empty: the C model (splat_fx); `texunit render --pipeline object-space --engine rtl`
+// passes the Verilated tu_objspace_sample (the accumulation stays in C++).
+struct SampleIn {
+  const persp::Unit::Coefs* k;  // the tile's quantised map
+  int i, j;
+};
+using Datapath = std::function<void(const std::vector<SampleIn>& in, std::vector<Splat>& out)>;
+
+Result render_ref(const scene::Scene& s, const Options& opt = {});
+Result render_cmodel(const scene::Scene& s, const Options& opt = {}, const Datapath& datapath = {});
 struct SplatRef {
   double px = 0, py = 0;
   double w[4] = {};
 };
 SplatRef splat_ref(const persp::Coef9& k, int i, int j);
+
+// ---- scenes shared by the tests and the vector sets (vectors/generator/objspace_block.cpp) ----
+// One textured quad (64 x 64 checkerboard, trilinear) seen from the origin looking down -z
+// (fovy 60 degrees, w x h pixels); `vertices` is the JSON array of its four corners.
+scene::Scene quad_scene(const std::string& vertices, int w = 64, int h = 48);
+// A random plane in front of the eye (orientation, distance 1..41; every vertex at least |z| / 2
+// in front, so D > 0): the JSON vertices for quad_scene.
+std::string random_quad_vertices(std::mt19937_64& rng);
+// The stiff planes: a grazing floor to 12 units, a floor 0.002 below the eye to 150 units
+// (89.999 degrees), a quad on the near plane (magnification), a quad at 800 units.
+const std::vector<std::string>& stiff_quad_vertices();
 
 }  // namespace tu::objspace

@@ -4,6 +4,7 @@ namespace tu::persp {
 
 namespace {
 using sched::Graph;
+}  // namespace
 
 // One pixel of the back end (tu_persp_pixel, S2..S8) after the S1 op `acc_q` (the op producing q)
 // and the S1 ops `acc_p` (p_u, p_v): guard + leading-one detect + normalise (registered), the
@@ -11,19 +12,22 @@ using sched::Graph;
 // multiplies p*R, shift/round/saturate (registered). `sfx` distinguishes the lanes. Convention as
 // in the Gaussian graphs: a multiplier feeding an adder in the same stage is the registered op
 // (latency 1), the adder after it chains combinationally (latency 0).
-void back_end(Graph& g, int acc_q, int acc_pu, int acc_pv, const std::string& sfx) {
+int add_reciprocal(Graph& g, int acc_q, const std::string& sfx) {
   const int nrm = g.add("guard_lzc_normalise" + sfx, "lzc", 1, {acc_q});
   const int rom = g.add("recip_rom" + sfx, "rom", 1, {nrm});
   const int m1 = g.add("recip_mul_c2_dx" + sfx, "mul", 1, {rom});
   const int a1 = g.add("recip_add_c1" + sfx, "add", 0, {m1});
   const int m2 = g.add("recip_mul_s_dx" + sfx, "mul", 1, {a1});
   const int a2 = g.add("recip_add_c0" + sfx, "add", 0, {m2});
-  const int r = g.add("recip_round_sat" + sfx, "add", 1, {a2});
+  return g.add("recip_round_sat" + sfx, "add", 1, {a2});
+}
+std::pair<int, int> add_back_end(Graph& g, int acc_q, int acc_pu, int acc_pv, const std::string& sfx) {
+  const int r = add_reciprocal(g, acc_q, sfx);
   const int mu = g.add("mul_pu_r" + sfx, "mul", 1, {r, acc_pu});
   const int mv = g.add("mul_pv_r" + sfx, "mul", 1, {r, acc_pv});
-  g.add("shift_round_sat_u" + sfx, "shift", 1, {mu});
-  g.add("shift_round_sat_v" + sfx, "shift", 1, {mv});
+  return {g.add("shift_round_sat_u" + sfx, "shift", 1, {mu}), g.add("shift_round_sat_v" + sfx, "shift", 1, {mv})};
 }
+namespace {
 
 // S1 of the incremental unit: n == 0 ? seed : acc + increment (registered accumulators).
 // S1 of the direct unit: seed + n * increment (combinational multiply, registered sum).
@@ -47,7 +51,7 @@ Graph build_persp(const std::string& name, bool direct, int lanes) {
         acc[k] = g.add(std::string("acc_") + sig[k] + sfx, "add", 1);
       }
     }
-    back_end(g, acc[2], acc[0], acc[1], sfx);
+    add_back_end(g, acc[2], acc[0], acc[1], sfx);
   }
   return g;
 }
@@ -83,5 +87,20 @@ const std::vector<sched::Graph>& schemes() {
 }
 
 const sched::Graph& scheme(const std::string& name) { return sched::find(schemes(), name); }
+
+const sched::Graph& texel_depth_scheme() {
+  static const Graph g = [] {
+    Graph t;
+    t.name = "persp_texel_depth";
+    t.description = "texel depth: N, D accumulators, reciprocal of D, w = N R, T1 + (T2 - T1) w (3 multiplies)";
+    const int n = t.add("acc_n", "add", 1), d = t.add("acc_d", "add", 1);
+    const int r = add_reciprocal(t, d);
+    const int w = t.add("round_w", "shift", 1, {t.add("mul_n_r", "mul", 1, {r, n})});
+    for (const char* c : {"u", "v"})
+      t.add(std::string("add_t1_round_") + c, "add", 1, {t.add(std::string("mul_dt_w_") + c, "mul", 1, {w})});
+    return t;
+  }();
+  return g;
+}
 
 }  // namespace tu::persp

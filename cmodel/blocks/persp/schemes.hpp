@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "texunit/sched.hpp"
@@ -12,4 +13,12 @@
 namespace tu::persp {
 const std::vector<sched::Graph>& schemes();
 const sched::Graph& scheme(const std::string& name);  // throws std::invalid_argument
+// Appends the per-pixel back end (tu_persp_pixel, S2..S8) after the ops producing q, p_u, p_v;
+// `sfx` names a lane. Returns the two output ops (u, v). Also the object-space datapath's core.
+std::pair<int, int> add_back_end(sched::Graph& g, int acc_q, int acc_pu, int acc_pv, const std::string& sfx = "");
+// The back end's first part: guard + normalise of the op `acc_q`, the reciprocal core; returns R.
+int add_reciprocal(sched::Graph& g, int acc_q, const std::string& sfx = "");
+// Texel-depth variant (persp/texel_depth.hpp), per pixel: accumulators N, D, the reciprocal of D,
+// w = N R (rounded), T = T1 + (T2 - T1) w for u and v. Not in schemes(): it has no RTL.
+const sched::Graph& texel_depth_scheme();
 }  // namespace tu::persp
