@@ -61,9 +61,12 @@ void schema_decls(std::ostream& os) {
             {TU_ENGINE_CODES(TU_X)});
   emit_enum("EWA weight source (schema.hpp TU_WEIGHT_SOURCE_CODES)", schema::kWsrcW, "Wsrc", "wsrc_e",
             {TU_WEIGHT_SOURCE_CODES(TU_X)});
+  emit_enum("texture wrap mode of one axis (schema.hpp TU_WRAP_CODES)", schema::kWrapW, "Wrap", "wrap_e",
+            {TU_WRAP_CODES(TU_X)});
 #undef TU_X
   os << "  localparam int EngineW = " << schema::kEngineW << ";\n"
-     << "  localparam int WsrcW = " << schema::kWsrcW << ";\n";
+     << "  localparam int WsrcW = " << schema::kWsrcW << ";\n"
+     << "  localparam int WrapW = " << schema::kWrapW << ";\n";
   os << "  // flag bits (bit indices) of the EWA filter and of the footprint unit\n";
 #define TU_X(name, bit, desc) os << "  localparam int EwaFlag" #name " = " << (bit) << ";  // " << desc << "\n";
   TU_EWA_FLAG_BITS(TU_X)

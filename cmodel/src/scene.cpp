@@ -240,8 +240,25 @@ TextureSpec parse_texture(Node n, const std::string& name, const std::string& ba
       n.fail_at("png", "file '" + fp.string() + "' does not exist");
     t.png = fp.string();
   }
-  t.wrap = n.str("wrap", std::string("repeat"), {"repeat", "clamp"}) == "clamp" ? tex::Wrap::Clamp
-                                                                                : tex::Wrap::Repeat;
+  // `wrap` sets both axes; `wrap_u` / `wrap_v` override one.
+  const std::vector<std::string> modes(std::begin(kWrapNames), std::end(kWrapNames));
+  auto wrap_of = [&](const std::string& k, tex::Wrap def) {
+    if (!n.has(k)) return def;
+    const std::string m = n.str(k, {}, modes);
+    return static_cast<tex::Wrap>(std::find(modes.begin(), modes.end(), m) - modes.begin());
+  };
+  const tex::Wrap both = wrap_of("wrap", tex::Wrap::Repeat);
+  t.addressing.u = wrap_of("wrap_u", both);
+  t.addressing.v = wrap_of("wrap_v", both);
+  if (n.has("border")) {
+    const auto c = n.vec("border", 4, 1e300);  // (the range check below names [0, 255])
+    uint8_t* ch[4] = {&t.addressing.border.r, &t.addressing.border.g, &t.addressing.border.b, &t.addressing.border.a};
+    for (size_t i = 0; i < 4; ++i) {
+      if (c[i] < 0 || c[i] > 255 || c[i] != std::floor(c[i]))
+        n.fail_at("border/" + std::to_string(i), "expected an integer in [0, 255]");
+      *ch[i] = static_cast<uint8_t>(c[i]);
+    }
+  }
   n.finish();
   return t;
 }
@@ -567,9 +584,9 @@ tex::Texture build_texture(const Scene& s, const std::string& name) {
   const std::string where = s.source + ": /textures/" + name;
   try {
     if (t.builtin == "checkerboard")
-      return tex::Texture::build(where, tex::checkerboard(t.size, t.cells), t.wrap);
-    if (t.builtin == "bricks") return tex::Texture::build(where, tex::bricks(t.size).color, t.wrap);
-    return tex::Texture::build(where + " (" + t.png + ")", img::read_png_rgba(t.png), t.wrap);
+      return tex::Texture::build(where, tex::checkerboard(t.size, t.cells), t.addressing);
+    if (t.builtin == "bricks") return tex::Texture::build(where, tex::bricks(t.size).color, t.addressing);
+    return tex::Texture::build(where + " (" + t.png + ")", img::read_png_rgba(t.png), t.addressing);
   } catch (const std::invalid_argument& e) {
     throw SceneError(e.what());
   } catch (const std::runtime_error& e) {

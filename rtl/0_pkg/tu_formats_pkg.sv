@@ -240,8 +240,17 @@ package tu_formats_pkg;
     WsrcTable1d = 2'd1,  // 1-D weight table over Q (tu_weight_table_1d)
     WsrcTable2d = 2'd2  // 2-D weight table over (xi, eta) (tu_weight_table_2d)
   } wsrc_e;
+  // texture wrap mode of one axis (schema.hpp TU_WRAP_CODES)
+  typedef enum logic [2:0] {
+    WrapRepeat = 3'd0,  // x mod size (GL_REPEAT)
+    WrapMirror = 3'd1,  // mirrored repeat, period 2 size (GL_MIRRORED_REPEAT)
+    WrapClamp = 3'd2,  // clamp to [0, size - 1] (GL_CLAMP_TO_EDGE)
+    WrapBorder = 3'd3,  // outside [0, size - 1]: the border colour (GL_CLAMP_TO_BORDER)
+    WrapMirrorOnce = 3'd4  // clamp(x < 0 ? -1 - x : x) to [0, size - 1] (GL_MIRROR_CLAMP_TO_EDGE)
+  } wrap_e;
   localparam int EngineW = 2;
   localparam int WsrcW = 2;
+  localparam int WrapW = 3;
   // flag bits (bit indices) of the EWA filter and of the footprint unit
   localparam int EwaFlagUnitDisc = 0;  // B2 horizon or point footprint (no axes): unit disc at level 0
   localparam int EwaFlagAxisClamp = 1;  // log2 major at level L above min(log2 lim_L, EwaAxisMaxLog2): clamped

@@ -26,7 +26,7 @@ module tu_ewa #(
   input  logic [tu_formats_pkg::TexAddrW-1:0]   base_i,
   input  logic [3:0]                            lw_i,
   input  logic [3:0]                            lh_i,
-  input  logic                                  clamp_i,
+  input  logic [2*tu_formats_pkg::WrapW-1:0]     wrap_i,  // {v, u} Wrap* codes (tu_texel_addr)
   input  logic [1:0]                            wsrc_i,   // 0 formula, 1 1-D table, 2 2-D table
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,    // max_texels
   output logic                                  tex_req_o,
@@ -45,14 +45,14 @@ module tu_ewa #(
   // texture / weight configuration travels with the record (the set-up holds one pixel)
   logic [AW-1:0] base_q;
   logic [3:0]    lw_q, lh_q;
-  logic          clamp_q;
+  logic [2*tu_formats_pkg::WrapW-1:0] wrap_q;
   logic [1:0]    wsrc_q;
   always_ff @(posedge clk_i) begin
     if (in_valid_i && in_ready_o) begin
       base_q  <= base_i;
       lw_q    <= lw_i;
       lh_q    <= lh_i;
-      clamp_q <= clamp_i;
+      wrap_q  <= wrap_i;
       wsrc_q  <= wsrc_i;
     end
   end
@@ -80,7 +80,7 @@ module tu_ewa #(
     .cu_i(r_cu), .cv_i(r_cv), .xi0_i(r_xi0), .eta0_i(r_eta0), .dxi_i(r_dxi), .deta_i(r_deta),
     .dxiy_i(r_dxiy), .detay_i(r_detay), .q0_i(r_q0), .dq0_i(r_dq0), .ddq_i(r_ddq),
     .ey0_i(r_ey0), .ddqy_i(r_ddqy), .dqy_i(r_dqy), .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q),
-    .clamp_i(clamp_q), .wsrc_i(wsrc_q), .tex_req_o, .tex_addr_o, .tex_data_i,
+    .wrap_i(wrap_q), .wsrc_i(wsrc_q), .tex_req_o, .tex_addr_o, .tex_data_i,
     .out_valid_o, .out_ready_i, .rgba_o, .level_o, .visited_o, .inside_o, .flags_o
   );
 

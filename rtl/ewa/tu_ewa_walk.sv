@@ -43,7 +43,7 @@ module tu_ewa_walk (
   input  logic [tu_formats_pkg::TexAddrW-1:0]      base_i,
   input  logic [3:0]                               lw_i,
   input  logic [3:0]                               lh_i,
-  input  logic                                     clamp_i,
+  input  logic [2*tu_formats_pkg::WrapW-1:0]       wrap_i,  // {v, u} Wrap* codes (tu_texel_addr)
   input  logic [1:0]                               wsrc_i,
   output logic                                     tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]      tex_addr_o,
@@ -86,7 +86,7 @@ module tu_ewa_walk (
   logic signed [63:0]  ddq_q, ddqy_q, dqy_q;
   logic [AW-1:0]       base_q;
   logic [3:0]          lw_q, lh_q;
-  logic                clamp_q;
+  logic [2*tu_formats_pkg::WrapW-1:0] wrap_q;
   logic [1:0]          wsrc_q;
   // ---- walk state: current texel and row start
   logic signed [31:0]    x_q, y_q;
@@ -129,7 +129,7 @@ module tu_ewa_walk (
       cu_q <= cu_i;       cv_q <= cv_i;      box_q <= box_i;
       dxi_q <= dxi_i;     deta_q <= deta_i;  dxiy_q <= dxiy_i;  detay_q <= detay_i;
       ddq_q <= ddq_i;     ddqy_q <= ddqy_i;  dqy_q <= dqy_i;
-      base_q <= base_i;   lw_q <= lw_i;      lh_q <= lh_i;      clamp_q <= clamp_i;
+      base_q <= base_i;   lw_q <= lw_i;      lh_q <= lh_i;      wrap_q <= wrap_i;
       wsrc_q <= wsrc_i;
       x_q <= x0_i;        y_q <= y0_i;
       q_q <= q0_i;        dq_q <= dq0_i;     xi_q <= xi0_i;     eta_q <= eta0_i;
@@ -164,7 +164,7 @@ module tu_ewa_walk (
   logic [AW-1:0]         addr, addr_q [4];
   logic                  in_q [2:5];
   tu_texel_addr #(.CoordW(32)) u_addr (
-    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .clamp_i(clamp_q), .level_i(lev_q),
+    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .wrap_i(wrap_q), .level_i(lev_q),
     .x_i(st_q == WNear ? (cu_q + 32'sd32) >>> PosF : x_q),
     .y_i(st_q == WNear ? (cv_q + 32'sd32) >>> PosF : y_q), .addr_o(addr)
   );

@@ -9,7 +9,8 @@ typedef struct packed {
   logic [tu_formats_pkg::TexAddrW-1:0] tbase;  // colour texture: base word address in the texel RAM
   logic [3:0] tlw;  // colour texture: log2 width
   logic [3:0] tlh;  // colour texture: log2 height
-  logic tclamp;  // 1: clamp, 0: wrap
+  logic [tu_formats_pkg::WrapW-1:0] twrapu;  // colour texture: wrap mode along u (Wrap* codes)
+  logic [tu_formats_pkg::WrapW-1:0] twrapv;  // colour texture: wrap mode along v (Wrap* codes)
   logic [tu_formats_pkg::WsrcW-1:0] wsrc;  // EWA weight source (Wsrc* codes)
   logic [tu_formats_pkg::EwaCountW-1:0] cap;  // EWA texel cap
   logic [tu_formats_pkg::EngineW-1:0] filt;  // filter engine (Eng* codes)

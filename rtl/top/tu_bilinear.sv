@@ -18,7 +18,7 @@ module tu_bilinear (
   input  logic [tu_formats_pkg::TexAddrW-1:0] base_i,
   input  logic [3:0]                          lw_i,
   input  logic [3:0]                          lh_i,
-  input  logic                                clamp_i,
+  input  logic [2*tu_formats_pkg::WrapW-1:0]   wrap_i,   // {v, u} Wrap* codes (tu_texel_addr)
   output logic                                tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0] tex_addr_o,
   input  logic [31:0]                         tex_data_i,
@@ -35,7 +35,7 @@ module tu_bilinear (
   logic [F:0]                          fx_q, fy_q;
   logic [tu_formats_pkg::TexAddrW-1:0] base_q;
   logic [3:0]                          lw_q, lh_q, lev_q;
-  logic                                clamp_q;
+  logic [2*tu_formats_pkg::WrapW-1:0]   wrap_q;
   logic [31:0]                         c_q [3];
   logic signed [UW-1:0]                su, sv;
   logic [4:0]                          sh;  // TexUvF + L: fraction bits of the level-L position
@@ -50,7 +50,7 @@ module tu_bilinear (
   assign rx = x0_q + ((st_q == 3'd2 || st_q == 3'd4) ? UW'(1) : UW'(0));
   assign ry = y0_q + ((st_q == 3'd3 || st_q == 3'd4) ? UW'(1) : UW'(0));
   tu_texel_addr #(.CoordW(UW)) u_addr (
-    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .clamp_i(clamp_q), .level_i(lev_q),
+    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .wrap_i(wrap_q), .level_i(lev_q),
     .x_i(rx), .y_i(ry), .addr_o(tex_addr_o)
   );
 
@@ -95,7 +95,7 @@ module tu_bilinear (
       base_q  <= base_i;
       lw_q    <= lw_i;
       lh_q    <= lh_i;
-      clamp_q <= clamp_i;
+      wrap_q  <= wrap_i;
     end
     if (st_q >= 3'd2 && st_q <= 3'd4) c_q[2'(st_q - 3'd2)] <= tex_data_i;
     if (st_q == 3'd5) rgba_o <= blend;

@@ -22,7 +22,7 @@ module tu_ewa_sim #(
   input  logic [tu_formats_pkg::TexAddrW-1:0]   base_i,
   input  logic [3:0]                            lw_i,
   input  logic [3:0]                            lh_i,
-  input  logic                                  clamp_i,
+  input  logic [2*tu_formats_pkg::WrapW-1:0]     wrap_i,
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   output logic                                  out_valid_o,
@@ -38,7 +38,7 @@ module tu_ewa_sim #(
   logic [31:0]                         tex_data;
   tu_ewa u_ewa (
     .clk_i, .rst_ni, .in_valid_i, .in_ready_o, .u_i, .v_i, .ae_i, .ce_i, .be_i, .lmaj_i, .lmin_i,
-    .lod_i, .eflags_i, .guard_i(1'b0), .base_i, .lw_i, .lh_i, .clamp_i, .wsrc_i, .cap_i,
+    .lod_i, .eflags_i, .guard_i(1'b0), .base_i, .lw_i, .lh_i, .wrap_i, .wsrc_i, .cap_i,
     .tex_req_o(tex_req), .tex_addr_o(tex_addr), .tex_data_i(tex_data),
     .out_valid_o, .out_ready_i, .rgba_o, .level_o, .visited_o, .inside_o, .flags_o
   );

@@ -15,7 +15,7 @@ module tu_nearest (
   input  logic [tu_formats_pkg::TexAddrW-1:0] base_i,
   input  logic [3:0]                          lw_i,
   input  logic [3:0]                          lh_i,
-  input  logic                                clamp_i,
+  input  logic [2*tu_formats_pkg::WrapW-1:0]   wrap_i,   // {v, u} Wrap* codes (tu_texel_addr)
   output logic                                tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0] tex_addr_o,
   input  logic [31:0]                         tex_data_i,
@@ -29,12 +29,12 @@ module tu_nearest (
   logic signed [UW-1:0]                x_q, y_q;
   logic [tu_formats_pkg::TexAddrW-1:0] base_q;
   logic [3:0]                          lw_q, lh_q, lev_q;
-  logic                                clamp_q;
+  logic [2*tu_formats_pkg::WrapW-1:0]   wrap_q;
   assign in_ready_o  = st_q == 2'd0;
   assign out_valid_o = st_q == 2'd3;
   assign tex_req_o   = st_q == 2'd1;
   tu_texel_addr #(.CoordW(UW)) u_addr (
-    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .clamp_i(clamp_q), .level_i(lev_q),
+    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .wrap_i(wrap_q), .level_i(lev_q),
     .x_i(x_q), .y_i(y_q), .addr_o(tex_addr_o)
   );
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -56,7 +56,7 @@ module tu_nearest (
       base_q  <= base_i;
       lw_q    <= lw_i;
       lh_q    <= lh_i;
-      clamp_q <= clamp_i;
+      wrap_q  <= wrap_i;
     end
     if (st_q == 2'd2) rgba_o <= tex_data_i;
   end

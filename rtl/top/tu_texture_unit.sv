@@ -75,7 +75,7 @@ module tu_texture_unit #(
   input  logic [tu_formats_pkg::TexAddrW-1:0]   tbase_i,
   input  logic [3:0]                            tlw_i,
   input  logic [3:0]                            tlh_i,
-  input  logic                                  tclamp_i,
+  input  logic [2*tu_formats_pkg::WrapW-1:0]     twrap_i,  // {v, u} Wrap* codes
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   input  logic [1:0]                            filt_i,  // material filter: 0 bilinear, 1 EWA, 2 trilinear, 3 nearest
@@ -159,7 +159,8 @@ module tu_texture_unit #(
     in_mat.tbase   = tbase_i;
     in_mat.tlw     = tlw_i;
     in_mat.tlh     = tlh_i;
-    in_mat.tclamp  = tclamp_i;
+    in_mat.twrapu  = twrap_i[tu_formats_pkg::WrapW-1:0];
+    in_mat.twrapv  = twrap_i[2*tu_formats_pkg::WrapW-1:tu_formats_pkg::WrapW];
     in_mat.wsrc    = wsrc_i;
     in_mat.cap     = cap_i;
     in_mat.filt    = filt_i;
@@ -466,7 +467,7 @@ module tu_texture_unit #(
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngEwa), .in_ready_o(ewa_in_ready),
       .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
       .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
-      .clamp_i(f_mat.tclamp), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap),
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap),
       .tex_req_o(ewa_req), .tex_addr_o(ewa_addr), .tex_data_i,
       .out_valid_o(ewa_valid), .out_ready_i(p_ready && os_valid && cur_q == EngEwa),
       .rgba_o(ewa_rgba), .level_o(ewa_level), .visited_o(ewa_visited), .inside_o(ewa_inside),
@@ -489,7 +490,7 @@ module tu_texture_unit #(
     tu_bilinear u_bil (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngBil), .in_ready_o(bil_in_ready),
       .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .level_i(4'd0), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
-      .clamp_i(f_mat.tclamp), .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i,
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i,
       .out_valid_o(bil_valid), .out_ready_i(p_ready && os_valid && cur_q == EngBil), .rgba_o(bil_rgba)
     );
   end else begin : g_no_bilinear
@@ -503,7 +504,7 @@ module tu_texture_unit #(
     tu_trilinear u_tri (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngTri), .in_ready_o(tri_in_ready),
       .u_i(f_u), .v_i(f_v), .lod_i(f_tlod), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
-      .clamp_i(f_mat.tclamp), .tex_req_o(tri_req), .tex_addr_o(tri_addr), .tex_data_i,
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(tri_req), .tex_addr_o(tri_addr), .tex_data_i,
       .out_valid_o(tri_valid), .out_ready_i(p_ready && os_valid && cur_q == EngTri), .rgba_o(tri_rgba),
       .level_o(tri_level)
     );
@@ -520,7 +521,7 @@ module tu_texture_unit #(
   if (HasNearest != 0) begin : g_nearest
     tu_nearest u_nst (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngNst), .in_ready_o(nst_in_ready),
-      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh), .clamp_i(f_mat.tclamp),
+      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh), .wrap_i({f_mat.twrapv, f_mat.twrapu}),
       .tex_req_o(nst_req), .tex_addr_o(nst_addr), .tex_data_i,
       .out_valid_o(nst_valid), .out_ready_i(p_ready && os_valid && cur_q == EngNst), .rgba_o(nst_rgba)
     );
@@ -573,7 +574,7 @@ module tu_texture_unit #(
   // one 1,300-bit value under --assert.
   `TU_ASSERT_HANDSHAKE(InHandshakeB1, in_valid_i, in_ready_o, {a_i, b_i, c_i, d_i, e_i, f_i, g_i, h_i, i_i, x0_i, x1_i, y_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeB2, in_valid_i, in_ready_o, {kux_i, kvx_i, kuy_i, kvy_i, m_i, nn_i})
-  `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, tclamp_i,
+  `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, twrap_i,
                                                                  wsrc_i, cap_i, filt_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
                                                                  hlw_i, hlh_i, rdm_i, dlayers_i, dbase_i})
   `TU_ASSERT_HANDSHAKE(ViewHandshake, view_valid_i, view_ready_o, {view_ok_i, vx_i, vy_i, vz_i, vc_i})

@@ -17,7 +17,7 @@ module tu_trilinear (
   input  logic [tu_formats_pkg::TexAddrW-1:0] base_i,
   input  logic [3:0]                          lw_i,
   input  logic [3:0]                          lh_i,
-  input  logic                                clamp_i,
+  input  logic [2*tu_formats_pkg::WrapW-1:0]   wrap_i,   // {v, u} Wrap* codes (tu_texel_addr)
   output logic                                tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0] tex_addr_o,
   input  logic [31:0]                         tex_data_i,
@@ -32,7 +32,8 @@ module tu_trilinear (
   typedef enum logic [2:0] {Idle, IssueA, WaitA, IssueB, WaitB, Out} state_e;
   state_e state_q;
   logic [UW-1:0]                       u_q, v_q;
-  logic                                guard_q, clamp_q, single_q;
+  logic                                guard_q, single_q;
+  logic [2*tu_formats_pkg::WrapW-1:0]   wrap_q;
   logic [tu_formats_pkg::TexAddrW-1:0] base_q;
   logic [3:0]                          lw_q, lh_q, lev_q;
   logic [LF-1:0]                       f_q;
@@ -50,7 +51,7 @@ module tu_trilinear (
   tu_bilinear u_bil (
     .clk_i, .rst_ni, .in_valid_i(b_in_valid), .in_ready_o(b_in_ready),
     .u_i(u_q), .v_i(v_q), .guard_i(guard_q), .level_i(state_q == IssueB ? lev_q + 4'd1 : lev_q),
-    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .clamp_i(clamp_q),
+    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .wrap_i(wrap_q),
     .tex_req_o, .tex_addr_o, .tex_data_i,
     .out_valid_o(b_out_valid), .out_ready_i(b_out_ready), .rgba_o(b_rgba)
   );
@@ -96,7 +97,7 @@ module tu_trilinear (
       base_q   <= base_i;
       lw_q     <= lw_i;
       lh_q     <= lh_i;
-      clamp_q  <= clamp_i;
+      wrap_q   <= wrap_i;
       single_q <= guard_i || l_in >= top_in;
       lev_q    <= l_in >= top_in ? top_in : l_in;
       f_q      <= lod_i[LF-1:0];

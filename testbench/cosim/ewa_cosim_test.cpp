@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 
 #include "cosim_checks.hpp"
 #include "ewa/ewa_cycles.hpp"
@@ -390,6 +391,34 @@ TEST(TextureUnitRtl, SpecialisedUnitRendersSceneWithoutReliefAsTheFullUnit) {
   EXPECT_EQ(differ, 0u);
   std::printf("ui_quad: %zu px, full unit %llu cycles, specialised %llu cycles\n", a.frame.pixels.size(),
               (unsigned long long)a.cycles, (unsigned long long)b.cycles);
+}
+
+// docs/scenes/wrap_modes.json: one quad per wrap mode (repeat, mirror, clamp, border, mirror once,
+// and border along u with mirror along v), uv over [-1, 2], each material on another engine (EWA,
+// trilinear, bilinear, nearest): every pixel == the C model without stalls (cycles as predicted)
+// and with 30 % stalls, then every engine on every mode (--filter). The border colour shows.
+TEST(TextureUnitRtl, WrapModesSceneEqualsCModelCyclesPredicted) {
+  const auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/wrap_modes.json");
+  std::vector<std::optional<scene::Filter>> filters = {std::nullopt, scene::Filter::Ewa, scene::Filter::Trilinear,
+                                                       scene::Filter::Bilinear, scene::Filter::Nearest};
+  for (const auto& f : filters)
+    for (double stall : {0.0, 0.3}) {
+      if (f && stall == 0) continue;
+      cosim::RtlRenderOptions o;
+      o.filter = f;
+      o.stall_prob = stall;
+      const auto r = cosim::render_rtl(s, o);
+      EXPECT_TRUE(r.ok()) << r.first_mismatch;
+      EXPECT_GT(r.frame.pixels.size(), 2000u);
+      if (stall == 0) EXPECT_EQ(r.cycles, r.predicted_cycles);
+      size_t border = 0;  // the border quad's magenta, unfiltered (beyond the edge)
+      for (const auto& p : r.frame.pixels) border += p.color == img::Rgba8{255, 0, 255, 255};
+      if (!f || *f == scene::Filter::Nearest) EXPECT_GT(border, 50u);
+      std::printf("wrap modes, %s, stalls %.1f: %zu px, %llu mismatches, %zu border px, cycles %llu (predicted %llu)\n",
+                  f ? scene::to_string(*f) : "as authored", stall, r.frame.pixels.size(),
+                  (unsigned long long)r.mismatches, border, (unsigned long long)r.cycles,
+                  (unsigned long long)r.predicted_cycles);
+    }
 }
 }  // namespace
 

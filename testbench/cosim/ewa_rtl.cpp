@@ -1,6 +1,6 @@
 // RTL binding of the EWA engine (rtl/ewa/tu_ewa.sv through the simulation top tu_ewa_sim with
 // the texel RAM model), block "ewa": the block's fixed texture (bricks colour 256 x 256, repeat)
-// is loaded into the RAM at address 0 during reset.
+// is loaded into the RAM at address 0 during reset (its border word at 0, level 0 at 1).
 #include "Vtu_ewa_sim.h"
 #include "cosim.hpp"
 #include "texel_ram.hpp"
@@ -21,10 +21,10 @@ RtlBlock rtl_ewa() {
     d.eflags_i = static_cast<uint8_t>(in[8]);
     d.wsrc_i = static_cast<uint8_t>(in[9]);
     d.cap_i = static_cast<uint32_t>(in[10]);
-    d.base_i = 0;
+    d.base_i = 1;  // after the border word at 0
     d.lw_i = static_cast<uint8_t>(log2_size(tex.levels[0].width));
     d.lh_i = static_cast<uint8_t>(log2_size(tex.levels[0].height));
-    d.clamp_i = tex.wrap == tex::Wrap::Clamp;
+    d.wrap_i = wrap_code(tex.addressing);
   };
   auto sample = [](Vtu_ewa_sim& d) {
     const uint32_t c = d.rgba_o;

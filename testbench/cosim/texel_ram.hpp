@@ -1,6 +1,8 @@
 // Texture layout of the texel RAM model (rtl/top/tu_texel_ram.sv, addressed by tu_texel_addr):
 // RGBA8 words r | g << 8 | b << 16 | a << 24, every mip level of a texture one after another from
-// level 0, row-major. load() writes a texture at `base` through the RAM's write port.
+// level 0, row-major, after one word holding the border colour: texture_words(t) loaded at A puts
+// the texture's base (level 0) at A + 1 (tex::texel_addr). load_words() writes words through
+// the RAM's write port.
 #pragma once
 
 #include <cstdint>
@@ -18,10 +20,14 @@ inline img::Rgba8 unpack_rgba(uint32_t w) {
   return {uint8_t(w), uint8_t(w >> 8), uint8_t(w >> 16), uint8_t(w >> 24)};
 }
 inline std::vector<uint32_t> texture_words(const tex::Texture& t) {
-  std::vector<uint32_t> w;
+  std::vector<uint32_t> w = {pack_rgba(t.addressing.border)};  // at base - 1 (tex::texel_addr)
   for (const auto& lv : t.levels)
     for (const auto& p : lv.px) w.push_back(pack_rgba(p));
   return w;
+}
+// tu_texel_addr wrap_i: {v, u} Wrap codes.
+inline uint8_t wrap_code(const tex::Addressing& a) {
+  return static_cast<uint8_t>(static_cast<int>(a.u) | static_cast<int>(a.v) << schema::kWrapW);
 }
 inline int log2_size(int n) {  // n: a power of two
   int l = 0;

@@ -32,7 +32,7 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 
 // Row layout of one span (two words for each 112-bit numerator constant).
 enum : size_t {
-  kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kClamp,
+  kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kWrap,
   kWsrc, kCap, kFilt, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
   kRdm, kDlayers, kDbase, kRowSize
 };
@@ -75,7 +75,7 @@ void drive(V& d, const Row& r) {
   d.tbase_i = static_cast<uint32_t>(r[kBase]);
   d.tlw_i = static_cast<uint8_t>(r[kLw]);
   d.tlh_i = static_cast<uint8_t>(r[kLh]);
-  d.tclamp_i = static_cast<uint8_t>(r[kClamp]);
+  d.twrap_i = static_cast<uint8_t>(r[kWrap]);
   d.wsrc_i = static_cast<uint8_t>(r[kWsrc]);
   d.cap_i = static_cast<uint32_t>(r[kCap]);
   d.filt_i = static_cast<uint8_t>(r[kFilt]);
@@ -169,7 +169,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   std::vector<uint32_t> ram, depth_ram;
   for (size_t oi = 0; oi < s.objects.size(); ++oi) {
     const auto& ob = s.objects[oi];
-    Obj x{scene::build_texture(s, s.materials.at(ob.material).texture), ram.size(), {}, std::nullopt, 0, 0};
+    Obj x{scene::build_texture(s, s.materials.at(ob.material).texture), ram.size() + 1, {}, std::nullopt, 0, 0};  // after its border word
     if (o.relief && s.materials.at(ob.material).relief) {
       x.maps = relief::make_maps(s, ob.material);
       x.hbase = depth_ram.size();
@@ -242,7 +242,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       r[kBase] = ob.base;
       r[kLw] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].width));
       r[kLh] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].height));
-      r[kClamp] = ob.tex.wrap == tex::Wrap::Clamp;
+      r[kWrap] = wrap_code(ob.tex.addressing);
       r[kWsrc] = static_cast<uint64_t>(o.weights.value_or(m.weights));
       r[kCap] = ewa::kDefaultMaxTexels;
       const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(c.object)].material);

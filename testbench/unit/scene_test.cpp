@@ -94,6 +94,27 @@ TEST(Scene, FootprintVariant) {
             "s.json: /footprint: 'ewa' is not one of: analytic, recurrence");
 }
 
+// Wrap modes: `wrap` for both axes, `wrap_u` / `wrap_v` per axis, `border` an RGBA colour.
+TEST(Scene, WrapModesPerAxisAndBorder) {
+  const Scene d = default_scene();
+  EXPECT_EQ(d.textures.at("checker").addressing.u, tu::tex::Wrap::Repeat);
+  const std::string at = "\"builtin\": \"bricks\", \"size\": 256, \"wrap\": \"repeat\"";
+  const Scene s = parse(edited(at, "\"builtin\": \"bricks\", \"size\": 256, \"wrap\": \"mirror\", \"wrap_v\": \"border\", "
+                               "\"border\": [1, 2, 3, 4]"),
+                        "s.json", ".");
+  const auto& a = s.textures.at("bricks").addressing;
+  EXPECT_EQ(a.u, tu::tex::Wrap::Mirror);
+  EXPECT_EQ(a.v, tu::tex::Wrap::Border);
+  EXPECT_EQ(a.border, (tu::img::Rgba8{1, 2, 3, 4}));
+  EXPECT_EQ(build_texture(s, "bricks").addressing.v, tu::tex::Wrap::Border);
+  EXPECT_EQ(error_of(edited(at, "\"builtin\": \"bricks\", \"size\": 256, \"wrap_u\": \"spiral\"")),
+            "s.json: /textures/bricks/wrap_u: 'spiral' is not one of: repeat, mirror, clamp, border, mirror_once");
+  EXPECT_EQ(error_of(edited(at, "\"builtin\": \"bricks\", \"size\": 256, \"border\": [0, 0, 300, 0]")),
+            "s.json: /textures/bricks/border/2: expected an integer in [0, 255]");
+  EXPECT_EQ(error_of(edited(at, "\"builtin\": \"bricks\", \"size\": 256, \"border\": [0, 0.5, 0, 0]")),
+            "s.json: /textures/bricks/border/1: expected an integer in [0, 255]");
+}
+
 TEST(Scene, MissingFileAndPngTextureRelativeToTheScene) {
   EXPECT_THROW(load("/nonexistent/scene.json"), SceneError);
   const auto dir = std::filesystem::temp_directory_path() / "tu_scene_test";

@@ -58,6 +58,75 @@ TEST(Texture, WrapModes) {
   EXPECT_EQ(c.fetch(0, 100, 100), c.levels[0].at(7, 7));
 }
 
+TEST(Texture, WrapIndexMatchesGlRules) {
+  // Exhaustive over every axis length 2^0..2^12 and every coordinate within three repeats on
+  // either side (plus one), each mode: the integer rules equal the GL definitions in double.
+  int64_t n_checked = 0;
+  for (int l = 0; l < fmt::kTexMaxLevels; ++l) {
+    const int64_t n = int64_t(1) << l;
+    for (int m = 0; m < 5; ++m) {
+      const Wrap w = Wrap(m);
+      for (int64_t x = -3 * n - 1; x <= 3 * n + 1; ++x, ++n_checked)
+        ASSERT_EQ(wrap_index(x, l, w), wrap_index_ref(double(x), int(n), w)) << "l " << l << " mode " << m << " x " << x;
+    }
+  }
+  std::printf("wrap_index = GL rules on %lld (size, mode, x) cases\n", static_cast<long long>(n_checked));
+  // The whole int64 range is defined (no overflow): the extremes wrap, clamp or mirror as stated.
+  for (int l : {0, 5, 12}) {
+    const int64_t m = (int64_t(1) << l) - 1;
+    for (int64_t x : {INT64_MIN, INT64_MIN + 1, INT64_MAX}) {
+      EXPECT_EQ(wrap_index(x, l, Wrap::Repeat), x & m);
+      EXPECT_EQ(wrap_index(x, l, Wrap::Clamp), x < 0 ? 0 : m);
+      EXPECT_EQ(wrap_index(x, l, Wrap::Border), -1);
+      EXPECT_EQ(wrap_index(x, l, Wrap::MirrorOnce), m);  // |x| far beyond the edge
+      const int64_t mi = wrap_index(x, l, Wrap::Mirror);
+      EXPECT_TRUE(mi >= 0 && mi <= m);
+    }
+  }
+  // Mirror once: -1 -> 0, -2 -> 1 (mirrored about -1/2), then clamped.
+  EXPECT_EQ(wrap_index(-1, 3, Wrap::MirrorOnce), 0);
+  EXPECT_EQ(wrap_index(-2, 3, Wrap::MirrorOnce), 1);
+  EXPECT_EQ(wrap_index(-20, 3, Wrap::MirrorOnce), 7);
+  // Mirrored repeat: 8 -> 7, 15 -> 0, 16 -> 0, -1 -> 0, -9 -> 7 on 8 texels.
+  for (auto [x, i] : {std::pair<int64_t, int64_t>{8, 7}, {15, 0}, {16, 0}, {-1, 0}, {-9, 7}})
+    EXPECT_EQ(wrap_index(x, 3, Wrap::Mirror), i) << x;
+}
+
+TEST(Texture, PerAxisWrapAndBorderColour) {
+  const Rgba8 border{1, 2, 3, 4};
+  const auto t = Texture::build("t", noise(8, 4, 7), Addressing{Wrap::Border, Wrap::Mirror, border});
+  EXPECT_EQ(t.fetch(0, -1, 0), border);
+  EXPECT_EQ(t.fetch(0, 8, 2), border);
+  EXPECT_EQ(t.fetch(0, 3, 4), t.levels[0].at(3, 3));   // v mirrored
+  EXPECT_EQ(t.fetch(0, 3, -1), t.levels[0].at(3, 0));
+  EXPECT_EQ(t.fetch(1, 4, 0), border);                 // level 1 is 4 wide
+  EXPECT_EQ(t.fetch(1, 3, 2), t.levels[1].at(3, 1));   // level 1 is 2 high: 2 mirrors to 1
+  // Bilinear across the border edge blends with the border colour (GL CLAMP_TO_BORDER).
+  const Rgba8 half = bilinear(t, 0, 0, (kUnit * 3) / 2);  // u = 0: halfway between texel -1 and 0
+  const Rgba8 in = t.levels[0].at(0, 1);
+  EXPECT_EQ(half.r, (border.r + in.r + 1) / 2);
+}
+
+TEST(Texture, TexelAddrFollowsTheLayout) {
+  // Level L texel (x, y) of a 2^lw x 2^lh pyramid at base: the levels one after another,
+  // row-major; border texels read base - 1; 2^TexAddrW wraps.
+  for (auto [lw, lh] : {std::pair{3, 1}, {0, 4}, {12, 12}}) {
+    const uint64_t base = 1000;
+    uint64_t lbase = base;
+    for (int level = 0; level <= std::max(lw, lh); ++level) {
+      const int wl = std::max(0, lw - level), hl = std::max(0, lh - level);
+      const Addressing rep{};
+      EXPECT_EQ(texel_addr(base, lw, lh, rep, level, 0, 0), lbase);
+      EXPECT_EQ(texel_addr(base, lw, lh, rep, level, (1 << wl) - 1, (1 << hl) - 1), lbase + (uint64_t(1) << (wl + hl)) - 1);
+      EXPECT_EQ(texel_addr(base, lw, lh, rep, level, -1, 0), lbase + (uint64_t(1) << wl) - 1);
+      EXPECT_EQ(texel_addr(base, lw, lh, Addressing{Wrap::Clamp, Wrap::Border, {}}, level, 0, -1), base - 1);
+      lbase += uint64_t(1) << (wl + hl);
+    }
+    EXPECT_EQ(lbase - base, pyramid_words(lw, lh));
+  }
+  EXPECT_EQ(texel_addr(0, 2, 2, Addressing{Wrap::Border, Wrap::Border, {}}, 0, 4, 0), (uint64_t(1) << fmt::kTexAddrW) - 1);
+}
+
 TEST(Texture, NearestAndBilinearHitTexelCentresExactly) {
   const auto t = Texture::build("n", noise(8, 8, 3), Wrap::Repeat);
   for (int y = 0; y < 8; ++y) {
@@ -72,8 +141,8 @@ TEST(Texture, NearestAndBilinearHitTexelCentresExactly) {
 TEST(Texture, BilinearWithinItsBoundOfTheFloatReference) {
   // Every sub-texel position of a whole 4x4 texture (and beyond its edges, wrapping), level 0
   // and level 1: weights are exact at TexWeightF = TexUvF, so only the final rounding remains.
-  for (Wrap w : {Wrap::Repeat, Wrap::Clamp}) {
-    const auto t = Texture::build("b", noise(4, 4, 4), w);
+  for (Wrap w : {Wrap::Repeat, Wrap::Mirror, Wrap::Clamp, Wrap::Border, Wrap::MirrorOnce}) {
+    const auto t = Texture::build("b", noise(4, 4, 4), Addressing{w, w, {9, 99, 199, 250}});
     for (int level = 0; level < 2; ++level) {
       double max_err = 0;
       for (int64_t v = -kUnit; v < 5 * kUnit; v += 3) {

@@ -79,6 +79,9 @@ case $case in
     grep -q "localparam bit HasRelief = 1'b0;" "$tmp/tu_unit_cfg_pkg.sv" || fail "HasRelief"
     grep -q "localparam bit HasBilinear = 1'b1;" "$tmp/tu_unit_cfg_pkg.sv" || fail "HasBilinear"
     grep -q "localparam bit HasTriFilter = 1'b0;" "$tmp/tu_unit_cfg_pkg.sv" || fail "HasTriFilter"
+    # Its one texture clamps: the texel addressing keeps repeat and clamp only (bits 0 and 2).
+    grep -q "localparam logic \[4:0\] WrapModes = 5'd5;" "$tmp/tu_unit_cfg_pkg.sv" || fail "WrapModes"
+    [ "$(val "$tmp/p.json" "d['wrap_modes']")" = "['repeat', 'clamp']" ] || fail "wrap_modes $(cat "$tmp/p.json")"
     # Exact scene cycles (texture path): bilinear on every span is cheaper than the authored EWA.
     [ "$(val "$tmp/p.json" "0 < d['scene_cycles']['specialised'] < d['scene_cycles']['full']")" = True ] || fail "scene cycles"
     # The package lints (-Wall) as the RTL top would read it.
@@ -86,8 +89,10 @@ case $case in
 module tu_cfg_user (
   output logic [9:0]  has_o,
   output logic [2:0]  wsrc_o,
-  output logic [31:0] sizes_o
+  output logic [31:0] sizes_o,
+  output logic [4:0]  wrap_o
 );
+  assign wrap_o = tu_unit_cfg_pkg::WrapModes;
   assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasTriFilter, tu_unit_cfg_pkg::HasNearest, tu_unit_cfg_pkg::HasRelief,
                   tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax, tu_unit_cfg_pkg::HasShading, tu_unit_cfg_pkg::EllRecurrence};
   assign wsrc_o = tu_unit_cfg_pkg::WeightSources;

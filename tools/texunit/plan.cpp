@@ -305,6 +305,7 @@ struct Config {
   bool shading = false;
   brdf::Model shade_model = shading::kUnitModel;
   bool distance_map = false;  // the distance-map tracer (tu_dm_trace) in the relief stage
+  int wrap_modes = 31;  // bit = tex::Wrap code: the modes some texture uses (repeat always)
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -331,6 +332,8 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam int ShadeModel = " << static_cast<int>(c.shade_model) << ";  // " << brdf::name(c.shade_model) << "\n"
      << "  localparam bit EllRecurrence = 1'b" << c.ell_recurrence
      << ";  // B2: 0 analytic (tu_ellipse), 1 seed recurrences (tu_ellipse_rec)\n"
+     << "  // texel addressing (tu_texel_addr): bit = tu_formats_pkg::Wrap* code, 1 = the mode is built\n"
+     << "  localparam logic [4:0] WrapModes = 5'd" << c.wrap_modes << ";\n"
      << "endpackage\n";
   return sv.str();
 }
@@ -644,6 +647,15 @@ int run(const Options& opt) {
   Config planned_shaded = planned;
   planned_shaded.shading = shade;
   planned_shaded.distance_map = dist_map;
+  // Wrap modes (tu_texel_addr): repeat always, another mode when a texture an object samples uses it.
+  planned_shaded.wrap_modes = 1;
+  std::vector<std::string> wrap_names;
+  for (const auto& o : s.objects) {
+    const auto& a = s.textures.at(s.materials.at(o.material).texture).addressing;
+    planned_shaded.wrap_modes |= 1 << static_cast<int>(a.u) | 1 << static_cast<int>(a.v);
+  }
+  for (int k = 0; k < 5; ++k)
+    if (planned_shaded.wrap_modes >> k & 1) wrap_names.push_back(scene::kWrapNames[k]);
   if (brdf_row) planned_shaded.shade_model = shading::model_of(brdf_row->variant);
   // The full unit: F_MSH (the thesis's model) when the scene does not need another.
   const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n,
@@ -686,6 +698,7 @@ int run(const Options& opt) {
               {"relief_methods", relief_json},
               {"shading", shade ? json({{"model", brdf_row->name()}, {"why", shade_why}, {"latency_cycles", brdf_row->latency}})
                                 : json(false)},
+              {"wrap_modes", wrap_names},
               {"persp", persp->name()},
               {"weights", weights ? json(weights->name()) : json(nullptr)},
               {"weights_db", weights ? json(weight_render_db(*weights)) : json(nullptr)},
@@ -728,6 +741,9 @@ int run(const Options& opt) {
     if (on) relief_engines += (relief_engines.empty() ? "" : " + ") + std::string(name);
   std::printf("relief: %s\n", relief ? relief_engines.c_str() : "none (no relief hardware)");
   if (!relief_why.empty()) std::printf("relief methods (PSNR vs the float reference, relief stage cycles):\n%s\n", relief_why.c_str());
+  std::string wraps;
+  for (const auto& w : wrap_names) wraps += (wraps.empty() ? "" : ", ") + w;
+  std::printf("wrap modes: %s (the texel addressing leaves out the others)\n", wraps.c_str());
   std::printf("persp: %s, max %.4g texel\n", persp->name().c_str(), persp->max_abs);
   std::printf("shading: %s\n", shade ? (brdf_row->name() + ", " + shade_why).c_str() : shade_why.c_str());
   if (weights) std::printf("weights: %s, %.2f dB (%s); clip volume: %s, %.2f dB (C-model EWA render with border "

@@ -1,6 +1,7 @@
 #include "texture.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -15,10 +16,8 @@ constexpr int64_t kOne = int64_t(1) << kWF;
 
 bool pow2(int x) { return x > 0 && (x & (x - 1)) == 0; }
 
-int64_t wrap_coord(int64_t x, int size, Wrap w) {
-  if (w == Wrap::Clamp) return std::clamp<int64_t>(x, 0, size - 1);
-  return x & (size - 1);  // power of two: also right for negative x (two's complement)
-}
+int log2_of(int size) { return std::countr_zero(static_cast<unsigned>(size)); }  // a power of two
+int level_log2(int l0, int level) { return std::max(0, l0 - level); }
 
 uint8_t ch(const Rgba8& c, int i) { return i == 0 ? c.r : i == 1 ? c.g : i == 2 ? c.b : c.a; }
 void set_ch(Rgba8& c, int i, uint8_t v) { (i == 0 ? c.r : i == 1 ? c.g : i == 2 ? c.b : c.a) = v; }
@@ -29,6 +28,50 @@ thread_local uint64_t trace_base = 0;
 // Level-L position u / 2^L - 1/2, exact: kUvF + level fraction bits.
 int64_t level_pos(int64_t u, int level) { return u - (int64_t(1) << (kUvF + level - 1)); }
 }  // namespace
+
+int64_t wrap_index(int64_t x, int l, Wrap w) {
+  const int64_t m = (int64_t(1) << l) - 1;
+  switch (w) {
+    case Wrap::Repeat: return x & m;
+    case Wrap::Mirror: return ((x >> l) & 1) ? ~x & m : x & m;
+    case Wrap::Clamp: return std::clamp<int64_t>(x, 0, m);
+    case Wrap::Border: return x >= 0 && x <= m ? x : -1;
+    case Wrap::MirrorOnce: return std::min(x < 0 ? ~x : x, m);
+  }
+  return x & m;
+}
+
+int64_t wrap_index_ref(double i, int size, Wrap w) {
+  const double n = size;
+  auto mod = [](double a, double b) { return a - b * std::floor(a / b); };
+  auto mirror = [](double a) { return a >= 0 ? a : -(1 + a); };
+  double r = 0;
+  switch (w) {
+    case Wrap::Repeat: r = mod(i, n); break;
+    case Wrap::Mirror: r = (n - 1) - mirror(mod(i, 2 * n) - n); break;
+    case Wrap::Clamp: r = std::clamp(i, 0.0, n - 1); break;
+    case Wrap::Border: r = i >= 0 && i < n ? i : -1; break;
+    case Wrap::MirrorOnce: r = std::clamp(mirror(i), 0.0, n - 1); break;
+  }
+  return static_cast<int64_t>(r);
+}
+
+uint64_t pyramid_words(int lw, int lh) {
+  uint64_t n = 0;
+  for (int k = 0; k <= std::max(lw, lh); ++k) n += uint64_t(1) << (level_log2(lw, k) + level_log2(lh, k));
+  return n;
+}
+
+uint64_t texel_addr(uint64_t base, int lw, int lh, const Addressing& a, int level, int64_t x, int64_t y) {
+  const uint64_t mask = (uint64_t(1) << fmt::kTexAddrW) - 1;
+  const int wl = level_log2(lw, level), hl = level_log2(lh, level);
+  const int64_t xi = wrap_index(x, wl, a.u), yi = wrap_index(y, hl, a.v);
+  if (xi < 0 || yi < 0) return (base - 1) & mask;
+  uint64_t lbase = 0;  // levels k < L, as the RTL's loop (k < TexMaxLevels)
+  for (int k = 0; k < std::min(level, fmt::kTexMaxLevels); ++k)
+    lbase += uint64_t(1) << (level_log2(lw, k) + level_log2(lh, k));
+  return (base + lbase + (static_cast<uint64_t>(yi) << wl) + static_cast<uint64_t>(xi)) & mask;
+}
 
 Rgba8Image downsample(const Rgba8Image& im) {
   const int w = std::max(1, im.width / 2), h = std::max(1, im.height / 2);
@@ -47,7 +90,7 @@ Rgba8Image downsample(const Rgba8Image& im) {
   return out;
 }
 
-Texture Texture::build(const std::string& name, Rgba8Image base, Wrap wrap) {
+Texture Texture::build(const std::string& name, Rgba8Image base, Addressing a) {
   if (base.width <= 0 || base.height <= 0)
     throw std::invalid_argument(name + ": empty texture");
   if (!pow2(base.width) || !pow2(base.height))
@@ -60,7 +103,7 @@ Texture Texture::build(const std::string& name, Rgba8Image base, Wrap wrap) {
                                 " texels on a side");
   Texture t;
   t.name = name;
-  t.wrap = wrap;
+  t.addressing = a;
   t.levels.push_back(std::move(base));
   while (t.levels.back().width > 1 || t.levels.back().height > 1)
     t.levels.push_back(downsample(t.levels.back()));
@@ -79,13 +122,18 @@ TexelTrace::~TexelTrace() {
 Rgba8 Texture::fetch(int level, int64_t x, int64_t y) const {
   const size_t l = static_cast<size_t>(std::clamp(level, 0, num_levels() - 1));
   const auto& im = levels[l];
-  const int xi = static_cast<int>(wrap_coord(x, im.width, wrap)), yi = static_cast<int>(wrap_coord(y, im.height, wrap));
+  const int64_t xi = wrap_index(x, log2_of(im.width), addressing.u);
+  const int64_t yi = wrap_index(y, log2_of(im.height), addressing.v);
+  if (xi < 0 || yi < 0) {  // the border word, at base - 1 (tu_texel_addr)
+    if (trace_out) trace_out->push_back(trace_base - 1);
+    return addressing.border;
+  }
   if (trace_out) {
     uint64_t a = trace_base;
     for (size_t k = 0; k < l; ++k) a += uint64_t(levels[k].width) * uint64_t(levels[k].height);
     trace_out->push_back(a + uint64_t(yi) * uint64_t(im.width) + uint64_t(xi));
   }
-  return im.at(xi, yi);
+  return im.at(static_cast<int>(xi), static_cast<int>(yi));
 }
 
 Rgba8Image checkerboard(int size, int cells, Rgba8 a, Rgba8 b) {

@@ -19,25 +19,52 @@
 
 #include "texunit/formats.hpp"
 #include "texunit/image.hpp"
+#include "texunit/schema.hpp"
 
 namespace tu::tex {
 
 using img::Rgba8;
 using img::Rgba8Image;
 
-enum class Wrap { Repeat, Clamp };
+// Wrap (address) mode of one axis: schema.hpp TU_WRAP_CODES, the RTL's Wrap* codes.
+using Wrap = schema::Wrap;
+
+// Texel index along one axis of a level 2^l texels long, for any integer texel coordinate x
+// (negative included, the whole int64 range: no overflow), or -1 for the border colour
+// (Wrap::Border outside [0, 2^l - 1]). Exact integer rules, the ones tu_texel_addr implements:
+//   Repeat      x & m                         (m = 2^l - 1; two's complement: right for x < 0)
+//   Mirror      bit l of x ? ~x & m : x & m   (period 2^(l+1), mirrored every other repeat)
+//   Clamp       clamp(x, 0, m)
+//   Border      x in [0, m] ? x : -1
+//   MirrorOnce  clamp(x < 0 ? ~x : x, 0, m)   (~x = -1 - x: the texel mirrored about -1/2)
+int64_t wrap_index(int64_t x, int l, Wrap w);
+// Float reference: the OpenGL 4.6 definitions (§8.14.2, Table 8.20: mirror(a) = a >= 0 ? a :
+// -(1 + a); MIRRORED_REPEAT (size - 1) - mirror((i mod 2 size) - size); ...) evaluated in double
+// on an integer-valued i (|i| < 2^52), -1 for the border colour. Test: Texture.WrapIndexMatchesGlRules.
+int64_t wrap_index_ref(double i, int size, Wrap w);
+
+// Sampler address state of a texture: the wrap mode of each axis and the border colour.
+struct Addressing {
+  Wrap u = Wrap::Repeat, v = Wrap::Repeat;
+  Rgba8 border{0, 0, 0, 0};
+  bool uses(Wrap w) const { return u == w || v == w; }
+};
 
 // A power-of-two RGBA8 texture with its box-filtered mip pyramid (level 0 = base, down to 1x1
 // along the longer side; a 1-wide side stays 1). Throws std::invalid_argument naming `name` for
 // an empty or non-power-of-two image, or one larger than 2^(TexMaxLevels-1).
 struct Texture {
   std::string name;
-  Wrap wrap = Wrap::Repeat;
+  Addressing addressing;
   std::vector<Rgba8Image> levels;
 
-  static Texture build(const std::string& name, Rgba8Image base, Wrap wrap);
+  static Texture build(const std::string& name, Rgba8Image base, Addressing a);
+  static Texture build(const std::string& name, Rgba8Image base, Wrap wrap) {  // both axes, black border
+    return build(name, std::move(base), Addressing{wrap, wrap, {}});
+  }
   int num_levels() const { return static_cast<int>(levels.size()); }
-  // Texel with the wrap mode applied (any integer coordinates, negative included).
+  // Texel with the wrap modes applied (any integer coordinates, negative included); the border
+  // colour when either axis is Wrap::Border and outside the level.
   Rgba8 fetch(int level, int64_t x, int64_t y) const;
 };
 
@@ -55,6 +82,15 @@ class TexelTrace {
   std::vector<uint64_t>* prev_out_;
   uint64_t prev_base_;
 };
+// Texel-RAM layout (tu_texel_addr, the co-simulation's texel RAM): one word holding the border
+// colour at base - 1, then the levels of a 2^lw x 2^lh texture one after another from level 0 at
+// base, row-major: pyramid_words = sum over levels k <= max(lw, lh) of 2^(max(0, lw - k) + max(0, lh - k)).
+uint64_t pyramid_words(int lw, int lh);
+// The word address tu_texel_addr computes for level L texel (x, y), modulo 2^TexAddrW:
+// base + levelbase(L) + y' 2^wl + x' with (x', y') = wrap_index per axis at the level's size, or
+// base - 1 (the border word) when either axis gives -1. level in [0, 15]; a level above the top
+// is addressed past the pyramid as the RTL does (engines never issue one).
+uint64_t texel_addr(uint64_t base, int lw, int lh, const Addressing& a, int level, int64_t x, int64_t y);
 
 // 2x2 box filter, round half up per channel (odd sizes never occur: power-of-two only).
 Rgba8Image downsample(const Rgba8Image& im);

@@ -85,8 +85,10 @@ struct TextureSpec {
   std::string png;      // resolved path
   int size = 256;
   int cells = 8;
-  tex::Wrap wrap = tex::Wrap::Repeat;
+  tex::Addressing addressing;  // fields wrap (both axes), wrap_u, wrap_v, border
 };
+// Scene names of the wrap modes, indexed by the tex::Wrap code.
+inline constexpr const char* kWrapNames[] = {"repeat", "mirror", "clamp", "border", "mirror_once"};
 
 struct Object {
   std::string name;

@@ -25,6 +25,14 @@
   X(Formula, 0, "Gaussian formula (tu_gauss_weight)")           \
   X(Table1d, 1, "1-D weight table over Q (tu_weight_table_1d)") \
   X(Table2d, 2, "2-D weight table over (xi, eta) (tu_weight_table_2d)")
+// Texture wrap (address) mode of one axis, the GL / Vulkan sampler modes (tex::Wrap, tu_texel_addr
+// wrap_i; SV tu_formats_pkg::WrapRepeat ...). Bit `code` of tu_unit_cfg_pkg::WrapModes keeps a mode.
+#define TU_WRAP_CODES(X)                                                                  \
+  X(Repeat, 0, "x mod size (GL_REPEAT)")                                                  \
+  X(Mirror, 1, "mirrored repeat, period 2 size (GL_MIRRORED_REPEAT)")                     \
+  X(Clamp, 2, "clamp to [0, size - 1] (GL_CLAMP_TO_EDGE)")                                \
+  X(Border, 3, "outside [0, size - 1]: the border colour (GL_CLAMP_TO_BORDER)")           \
+  X(MirrorOnce, 4, "clamp(x < 0 ? -1 - x : x) to [0, size - 1] (GL_MIRROR_CLAMP_TO_EDGE)")
 
 // ---- flag bits: X(Name, bit, description) ----
 // EWA filter output (ewa::fx::Flag, tu_ewa flags_o; SV tu_formats_pkg::EwaFlagUnitDisc ...).
@@ -51,7 +59,8 @@
   X(tbase, kTexAddrW, "colour texture: base word address in the texel RAM") \
   X(tlw, 4, "colour texture: log2 width")                              \
   X(tlh, 4, "colour texture: log2 height")                             \
-  X(tclamp, 1, "1: clamp, 0: wrap")                                    \
+  X(twrapu, kWrapW, "colour texture: wrap mode along u (Wrap* codes)")   \
+  X(twrapv, kWrapW, "colour texture: wrap mode along v (Wrap* codes)")   \
   X(wsrc, kWsrcW, "EWA weight source (Wsrc* codes)")                   \
   X(cap, kEwaCountW, "EWA texel cap")                                  \
   X(filt, kEngineW, "filter engine (Eng* codes)")
@@ -103,9 +112,11 @@ using namespace tu::fmt;
 #define TU_X_ENUM(name, code, desc) name = (code),
 enum class Engine { TU_ENGINE_CODES(TU_X_ENUM) };
 enum class WeightSource { TU_WEIGHT_SOURCE_CODES(TU_X_ENUM) };
+enum class Wrap { TU_WRAP_CODES(TU_X_ENUM) };
 #undef TU_X_ENUM
 inline constexpr int kEngineW = 2;
 inline constexpr int kWsrcW = 2;
+inline constexpr int kWrapW = 3;
 #define TU_X_COUNT(name, code, desc) +1
 inline constexpr int kEwaFlagW = 0 TU_EWA_FLAG_BITS(TU_X_COUNT);
 inline constexpr int kEllFlagW = 0 TU_ELL_FLAG_BITS(TU_X_COUNT);
@@ -116,6 +127,9 @@ static_assert(true TU_ENGINE_CODES(TU_X_MAX), "an engine code does not fit kEngi
 #undef W
 #define W kWsrcW
 static_assert(true TU_WEIGHT_SOURCE_CODES(TU_X_MAX), "a weight-source code does not fit kWsrcW");
+#undef W
+#define W kWrapW
+static_assert(true TU_WRAP_CODES(TU_X_MAX), "a wrap code does not fit kWrapW");
 #undef W
 #undef TU_X_MAX
 

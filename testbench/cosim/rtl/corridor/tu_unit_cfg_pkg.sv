@@ -20,4 +20,6 @@ package tu_unit_cfg_pkg;
   // brdf::Model code: 0 blinn, 1 schlick, 2 msh, 3 dsh, 4 scos2, 5 st16, 6 qr
   localparam int ShadeModel = 2;  // msh
   localparam bit EllRecurrence = 1'b0;  // B2: 0 analytic (tu_ellipse), 1 seed recurrences (tu_ellipse_rec)
+  // texel addressing (tu_texel_addr): bit = tu_formats_pkg::Wrap* code, 1 = the mode is built
+  localparam logic [4:0] WrapModes = 5'd1;
 endpackage
