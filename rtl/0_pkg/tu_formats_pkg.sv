@@ -230,10 +230,10 @@ package tu_formats_pkg;
   localparam int EllFlagMagnify = 4;  // minor_c < 1 texel: lod = 0
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
-  localparam int MaterialW = 56;  // material fields of a pixel
+  localparam int MaterialW = 57;  // material fields of a pixel
   localparam int ReliefW = 59;  // material relief fields
   localparam int TriW = 104;  // per-triangle footprint constants
-  localparam int FpixW = 81;  // pixel on its way to the filter
-  localparam int PixW = 140;  // pixel before the relief stage
+  localparam int FpixW = 82;  // pixel on its way to the filter
+  localparam int PixW = 141;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

@@ -19,4 +19,7 @@ package tu_unit_cfg_pkg;
   // brdf::Model code: 0 blinn, 1 schlick, 2 msh, 3 dsh, 4 scos2, 5 st16, 6 qr
   localparam int ShadeModel = 2;  // msh
   localparam bit EllRecurrence = 1'b0;  // B2: 0 analytic (tu_ellipse), 1 seed recurrences (tu_ellipse_rec)
+  localparam bit HasEwaClip = 1'b0;  // EWA sub-texel border weights (tu_ewa_border)
+  // clip volume: 0 mm_p1 (tu_clip_p1), 1 mm_p3 (tu_clip_horner), 2 mm_p3_estrin (tu_clip_estrin)
+  localparam int EwaClipVariant = 0;  // mm_p1
 endpackage
