@@ -353,6 +353,8 @@ int main(int argc, char** argv) {
       ->check(tu::cli::non_negative_integer() & CLI::Range(1ull, 1ull << 26));
   rep->add_option("--yosys-cache", ro.yosys_cache, "JSON cache of Yosys results (keyed by the RTL files' hash)");
   rep->add_flag("--no-yosys", no_yosys, "do not synthesise (cells: not measured)");
+  rep->add_flag("--yosys-cached-only", ro.yosys_cached_only,
+                "take cells from matching --yosys-cache entries only; never synthesise (stale: not measured)");
   rep->add_option("--stdcell-cache", ro.stdcell_cache, "standard-cell results (texunit stdcell); read only");
   rep->add_option("--root", ro.root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
   rep->add_option("--shard", shard_text, "measure the block groups i with i % N == K (groups in report order)")
