@@ -316,15 +316,26 @@ void finish(const PixelSetup& su, const tex::Texture& t, const Sums& s, Out* out
                 static_cast<uint8_t>(channel(s.acc[2], r)), static_cast<uint8_t>(channel(s.acc[3], r))};
 }
 
-Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool direct, WalkStats* st) {
+Out walk_out(const PixelSetup& su) {
   Out out;
   out.level = su.level;
   out.flags = su.flags;
   out.capped = (su.flags & kCapped) != 0;
-  // Q(du, dv) = A du^2 + B du dv + C dv^2 in the frame coefficients (exact).
-  const int64_t A = int64_t(su.kxu) * su.kxu + int64_t(su.kyu) * su.kyu;
-  const int64_t B = 2 * (int64_t(su.kxu) * su.kxv + int64_t(su.kyu) * su.kyv);
-  const int64_t ddq = 2 * A * kStep * kStep;
+  return out;
+}
+
+QuadForm quad_form(const PixelSetup& su) {
+  QuadForm f;
+  f.a = int64_t(su.kxu) * su.kxu + int64_t(su.kyu) * su.kyu;
+  f.b = 2 * (int64_t(su.kxu) * su.kxv + int64_t(su.kyu) * su.kyv);
+  f.ddq = 2 * f.a * kStep * kStep;
+  return f;
+}
+
+Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool direct, WalkStats* st) {
+  Out out = walk_out(su);
+  const QuadForm qf = quad_form(su);
+  const int64_t A = qf.a, B = qf.b, ddq = qf.ddq;
   Sums sums;
   uint64_t* const acc = sums.acc;
   for (int64_t y = su.y0; y <= su.y1; ++y) {

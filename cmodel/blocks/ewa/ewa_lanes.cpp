@@ -14,13 +14,9 @@ uint64_t lane_blocks(int64_t x0, int64_t x1, int64_t y0, int64_t y1) {
 }
 
 Out walk_lanes(const PixelSetup& su, const tex::Texture& t, const Config& cfg, LaneStats* st) {
-  Out out;
-  out.level = su.level;
-  out.flags = su.flags;
-  out.capped = (su.flags & kCapped) != 0;
-  const int64_t A = int64_t(su.kxu) * su.kxu + int64_t(su.kyu) * su.kyu;
-  const int64_t B = 2 * (int64_t(su.kxu) * su.kxv + int64_t(su.kyu) * su.kyv);
-  const int64_t ddq = 2 * A * kStep * kStep;
+  Out out = walk_out(su);
+  const QuadForm qf = quad_form(su);
+  const int64_t A = qf.a, B = qf.b, ddq = qf.ddq;
   Sums sums;
   struct Lane {
     int64_t x, y, xi, eta, q, d;  // d = Q(x + 2) - Q(x)

@@ -35,6 +35,13 @@ struct Sums {
   uint64_t wsum = 0;
 };
 void finish(const PixelSetup& su, const tex::Texture& t, const Sums& s, Out* out);
+// A walk's Out before its texels (level, set-up flags, capped), and Q(du, dv) = A du^2 + B du dv +
+// C dv^2 in the frame coefficients (exact) with ddq = 2 A 2^(2 EwaPosF), Q's second difference along x.
+Out walk_out(const PixelSetup& su);
+struct QuadForm {
+  int64_t a = 0, b = 0, ddq = 0;
+};
+QuadForm quad_form(const PixelSetup& su);
 
 // Blocks (walk clocks) of a box at K = 4: aligned 2 x 2 blocks covering [x0, x1] x [y0, y1].
 uint64_t lane_blocks(int64_t x0, int64_t x1, int64_t y0, int64_t y1);
