@@ -12,7 +12,8 @@
 //   SQ      1         radicands ceil(((a c)^2 + (b s)^2) / 2^2Sh) (Sh = E2F + CsF - PosF)
 //   ROOT    RootW/S   two square roots, S bits per clock: h = ceil(sqrt(.)) = the C model's
 //                     ceil(ceil(sqrt(x)) / 2^Sh)
-//   BOX     1         hu = h + h/64 + 1 (margin), x0 = ceil(cu - hu), x1 = floor(cu + hu), y likewise
+//   BOX     1         hu = h + h/64 + 1 (margin) (+ 1/2 texel with border weights: clip_i),
+//                     x0 = ceil(cu - hu), x1 = floor(cu + hu), y likewise
 //   CAP     1         box = (x1-x0+1)(y1-y0+1); box > cap and L < top -> L+1, capped, AX again
 //   START   2         walk start values (row y0, column x0): xi, eta, Q and the first and second
 //                     differences of Q along x and along y (exact integers)
@@ -41,6 +42,7 @@ module tu_ewa_setup #(
   input  logic                                  guard_i,    // B1 guard: no coordinates
   input  logic [3:0]                            top_i,      // top mip level = max(lw, lh)
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
+  input  logic                                  clip_i,     // border weights: the box grows
   // record for the walker
   output logic                                  rec_valid_o,
   input  logic                                  rec_ready_i,
@@ -110,6 +112,7 @@ module tu_ewa_setup #(
   logic [3:0]           lodi_q, top_q, lev_q;
   logic                 unit_q, guard_q;
   logic [NW-1:0]        cap_q;
+  logic                 clip_q;
   logic [4:0] fl_q;
 
   assign in_ready_o  = st_q == StIdle;
@@ -240,8 +243,9 @@ module tu_ewa_setup #(
   always_comb begin
     hhu = (RootW+2)'(rootu_q) + (RootW+2)'(remu_q != '0);
     hhv = (RootW+2)'(rootv_q) + (RootW+2)'(remv_q != '0);
-    hu = hhu + (hhu >> PosF) + (RootW+2)'(1);
-    hv = hhv + (hhv >> PosF) + (RootW+2)'(1);
+    // border texels up to 1/2 texel outside the ellipse (ewa::fx::kBorderGrow)
+    hu = hhu + (hhu >> PosF) + (RootW+2)'(1) + (clip_q ? (RootW+2)'(Step / 2) : '0);
+    hv = hhv + (hhv >> PosF) + (RootW+2)'(1) + (clip_q ? (RootW+2)'(Step / 2) : '0);
     x0_d = -(($signed(32'(hu)) - cu_q) >>> PosF);  // ceil((cu - hu) / 2^PosF)
     x1_d = (cu_q + $signed(32'(hu))) >>> PosF;
     y0_d = -(($signed(32'(hv)) - cv_q) >>> PosF);
@@ -302,6 +306,7 @@ module tu_ewa_setup #(
         lodi_q <= lod_i[tu_formats_pkg::EllLodW-1 -: 4];
         top_q  <= top_i;
         cap_q  <= cap_i;
+        clip_q <= clip_i;
         unit_q <= eflags_i[tu_formats_pkg::EllFlagHorizon] || ($signed(lmaj_i) == LogNegInf);
         guard_q <= guard_i;
         // B1 guard: the 1x1 top level's texel (0, 0), no walk (render_cmodel)

@@ -10,10 +10,18 @@
 // then normalisation: wsum leading-one normalised to EwaNrmW bits, tu_recip_core (4 stages),
 // channel = min(255, round_half_up(acc_c R 2^-(RecipOutF + p))); wsum = 0 -> the nearest texel
 // at level L (flag kNoWeight).
-// Cycles per pixel from the record hand-over (no back-pressure): 1 + box + 5 + 6, output valid in
-// the last (wsum = 0: 1 + box + 5 + 1 + 2; B1-guard record: 1 + 2, the single texel).
+// Border weights (HasClip, a pixel with clip_i; docs/blocks/ewa.md "Border weights"): at P5 the
+// texel's Q, xi, eta (delayed from P0), the frame k = d(xi, eta) / 2^PosF and the weight enter
+// tu_ewa_border (ClipVariant); its weight replaces P5's, the texel read is issued BorderLat
+// clocks later to meet it, and the drain grows by BorderLat.
+// Cycles per pixel from the record hand-over (no back-pressure): 1 + box + 5 (+ BorderLat) + 6,
+// output valid in the last (wsum = 0: 1 + box + 5 (+ BorderLat) + 1 + 2; B1-guard record: 1 + 2,
+// the single texel).
 `include "tu_assert.svh"
-module tu_ewa_walk (
+module tu_ewa_walk #(
+  parameter int HasClip     = 0,  // tu_ewa_border in (a pixel's clip_i then selects it)
+  parameter int ClipVariant = 0   // its clip volume: 0 mm_p1, 1 mm_p3 Horner, 2 mm_p3 Estrin
+) (
   input  logic                                     clk_i,
   input  logic                                     rst_ni,
   input  logic                                     rec_valid_i,
@@ -45,6 +53,7 @@ module tu_ewa_walk (
   input  logic [3:0]                               lh_i,
   input  logic [2*tu_formats_pkg::WrapW-1:0]       wrap_i,  // {v, u} Wrap* codes (tu_texel_addr)
   input  logic [1:0]                               wsrc_i,
+  input  logic                                     clip_i,   // border weights for this pixel
   output logic                                     tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]      tex_addr_o,
   input  logic [31:0]                              tex_data_i,
@@ -69,12 +78,22 @@ module tu_ewa_walk (
   localparam int RW   = tu_formats_pkg::RecipOutW;
   localparam int NW   = tu_formats_pkg::EwaCountW;
   localparam int AW   = tu_formats_pkg::TexAddrW;
+  localparam int KW   = tu_formats_pkg::EwaKW;
+  localparam int ClipLat = ClipVariant == 1 ? tu_formats_pkg::ClipHornerLatency
+                         : ClipVariant == 2 ? tu_formats_pkg::ClipEstrinLatency
+                                            : tu_formats_pkg::ClipP1Latency;
+  // tu_ewa_border's latency (its header): S1, S2, the roots, S27, the division, S40, clip, last
+  localparam int BorderLat = 1 + 1 + tu_formats_pkg::EwaRootW + 1 + tu_formats_pkg::ClipInF + 1 + ClipLat + 1;
   localparam int Drain = tu_formats_pkg::EwaDrainCycles;
   localparam int NormCycles = tu_formats_pkg::EwaNormCycles;
+  localparam int AddrDly = HasClip != 0 ? 4 + BorderLat : 4;  // texel address delay line
 
   typedef enum logic [2:0] {WIdle, WWalk, WDrain, WNear, WNear2, WNorm, WOut} state_e;
   state_e st_q;
-  logic [2:0] cnt_q;
+  logic [5:0] cnt_q;
+  logic       clip_q;  // this pixel's border weights (HasClip only)
+  logic [5:0] drain_last;
+  assign drain_last = 6'(Drain - 1) + (clip_q ? 6'(BorderLat) : 6'd0);
 
   // ---- record
   logic [3:0]          lev_q;
@@ -88,6 +107,7 @@ module tu_ewa_walk (
   logic [3:0]          lw_q, lh_q;
   logic [2*tu_formats_pkg::WrapW-1:0] wrap_q;
   logic [1:0]          wsrc_q;
+  logic signed [KW-1:0] kxu_q, kxv_q, kyu_q, kyv_q;  // the frame (border distance)
   // ---- walk state: current texel and row start
   logic signed [31:0]    x_q, y_q;
   logic signed [63:0]    q_q, dq_q, qr_q, dqr_q, er_q;
@@ -105,12 +125,12 @@ module tu_ewa_walk (
       unique case (st_q)
         WIdle:  if (rec_valid_i) st_q <= guard_i ? WNear : WWalk;
         WWalk:  if (last) st_q <= WDrain;
-        WDrain: if (cnt_q == 3'(Drain - 1)) st_q <= WNorm;
+        WDrain: if (cnt_q == drain_last) st_q <= WNorm;
         WNear:  st_q <= WNear2;
         WNear2: st_q <= WOut;
         // the last accumulation lands at the end of the drain: wsum is final in WNorm's first clock
         WNorm:  if (cnt_q == '0 && wsum_q == '0) st_q <= WNear;
-                else if (cnt_q == 3'(NormCycles - 1)) st_q <= WOut;
+                else if (cnt_q == 6'(NormCycles - 1)) st_q <= WOut;
         WOut:   if (out_ready_i) st_q <= WIdle;
         default: st_q <= WIdle;
       endcase
@@ -118,8 +138,8 @@ module tu_ewa_walk (
   end
   always_ff @(posedge clk_i) begin
     if (st_q != WDrain && st_q != WNorm) cnt_q <= '0;
-    else if (st_q == WDrain && cnt_q == 3'(Drain - 1)) cnt_q <= '0;
-    else cnt_q <= cnt_q + 3'd1;
+    else if (st_q == WDrain && cnt_q == drain_last) cnt_q <= '0;
+    else cnt_q <= cnt_q + 6'd1;
   end
 
   always_ff @(posedge clk_i) begin
@@ -130,7 +150,9 @@ module tu_ewa_walk (
       dxi_q <= dxi_i;     deta_q <= deta_i;  dxiy_q <= dxiy_i;  detay_q <= detay_i;
       ddq_q <= ddq_i;     ddqy_q <= ddqy_i;  dqy_q <= dqy_i;
       base_q <= base_i;   lw_q <= lw_i;      lh_q <= lh_i;      wrap_q <= wrap_i;
-      wsrc_q <= wsrc_i;
+      wsrc_q <= wsrc_i;   clip_q <= HasClip != 0 && clip_i;
+      kxu_q <= KW'(dxi_i >>> PosF);   kyu_q <= KW'(deta_i >>> PosF);
+      kxv_q <= KW'(dxiy_i >>> PosF);  kyv_q <= KW'(detay_i >>> PosF);
       x_q <= x0_i;        y_q <= y0_i;
       q_q <= q0_i;        dq_q <= dq0_i;     xi_q <= xi0_i;     eta_q <= eta0_i;
       qr_q <= q0_i;       dqr_q <= dq0_i;    er_q <= ey0_i;     xir_q <= xi0_i;    etar_q <= eta0_i;
@@ -161,7 +183,7 @@ module tu_ewa_walk (
   logic                  v1_q, in1_q;
   logic [GQW-1:0]        qc1_q;
   logic [GXW-1:0]        xic1_q, etac1_q;
-  logic [AW-1:0]         addr, addr_q [4];
+  logic [AW-1:0]         addr, addr_q [AddrDly];
   logic                  in_q [2:5];
   tu_texel_addr #(.CoordW(32)) u_addr (
     .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .wrap_i(wrap_q), .level_i(lev_q),
@@ -175,13 +197,13 @@ module tu_ewa_walk (
     xic1_q  <= GXW'(xi_q >>> (tu_formats_pkg::EwaKF + PosF - tu_formats_pkg::GaussXiF));
     etac1_q <= GXW'(eta_q >>> (tu_formats_pkg::EwaKF + PosF - tu_formats_pkg::GaussXiF));
     addr_q[0] <= addr;
-    for (int i = 1; i < 4; i++) addr_q[i] <= addr_q[i-1];
+    for (int i = 1; i < AddrDly; i++) addr_q[i] <= addr_q[i-1];
     in_q[2] <= in1_q;
     for (int i = 3; i <= 5; i++) in_q[i] <= in_q[i-1];
   end
   // the nearest-texel read (WNear) bypasses the delay line
   assign tex_req_o  = 1'b1;
-  assign tex_addr_o = st_q == WNear ? addr : addr_q[3];
+  assign tex_addr_o = st_q == WNear ? addr : clip_q ? addr_q[AddrDly-1] : addr_q[3];
 
   // ---- weights (all three sources run; the shorter pipelines are padded to 4)
   logic [WW-1:0] w_f, w_f_q;
@@ -210,6 +232,36 @@ module tu_ewa_walk (
     if (!in_q[5]) w5 = '0;
   end
 
+  // ---- border weights: P5 -> P5 + BorderLat (clip_q), else P5's weight. Only a clip pixel's
+  // texels enter valid: a plain pixel's drain ends before its texels would leave the pipeline.
+  logic [WW-1:0] wacc;
+  if (HasClip != 0) begin : g_border
+    localparam int QdW = tu_formats_pkg::EwaQW + 2 * XiW;
+    logic [QdW-1:0] qd5;
+    logic           v5, bvalid;
+    logic [WW-1:0]  bw;
+    logic [tu_formats_pkg::ClipInW-1:0] bd_unused;
+    logic [1:0]     bzone_unused;
+    logic           bready_unused;
+    logic [3:0]     vd_q;
+    always_ff @(posedge clk_i) vd_q <= {vd_q[2:0], v1_q};
+    assign v5 = vd_q[3];
+    tu_brdf_delay #(.W(QdW), .Depth(5)) u_qdly (
+      .clk_i, .en_i(1'b1), .d_i({q_q[tu_formats_pkg::EwaQW-1:0], xi_q, eta_q}), .q_o(qd5));
+    tu_ewa_border #(.ClipVariant(ClipVariant)) u_border (
+      .clk_i, .rst_ni, .in_valid_i(v5 && clip_q), .in_ready_o(bready_unused),
+      .q_i(qd5[QdW-1 -: tu_formats_pkg::EwaQW]), .xi_i(qd5[2*XiW-1:XiW]), .eta_i(qd5[XiW-1:0]),
+      .kxu_i(kxu_q), .kxv_i(kxv_q), .kyu_i(kyu_q), .kyv_i(kyv_q), .w_i(w5),
+      .out_valid_o(bvalid), .out_ready_i(1'b1), .zone_o(bzone_unused), .d_o(bd_unused), .w_o(bw));
+    assign wacc = !clip_q ? w5 : bvalid ? bw : '0;
+    logic unused_border;
+    assign unused_border = ^{bd_unused, bzone_unused, bready_unused, q_q[63]};
+  end else begin : g_no_border
+    assign wacc = w5;
+    logic unused_border;
+    assign unused_border = ^{clip_i, kxu_q, kxv_q, kyu_q, kyv_q};
+  end
+
   // ---- P5: accumulate
   logic [AcW-1:0] acc_q [4];
   logic [WsW-1:0] wsum_q;
@@ -220,9 +272,9 @@ module tu_ewa_walk (
       wsum_q <= '0;
       ins_q  <= '0;
     end else if (st_q == WWalk || st_q == WDrain) begin
-      for (int c = 0; c < 4; c++) acc_q[c] <= acc_q[c] + AcW'(w5) * AcW'(tex_data_i[8*c +: 8]);
-      wsum_q <= wsum_q + WsW'(w5);
-      ins_q  <= ins_q + NW'(w5 != '0);
+      for (int c = 0; c < 4; c++) acc_q[c] <= acc_q[c] + AcW'(wacc) * AcW'(tex_data_i[8*c +: 8]);
+      wsum_q <= wsum_q + WsW'(wacc);
+      ins_q  <= ins_q + NW'(wacc != '0);
     end
   end
 
@@ -237,7 +289,7 @@ module tu_ewa_walk (
     m_d = (p_d >= 7'(NrW - 1)) ? NrW'(wsum_q >> (p_d - 7'(NrW - 1))) : NrW'(wsum_q << (7'(NrW - 1) - p_d));
   end
   always_ff @(posedge clk_i) begin
-    if (st_q == WNorm && cnt_q == 3'd0) begin
+    if (st_q == WNorm && cnt_q == 6'd0) begin
       p_q    <= p_d;
       mant_q <= MW'(m_d) << (MW - NrW);  // recip::eval: the msb of a positive code at bit MW-1
     end
@@ -255,7 +307,7 @@ module tu_ewa_walk (
   end
 
   always_ff @(posedge clk_i) begin
-    if (st_q == WNorm && cnt_q == 3'(NormCycles - 1)) rgba_o <= rgba_d;
+    if (st_q == WNorm && cnt_q == 6'(NormCycles - 1)) rgba_o <= rgba_d;
     if (st_q == WNear2) rgba_o <= tex_data_i;
   end
   assign out_valid_o = st_q == WOut;

@@ -14,6 +14,7 @@ typedef struct packed {
   logic [tu_formats_pkg::WsrcW-1:0] wsrc;  // EWA weight source (Wsrc* codes)
   logic [tu_formats_pkg::EwaCountW-1:0] cap;  // EWA texel cap
   logic [tu_formats_pkg::EngineW-1:0] filt;  // filter engine (Eng* codes)
+  logic clip;  // EWA sub-texel border weights (the unit's EwaClipVariant)
 } tu_material_t;
 // material relief fields
 typedef struct packed {

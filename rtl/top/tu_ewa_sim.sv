@@ -1,7 +1,8 @@
 // Simulation top of the EWA engine (block "ewa"): tu_ewa with the texel RAM model attached; the
 // testbench loads the texture through the RAM's write port before the pixel stream.
 module tu_ewa_sim #(
-  parameter int Words = 1 << 17
+  parameter int Words = 1 << 17,
+  parameter int ClipVariant = 0  // border weights' clip volume (the block's: mm_p1)
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -25,6 +26,7 @@ module tu_ewa_sim #(
   input  logic [2*tu_formats_pkg::WrapW-1:0]     wrap_i,
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
+  input  logic                                  clip_i,
   output logic                                  out_valid_o,
   input  logic                                  out_ready_i,
   output logic [31:0]                           rgba_o,
@@ -36,9 +38,9 @@ module tu_ewa_sim #(
   logic                                tex_req;
   logic [tu_formats_pkg::TexAddrW-1:0] tex_addr;
   logic [31:0]                         tex_data;
-  tu_ewa u_ewa (
+  tu_ewa #(.HasClip(1), .ClipVariant(ClipVariant)) u_ewa (
     .clk_i, .rst_ni, .in_valid_i, .in_ready_o, .u_i, .v_i, .ae_i, .ce_i, .be_i, .lmaj_i, .lmin_i,
-    .lod_i, .eflags_i, .guard_i(1'b0), .base_i, .lw_i, .lh_i, .wrap_i, .wsrc_i, .cap_i,
+    .lod_i, .eflags_i, .guard_i(1'b0), .base_i, .lw_i, .lh_i, .wrap_i, .wsrc_i, .cap_i, .clip_i,
     .tex_req_o(tex_req), .tex_addr_o(tex_addr), .tex_data_i(tex_data),
     .out_valid_o, .out_ready_i, .rgba_o, .level_o, .visited_o, .inside_o, .flags_o
   );

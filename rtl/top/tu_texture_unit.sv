@@ -39,6 +39,10 @@ module tu_texture_unit #(
   // B2's Jacobian: 0 analytic (tu_ellipse), 1 the seed's forward-difference recurrences
   // (tu_ellipse_rec: latency EllRecLatency > PerspLatency, so B1's output waits in a FIFO)
   parameter int EllRecurrence = {31'b0, tu_unit_cfg_pkg::EllRecurrence},
+  // EWA sub-texel border weights (tu_ewa_border in the walk; a span's clip_i turns them on) and
+  // their clip volume (0 mm_p1, 1 mm_p3 Horner, 2 mm_p3 Estrin)
+  parameter int HasEwaClip     = {31'b0, tu_unit_cfg_pkg::HasEwaClip},
+  parameter int EwaClipVariant = tu_unit_cfg_pkg::EwaClipVariant,
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -79,6 +83,7 @@ module tu_texture_unit #(
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   input  logic [1:0]                            filt_i,  // material filter: 0 bilinear, 1 EWA, 2 trilinear, 3 nearest
+  input  logic                                  clip_i,  // material EWA border weights (HasEwaClip)
   // material relief (POM): on, adaptive layers, layers (1..63), height scale S, depth map
   input  logic                                  rel_i,
   input  logic                                  radapt_i,
@@ -164,6 +169,7 @@ module tu_texture_unit #(
     in_mat.wsrc    = wsrc_i;
     in_mat.cap     = cap_i;
     in_mat.filt    = filt_i;
+    in_mat.clip    = clip_i;
     in_rel.rel     = rel_i;
     in_rel.radapt  = radapt_i;
     in_rel.riter   = riter_i;
@@ -463,11 +469,11 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::EwaCountW-1:0] ewa_visited, ewa_inside;
   logic [4:0]                           ewa_flags;
   if (HasEwa != 0) begin : g_ewa
-    tu_ewa u_ewa (
+    tu_ewa #(.HasClip(HasEwaClip), .ClipVariant(EwaClipVariant)) u_ewa (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngEwa), .in_ready_o(ewa_in_ready),
       .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
       .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
-      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap),
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap), .clip_i(f_mat.clip),
       .tex_req_o(ewa_req), .tex_addr_o(ewa_addr), .tex_data_i,
       .out_valid_o(ewa_valid), .out_ready_i(p_ready && os_valid && cur_q == EngEwa),
       .rgba_o(ewa_rgba), .level_o(ewa_level), .visited_o(ewa_visited), .inside_o(ewa_inside),
@@ -484,7 +490,7 @@ module tu_texture_unit #(
     assign ewa_inside   = '0;
     assign ewa_flags    = '0;
     logic unused_ewa;
-    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_mat.wsrc, f_mat.cap};
+    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_mat.wsrc, f_mat.cap, f_mat.clip};
   end
   if (HasBilinear != 0) begin : g_bilinear
     tu_bilinear u_bil (
@@ -575,7 +581,7 @@ module tu_texture_unit #(
   `TU_ASSERT_HANDSHAKE(InHandshakeB1, in_valid_i, in_ready_o, {a_i, b_i, c_i, d_i, e_i, f_i, g_i, h_i, i_i, x0_i, x1_i, y_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeB2, in_valid_i, in_ready_o, {kux_i, kvx_i, kuy_i, kvy_i, m_i, nn_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, twrap_i,
-                                                                 wsrc_i, cap_i, filt_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
+                                                                 wsrc_i, cap_i, filt_i, clip_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
                                                                  hlw_i, hlh_i, rdm_i, dlayers_i, dbase_i})
   `TU_ASSERT_HANDSHAKE(ViewHandshake, view_valid_i, view_ready_o, {view_ok_i, vx_i, vy_i, vz_i, vc_i})
   `TU_ASSERT_HANDSHAKE(ShadeHandshake, shade_valid_i, shade_ready_o, {shade_i})

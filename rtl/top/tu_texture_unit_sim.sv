@@ -13,6 +13,8 @@ module tu_texture_unit_sim #(
   parameter int HasIterParallax = {31'b0, tu_unit_cfg_pkg::HasIterParallax},
   parameter int HasDistanceMap = {31'b0, tu_unit_cfg_pkg::HasDistanceMap},
   parameter int EllRecurrence = {31'b0, tu_unit_cfg_pkg::EllRecurrence},
+  parameter int HasEwaClip     = {31'b0, tu_unit_cfg_pkg::HasEwaClip},
+  parameter int EwaClipVariant = tu_unit_cfg_pkg::EwaClipVariant,
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words,
   // the depth RAM also holds the distance maps (the default scene's wall: 1,114,112 words)
   parameter int DepthWords = 2 * Words
@@ -58,6 +60,7 @@ module tu_texture_unit_sim #(
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   input  logic [1:0]                            filt_i,
+  input  logic                                  clip_i,
   input  logic                                  rel_i,
   input  logic                                  radapt_i,
   input  logic                                  riter_i,
@@ -98,12 +101,13 @@ module tu_texture_unit_sim #(
   tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear), .HasTriFilter(HasTriFilter), .HasNearest(HasNearest),
                     .HasRelief(HasRelief), .HasShading(HasShading),
                     .HasPom(HasPom), .HasIterParallax(HasIterParallax), .HasDistanceMap(HasDistanceMap),
-                    .EllRecurrence(EllRecurrence)) u_tu (
+                    .EllRecurrence(EllRecurrence),
+                    .HasEwaClip(HasEwaClip), .EwaClipVariant(EwaClipVariant)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
     .kuy_i, .kvy_i, .m_i, .nn_i, .dm_i, .dexp_i, .laniso_i, .maxlod_i, .lbias_i, .lminlod_i, .lmaxlod_i,
-    .tbase_i, .tlw_i, .tlh_i, .twrap_i, .wsrc_i, .cap_i, .filt_i,
+    .tbase_i, .tlw_i, .tlh_i, .twrap_i, .wsrc_i, .cap_i, .filt_i, .clip_i,
     .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i, .rdm_i, .dlayers_i, .dbase_i,
     .view_valid_i(view_valid), .view_ready_o(view_ready), .view_ok_i(view[3 * VzW + tu_formats_pkg::PomCW]),
     .vx_i(view[2 * VzW + tu_formats_pkg::PomCW +: VzW]), .vy_i(view[VzW + tu_formats_pkg::PomCW +: VzW]),

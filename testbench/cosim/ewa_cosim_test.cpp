@@ -46,6 +46,7 @@ std::vector<ewa::PixelCost> costs_of(const vec::VectorFile& vf) {
     ewa::fx::In px;
     px.b2.lod = static_cast<uint32_t>(in[7]);
     c.push_back(ewa::pixel_cost(px, static_cast<int>(out[4]), static_cast<uint32_t>(out[7]), out[5], 8));
+    c.back().clip = in[11] != 0;
   }
   return c;
 }
@@ -334,6 +335,45 @@ TEST(TextureUnitRtl, BorderWeightsAreRejectedNamingTheField) {
     ADD_FAILURE() << "border weights accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("/clip: EWA border weights are not in the RTL"), std::string::npos) << e.what();
+
+// EWA sub-texel border weights in the walk (tu_ewa_border, HasEwaClip, EwaClipVariant 0 = mm_p1;
+// docs/blocks/ewa.md "Border weights"): the small scene with border weights on every material, and
+// with them on the ground only (pixels with and without, the drain differs per pixel), every pixel
+// == render_cmodel with 30 % stalls, and stall-free cycles = ewa::texture_unit_cycles; the grown box
+// walks more texels than the plain render. A variant the unit does not have, or the corridor unit
+// (no border weights), is refused naming the material's field.
+TEST(TextureUnitRtl, BorderWeightsEqualCModelWithCyclesPredicted) {
+  const auto plain = cosim::render_rtl(small_scene(), {});
+  EXPECT_TRUE(plain.ok()) << plain.first_mismatch;
+  auto texels = [](const cosim::RtlRender& r) {
+    uint64_t t = 0;
+    for (const auto& p : r.frame.pixels) t += static_cast<uint64_t>(p.texels);
+    return t;
+  };
+  const auto every = render_checked(scene::with_clip(small_scene(), "mm_p1"), {});
+  auto ground = small_scene();
+  ground.materials.at("ground").clip = "mm_p1";
+  const auto some = render_checked(ground, {});
+  EXPECT_GT(texels(every), texels(some));
+  EXPECT_GT(texels(some), texels(plain));
+  EXPECT_GT(every.cycles, some.cycles);
+  std::printf("border weights (mm_p1): every material %zu px, %.2f texels/px, %llu cycles = predicted %llu; ground only "
+              "%llu = %llu; off: %.2f texels/px, %llu cycles\n",
+              every.frame.pixels.size(), double(texels(every)) / double(every.frame.pixels.size()),
+              (unsigned long long)every.cycles, (unsigned long long)every.predicted_cycles,
+              (unsigned long long)some.cycles, (unsigned long long)some.predicted_cycles,
+              double(texels(plain)) / double(plain.frame.pixels.size()), (unsigned long long)plain.cycles);
+  for (const auto& [v, corridor] : {std::pair{"mm_p3", false}, {"mm_p1", true}}) {
+    cosim::RtlRenderOptions o;
+    o.corridor_unit = corridor;
+    if (corridor) o.filter = scene::Filter::Ewa, o.weights = scene::WeightSource::Table1d;  // what it has
+    try {
+      cosim::render_rtl(scene::with_clip(small_scene(), v), o);
+      ADD_FAILURE() << v << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("/materials/ground/clip: " + std::string(v) + ", but the"), std::string::npos)
+          << e.what();
+    }
   }
 }
 

@@ -21,6 +21,7 @@ RtlBlock rtl_ewa() {
     d.eflags_i = static_cast<uint8_t>(in[8]);
     d.wsrc_i = static_cast<uint8_t>(in[9]);
     d.cap_i = static_cast<uint32_t>(in[10]);
+    d.clip_i = static_cast<uint8_t>(in[11]);
     d.base_i = 1;  // after the border word at 0
     d.lw_i = static_cast<uint8_t>(log2_size(tex.levels[0].width));
     d.lh_i = static_cast<uint8_t>(log2_size(tex.levels[0].height));

@@ -33,7 +33,7 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 // Row layout of one span (two words for each 112-bit numerator constant).
 enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kWrap,
-  kWsrc, kCap, kFilt, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
+  kWsrc, kCap, kFilt, kClip, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
   kRdm, kDlayers, kDbase, kRowSize
 };
 
@@ -79,6 +79,7 @@ void drive(V& d, const Row& r) {
   d.wsrc_i = static_cast<uint8_t>(r[kWsrc]);
   d.cap_i = static_cast<uint32_t>(r[kCap]);
   d.filt_i = static_cast<uint8_t>(r[kFilt]);
+  d.clip_i = static_cast<uint8_t>(r[kClip]);
   d.rel_i = static_cast<uint8_t>(r[kRel]);
   d.radapt_i = static_cast<uint8_t>(r[kRadapt]);
   d.riter_i = static_cast<uint8_t>(r[kRiter]);
@@ -141,10 +142,17 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (m.specular && m.specular->model != "auto" && shading::model_of(m.specular->model) != o.shade_model)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/specular/model: " + m.specular->model +
                                   ", but the unit's shading stage is " + brdf::name(o.shade_model));
+  // EWA border weights: the full unit's walk has them with one clip volume (o.clip_variant).
+  auto clip_on = [&](const scene::Material& m) { return !m.clip.empty() && o.filter.value_or(m.filter) == scene::Filter::Ewa; };
   for (const auto& [name, m] : s.materials)
-    if (!m.clip.empty() && o.filter.value_or(m.filter) == scene::Filter::Ewa)
-      throw std::invalid_argument(s.source + ": /materials/" + name + "/clip: EWA border weights are not in the RTL "
-                                  "texture unit yet (C model and float reference only); render with --clip off");
+    if (clip_on(m) && (o.corridor_unit || m.clip != o.clip_variant))
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/clip: " + m.clip + ", but the " +
+                                  (o.corridor_unit ? std::string("corridor unit has no EWA border weights")
+                                                   : "unit's EWA walk has the clip volume " + o.clip_variant) +
+                                  " (render with --clip off or --clip " + o.clip_variant + ")");
+  ewa::EngineParams ep;
+  ep.clip_variant = ewa::rtl_clip_code(o.clip_variant);
+  if (ep.clip_variant < 0) throw std::invalid_argument("render_rtl: clip variant " + o.clip_variant + " has no RTL");
   // B2 variant: the unit with EllRecurrence = 1 (full unit only).
   const bool rec = s.footprint == scene::Footprint::Recurrence;
   if (rec && !o.has_ewa)
@@ -247,6 +255,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       r[kCap] = ewa::kDefaultMaxTexels;
       const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(c.object)].material);
       r[kFilt] = static_cast<uint64_t>(eng);
+      r[kClip] = clip_on(m);
       if (ob.maps) {
         const auto& rel = *m.relief;
         const pom::View q = relief::quantise({}, rel.scale);
@@ -288,6 +297,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         }
         pc.engine = eng;
         pc.guard = guard;
+        pc.clip = r[kClip] != 0;
         // Trilinear: one bilinear pass for a guard pixel or a lod (GL rule) at the top level.
         const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;
         pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(tlod >> fmt::kTexLodF), top);
@@ -368,9 +378,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   // The shading stage (II = 1, its words preloaded) adds its pipeline's latency once, at the end.
   const uint64_t shade_lat = shade_unit ? static_cast<uint64_t>(brdf::shade::latency(o.shade_model)) : 0;
   if (rec)
-    out.predicted_cycles = views.empty() ? ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(true, true))) + shade_lat : 0;
+    out.predicted_cycles = views.empty() ? ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(true, true)), ep) + shade_lat : 0;
   else
-    out.predicted_cycles = (o.has_ewa ? ewa::texture_unit_cycles(costs, relief_px)
+    out.predicted_cycles = (o.has_ewa ? ewa::texture_unit_cycles(costs, relief_px, ep)
                                       : ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(false)))) +
                            shade_lat;
   out.frame.image = expect.image;

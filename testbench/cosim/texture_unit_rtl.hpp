@@ -41,6 +41,9 @@ struct RtlRenderOptions {
   uint64_t seed = 1;
   int threads = 0;  // for the C-model render and visibility (<= 0: every core); same result
   brdf::Model shade_model = shading::kUnitModel;  // the Verilated full unit's ShadeModel
+  // The full unit's EWA border weights: HasEwaClip = 1, EwaClipVariant = 0 (rtl/0_pkg/tu_unit_cfg_pkg.sv):
+  // a material's clip must name this variant (the corridor and bilinear-only units have none).
+  std::string clip_variant = "mm_p1";
 };
 
 struct RtlRender {

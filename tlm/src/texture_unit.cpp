@@ -12,7 +12,9 @@
 namespace tu::sysmodel {
 
 ewa::PixelCost cost_of(const PixelWork& w) {
-  return {static_cast<int>(w.levels), w.texels, w.no_weight, w.guard};
+  ewa::PixelCost c{static_cast<int>(w.levels), w.texels, w.no_weight, w.guard};
+  c.clip = w.clip;
+  return c;
 }
 
 Workload scene_workload(const scene::Scene& s, const render::Frame& frame) {
@@ -46,6 +48,8 @@ Workload scene_workload(const scene::Scene& s, const render::Frame& frame) {
       // Relief renders: a pixel the relief stage shifts (it used n >= 1 layers) and its march.
       p.relief = rec.relief_n > 0;
       p.steps = static_cast<uint32_t>(rec.relief_steps);
+      // EWA border weights: the material's (the grown box is in rec.texels).
+      p.clip = !s.materials.at(s.objects[static_cast<size_t>(c.object)].material).clip.empty();
       wl.pixels.push_back(p);
     }
   }
@@ -115,8 +119,8 @@ Pipeline texture_unit(const UnitConfig& c) {
   s.name = "ewa_walk";
   s.capacity = 1, s.direct = true, s.fifo_depth = 1, s.work = Work::Texels;
   const int penalty = c.miss_penalty;
-  s.timing = [penalty](const PixelWork& w) {
-    const int n = ewa::walk_cycles(cost_of(w)) + penalty * static_cast<int>(w.misses);
+  s.timing = [ep, penalty](const PixelWork& w) {
+    const int n = ewa::walk_cycles(cost_of(w), ep) + penalty * static_cast<int>(w.misses);
     return Timing{n, n + 1};  // output valid and taken in its last clock, free the clock after
   };
   p.stages.push_back(s);

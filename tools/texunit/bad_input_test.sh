@@ -150,11 +150,11 @@ d["objects"][0]["uv"][1] = [1e18, 0]
 json.dump(d, open(sys.argv[1] + "/uv.json", "w"))
 PY
     expect 2 "uv.json: /objects/0/uv/1/0: value 1e+18 is out of range" "$tu" render "$tmp/uv.json" --out "$tmp/o"
-    # An unknown clip-volume variant names the field; the RTL unit has no border weights yet.
+    # An unknown clip-volume variant names the field; the RTL unit's walk has one clip volume (mm_p1).
     sed 's/"filter": "ewa"/"filter": "ewa", "clip": "p9"/' docs/scenes/ui_quad.json >"$tmp/clip.json"
     grep -q '"clip": "p9"' "$tmp/clip.json" || fail "edit"
     expect 2 "clip.json: /materials/panel/clip" "$tu" render "$tmp/clip.json" --out "$tmp/o"
-    expect 2 "/materials/panel/clip: EWA border weights are not in the RTL" "$tu" render docs/scenes/ui_quad.json --engine rtl --clip mm_p1 --out "$tmp/o"
+    expect 2 "/materials/panel/clip: mm_p3, but the unit's EWA walk has the clip volume mm_p1" "$tu" render docs/scenes/ui_quad.json --engine rtl --clip mm_p3 --out "$tmp/o"
     [ ! -e "$tmp/o" ] || fail "left output"
     ;;
   degenerate_triangle)

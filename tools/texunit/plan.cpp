@@ -306,6 +306,8 @@ struct Config {
   brdf::Model shade_model = shading::kUnitModel;
   bool distance_map = false;  // the distance-map tracer (tu_dm_trace) in the relief stage
   int wrap_modes = 31;  // bit = tex::Wrap code: the modes some texture uses (repeat always)
+  bool ewa_clip = false;  // EWA sub-texel border weights (tu_ewa_border in the walk)
+  int clip_variant = 0;   // their clip volume: ewa::kRtlClipVariants code
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -334,6 +336,9 @@ std::string package(const Config& c, const std::string& origin) {
      << ";  // B2: 0 analytic (tu_ellipse), 1 seed recurrences (tu_ellipse_rec)\n"
      << "  // texel addressing (tu_texel_addr): bit = tu_formats_pkg::Wrap* code, 1 = the mode is built\n"
      << "  localparam logic [4:0] WrapModes = 5'd" << c.wrap_modes << ";\n"
+     << "  localparam bit HasEwaClip = 1'b" << c.ewa_clip << ";  // EWA sub-texel border weights (tu_ewa_border)\n"
+     << "  // clip volume: 0 mm_p1 (tu_clip_p1), 1 mm_p3 (tu_clip_horner), 2 mm_p3_estrin (tu_clip_estrin)\n"
+     << "  localparam int EwaClipVariant = " << c.clip_variant << ";  // " << ewa::kRtlClipVariants[static_cast<size_t>(c.clip_variant)] << "\n"
      << "endpackage\n";
   return sv.str();
 }
@@ -341,7 +346,8 @@ std::string package(const Config& c, const std::string& origin) {
 }  // namespace
 
 uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::Filter(const scene::Material&)>& filter_of,
-                           bool relief_stage, std::optional<scene::WeightSource> weights, bool ell_recurrence) {
+                           bool relief_stage, std::optional<scene::WeightSource> weights, bool ell_recurrence,
+                           int clip_variant) {
   scene::Scene t = scene::without_relief(s);
   t.footprint = ell_recurrence ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
   for (auto& [name, m] : t.materials) m.filter = filter_of(m);
@@ -366,7 +372,9 @@ uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::F
     }
     costs.push_back(c);
   }
-  return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage, ell_recurrence)));
+  ewa::EngineParams ep;
+  ep.clip_variant = clip_variant;
+  return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage, ell_recurrence)), ep);
 }
 
 int run(const Options& opt) {
@@ -640,9 +648,24 @@ int run(const Options& opt) {
     return 0;
   };
   const std::string origin = "`texunit plan " + opt.scene + "` from " + report_name;
+  // EWA border weights: in the unit when an EWA material asks for them; their clip volume is the one
+  // the materials name (it must have an RTL, and the unit has one), else the plan's choice.
+  std::set<std::string> clip_named;
+  for (const auto& [name, m] : s.materials)
+    if (!m.clip.empty() && mat_filter.count(name) && mat_filter.at(name) == "ewa") {
+      if (ewa::rtl_clip_code(m.clip) < 0)
+        throw BudgetError(s.source + ": /materials/" + name + "/clip: " + m.clip +
+                          " has no RTL in the EWA walk (tu_ewa_border: mm_p1, mm_p3, mm_p3_estrin)");
+      clip_named.insert(m.clip);
+    }
+  if (clip_named.size() > 1)
+    throw BudgetError(s.source + ": /materials: clip variants " + *clip_named.begin() + " and " + *clip_named.rbegin() +
+                      ": the unit's EWA walk has one clip volume");
+  const int clip_code = !clip_named.empty() ? ewa::rtl_clip_code(*clip_named.begin())
+                        : clip && ewa::rtl_clip_code(clip->variant) >= 0 ? ewa::rtl_clip_code(clip->variant) : 0;
   const Config planned{has_tri, has_ewa, uses("bilinear"), uses("trilinear"), false, relief, pom, iterative, max_layers, weight_bit(weights),
                        log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1,
-                       ell_rec && has_tri};
+                       ell_rec && has_tri, false, shading::kUnitModel, !clip_named.empty(), clip_code};
   // The full unit: everything in, relief up to the scene format's 256 layers.
   Config planned_shaded = planned;
   planned_shaded.shading = shade;
@@ -659,7 +682,8 @@ int run(const Options& opt) {
   if (brdf_row) planned_shaded.shade_model = shading::model_of(brdf_row->variant);
   // The full unit: F_MSH (the thesis's model) when the scene does not need another.
   const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n,
-                          planned.persp_lanes, false, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel, true};
+                          planned.persp_lanes, false, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel,
+                          true, 31, true, clip_code};
 
   // 5. Scene cycles of the RTL texture unit (texture path), from the exact cycle model
   //    ewa::stream_cycles on the bit-accurate C-model render's per-pixel work (equal to Verilator:
@@ -667,7 +691,7 @@ int run(const Options& opt) {
   //    unit with the plan's filter per material, and the full unit as authored.
   auto scene_cycles = [&](std::function<scene::Filter(const scene::Material&)> filter_of, bool relief_stage,
                           std::optional<scene::WeightSource> weights, bool rec) -> uint64_t {
-    return scene_stream_cycles(s, filter_of, relief_stage, weights, rec);
+    return scene_stream_cycles(s, filter_of, relief_stage, weights, rec, clip_code);
   };
   auto authored = [](const scene::Material& m) { return m.filter; };
   auto planned_filter = [&](const scene::Material& m) {

@@ -1,9 +1,11 @@
 // Vector sets for the bit-accurate EWA filter (B5, cmodel/blocks/ewa/ewa_fx.hpp).
 //   in : u, v (s32.8 level-0 texels), B2 outputs ae, ce (u64), be (s64), lmaj, lmin (s18.10),
 //        lod (u12.8), b2flags (u5), weight source wsrc (0 formula, 1 table1d, 2 table2d), cap
-//        (max_texels, u17)
+//        (max_texels, u17), clip (1: sub-texel border weights with the block's clip volume mm_p1,
+//        tu_ewa_sim's ClipVariant 0)
 //   out: r, g, b, a (u8), level (u4), texels visited (box) and inside (w > 0) (u17), flags (u5)
-//   ref: float EWA (ewa_ref.hpp filter_axes) on the same B2 axes and conic direction, RGBA f64.
+//   ref: float EWA (ewa_ref.hpp filter_axes) on the same B2 axes and conic direction (border
+//        weights with the exact Phi when clip), RGBA f64.
 // Texture (fixed, not in the file): the built-in bricks colour texture, 256 x 256, repeat
 // (tex::bricks(256).color); the RTL testbench loads the same texture.
 // Error unit: 8-bit colour levels, max over RGBA of |c - c_ref|.
@@ -12,13 +14,18 @@
 #include <stdexcept>
 
 #include "block.hpp"
+#include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
+#include "gauss/clip.hpp"
 
 namespace tu::blocks {
 
 namespace {
 namespace efx = ellipse::fx;
 using ewa::fx::In;
+
+// The block's clip volume for clip = 1: tu_ewa_sim's ClipVariant 0.
+const clip::Variant& block_clip() { return clip::variant(ewa::kRtlClipVariants[0]); }
 
 uint64_t bits(int64_t v, int w) { return static_cast<uint64_t>(v) & (w == 64 ? ~0ull : ((1ull << w) - 1)); }
 
@@ -31,7 +38,7 @@ Row row_of(const Pixel& p) {
   const auto& o = p.in.b2;
   return {bits(p.in.u, fmt::kPerspUvW), bits(p.in.v, fmt::kPerspUvW), o.ae, o.ce,
           static_cast<uint64_t>(o.be), bits(o.lmaj, fmt::kEllLogW), bits(o.lmin, fmt::kEllLogW), o.lod,
-          o.flags, static_cast<uint64_t>(p.cfg.weights), p.cfg.max_texels};
+          o.flags, static_cast<uint64_t>(p.cfg.weights), p.cfg.max_texels, p.cfg.clip != nullptr};
 }
 Pixel pixel_of(const Row& r) {
   Pixel p;
@@ -47,6 +54,8 @@ Pixel pixel_of(const Row& r) {
   if (r[9] > 2) throw std::invalid_argument("ewa: field wsrc = " + std::to_string(r[9]) + " (0..2)");
   p.cfg.weights = static_cast<ewa::fx::Weights>(r[9]);
   p.cfg.max_texels = static_cast<uint32_t>(r[10]);
+  if (r[11] > 1) throw std::invalid_argument("ewa: field clip = " + std::to_string(r[11]) + " (0, 1)");
+  if (r[11]) p.cfg.clip = &block_clip();
   return p;
 }
 
@@ -58,9 +67,11 @@ const tex::Texture& texture() {
 using ewa::fx::footprint_local;
 constexpr auto local = footprint_local;
 Row row(const efx::Local& l, int w, uint32_t cap = 1024, uint32_t laniso = 4 << fmt::kEllLogF,
-        uint32_t max_lod = 8) {
-  return row_of({ewa::fx::in_from_local(l, laniso, max_lod), {static_cast<ewa::fx::Weights>(w), cap}});
+        uint32_t max_lod = 8, bool clip = false) {
+  return row_of({ewa::fx::in_from_local(l, laniso, max_lod),
+                 {static_cast<ewa::fx::Weights>(w), cap, clip ? &block_clip() : nullptr}});
 }
+Row clip_row(const efx::Local& l, int w, uint32_t cap = 1024) { return row(l, w, cap, 4 << fmt::kEllLogF, 8, true); }
 
 // Curated: magnified, minified, 16:1 clamped, rotated, cap fallback, each weight source.
 std::vector<Row> golden_inputs() {
@@ -74,6 +85,11 @@ std::vector<Row> golden_inputs() {
     rows.push_back(row(local(12.0, 4, -0.9, 5.5, 250.5), w));           // rotated the other way
     rows.push_back(row(local(60.0, 16, 0.8, 128.0, 128.0), w, 40));     // cap fallback
     rows.push_back(row(local(3000.0, 1.5, 0.2, 1.0, 2.0), w, 1024, 4 << fmt::kEllLogF, 12));  // lod sat
+    // border weights: magnified (the 2 x 2 box becomes 3 x 3), minified, rotated 8:1, cap fallback
+    rows.push_back(clip_row(local(0.3, 1.2, 0.4, 10.25, 20.75), w));
+    rows.push_back(clip_row(local(6.0, 1.5, 1.0, -33.1, 57.9), w));
+    rows.push_back(clip_row(local(24.0, 8, 2.2, 77.7, 66.6), w));
+    rows.push_back(clip_row(local(60.0, 16, 0.8, 128.0, 128.0), w, 40));
   }
   return rows;
 }
@@ -104,6 +120,14 @@ std::vector<Row> stiff_inputs() {
   // Magnification extremes and exact circles.
   for (double m : {1.0 / 1024, 0.5, 0.999, 1.0, 1.001, 2.0})
     rows.push_back(row(local(m, 1.0, 0.0, 31.5, 31.5), 1));
+  // Border weights: 1:1000 at 4 angles, the 1024:1 limit, line, caps 1 and the largest (the grown
+  // box counts), magnification extremes, texture edges.
+  for (int t = 0; t < 4; ++t) rows.push_back(clip_row(local(64, 1000, t * M_PI / 4, 50.5 + t, 20.25), t % 3));
+  rows.push_back(row(local(2000, 1000, 0.7, 9.0, 9.0), 1, 1u << 16, 10 << fmt::kEllLogF, 8, true));
+  rows.push_back(clip_row(local(32, 0, 0.7, 11.0, 12.0), 2));
+  for (uint32_t cap : {1u, (1u << fmt::kEwaCountW) - 1}) rows.push_back(clip_row(local(90, 16, 0.5, 60.0, 70.0), 0, cap));
+  for (double m : {1.0 / 1024, 1.0, 2.0}) rows.push_back(clip_row(local(m, 1.0, 0.0, 31.5, 31.5), 1));
+  for (double u : {0.0, 255.99}) rows.push_back(clip_row(local(5, 2, 0.1, u, 255.9), 0));
   return rows;
 }
 
@@ -112,13 +136,14 @@ std::vector<Row> random_inputs(uint64_t count, uint64_t seed) {
     Pixel p{ewa::fx::random_in(rng), {}};
     p.cfg.weights = static_cast<ewa::fx::Weights>(rng() % 3);
     p.cfg.max_texels = rng() % 8 == 0 ? static_cast<uint32_t>(1 + rng() % 2048) : 1024;
+    if (rng() % 4 == 0) p.cfg.clip = &block_clip();  // one pixel in 4 with border weights
     return row_of(p);
   });
 }
 
 Row ref_of(const Row& r) {
   const Pixel p = pixel_of(r);
-  const auto res = ewa::fx::filter_ref_b2(p.in, texture(), p.cfg.max_texels);
+  const auto res = ewa::fx::filter_ref_b2(p.in, texture(), p.cfg.max_texels, p.cfg.clip != nullptr);
   return {vec::f64_bits(res.color.r), vec::f64_bits(res.color.g), vec::f64_bits(res.color.b),
           vec::f64_bits(res.color.a)};
 }
@@ -130,7 +155,8 @@ Block make_ewa() {
   b.description =
       "EWA texture filter (B5, bit-accurate): ellipse rebuilt from B2's axes and conic direction "
       "(CORDIC), Heckbert walk, Gaussian weights (formula / 1-D / 2-D table), reciprocal "
-      "normalisation; texture fixed: built-in bricks colour 256x256, repeat; variable latency";
+      "normalisation, optional sub-texel border weights (clip volume mm_p1); texture fixed: built-in "
+      "bricks colour 256x256, repeat; variable latency";
   using vec::Role;
   auto sf = [](int w, int f) { return "s" + std::to_string(w) + "." + std::to_string(f); };
   auto uf = [](int w, int f) { return "u" + std::to_string(w) + "." + std::to_string(f); };
@@ -149,6 +175,7 @@ Block make_ewa() {
               field("b2flags", Role::In, uf(5, 0)),
               field("wsrc", Role::In, uf(2, 0)),
               field("cap", Role::In, cnt),
+              field("clip", Role::In, uf(1, 0)),
               field("r", Role::Out, uf(8, 0)),
               field("g", Role::Out, uf(8, 0)),
               field("b", Role::Out, uf(8, 0)),

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "block.hpp"
+#include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
 #include "gauss/weight.hpp"
 
@@ -146,7 +147,7 @@ Block make_ewa_border() {
     return e;
   };
   // S1 g, S2 g^2, 24 root stages, S27 num / den, 12 divider stages, S40 d, the clip scheme, the weight.
-  b.latency_cycles = 1 + 1 + fmt::kEwaRootW + 1 + fmt::kClipInF + 1 + fmt::kClipP1Latency + 1;
+  b.latency_cycles = ewa::border_latency(ewa::rtl_clip_code(kVariant));
   b.ii_cycles = 1;
   return b;
 }

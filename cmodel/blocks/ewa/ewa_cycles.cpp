@@ -21,11 +21,24 @@ int setup_cycles(const PixelCost& c, const EngineParams& p) {
   return 2 + cordic + levels * per_level + 2;         // ACCEPT PRE ... START1 START2
 }
 
-int walk_cycles(const PixelCost& c) {
+int rtl_clip_code(const std::string& variant) {
+  for (size_t i = 0; i < kRtlClipVariants.size(); ++i)
+    if (variant == kRtlClipVariants[i]) return static_cast<int>(i);
+  return -1;
+}
+
+int border_latency(int clip_code) {
+  const int clip = clip_code == 1 ? fmt::kClipHornerLatency : clip_code == 2 ? fmt::kClipEstrinLatency : fmt::kClipP1Latency;
+  return 1 + 1 + fmt::kEwaRootW + 1 + fmt::kClipInF + 1 + clip + 1;
+}
+
+int walk_cycles(const PixelCost& c, const EngineParams& p) {
   if (c.guard) return 3;  // hand-over, read, data
-  // hand-over clock, one clock per texel, 5 drain clocks (weight pipeline + accumulate), then
-  // normalisation (6: mantissa + 4 reciprocal stages + round) or the nearest texel (1 + 2).
-  return 1 + static_cast<int>(c.box) + fmt::kEwaDrainCycles + (c.no_weight ? 3 : fmt::kEwaNormCycles);
+  // hand-over clock, one clock per texel, 5 drain clocks (weight pipeline + accumulate; border
+  // weights: + the border pipeline), then normalisation (6: mantissa + 4 reciprocal stages +
+  // round) or the nearest texel (1 + 2).
+  const int drain = fmt::kEwaDrainCycles + (c.clip ? border_latency(p.clip_variant) : 0);
+  return 1 + static_cast<int>(c.box) + drain + (c.no_weight ? 3 : fmt::kEwaNormCycles);
 }
 
 StreamModel::Times StreamModel::add(const PixelCost& c, uint64_t avail) {
@@ -52,7 +65,7 @@ StreamModel::Times StreamModel::add(const PixelCost& c, uint64_t avail) {
     case Engine::Ewa: {
       a = std::max(setup_free_, ready);                                               // accept
       const uint64_t h = std::max(a + static_cast<uint64_t>(setup_cycles(c, p_)), walker_free_);
-      const uint64_t o = h + static_cast<uint64_t>(walk_cycles(c));                   // output valid and taken
+      const uint64_t o = h + static_cast<uint64_t>(walk_cycles(c, p_));                   // output valid and taken
       setup_free_ = h + 1;
       walker_free_ = o + 1;
       last_out_ = o;
@@ -70,7 +83,8 @@ uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival,
   return m.cycles();
 }
 
-uint64_t texture_unit_cycles(const std::vector<PixelCost>& px, const std::vector<relief::StagePixel>& relief_px) {
+uint64_t texture_unit_cycles(const std::vector<PixelCost>& px, const std::vector<relief::StagePixel>& relief_px,
+                             const EngineParams& p) {
   if (px.size() != relief_px.size()) throw std::invalid_argument("ewa::texture_unit_cycles: one relief entry per pixel");
   // Front: span set-up (2) and the expander register (1); the spans wait at the input, so the
   // expander offers a pixel every clock from then on.
@@ -83,7 +97,7 @@ uint64_t texture_unit_cycles(const std::vector<PixelCost>& px, const std::vector
     p[0] = in;
   };
   relief::StageModel stage(relief_px);
-  StreamModel filter;
+  StreamModel filter(p);
   std::deque<uint64_t> pops;  // acceptance cycles of the pixels in the filter FIFO, oldest first
   size_t in_fifo = 0, ex_next = 0;
   const uint64_t limit = 1000 + 5000 * static_cast<uint64_t>(px.size());

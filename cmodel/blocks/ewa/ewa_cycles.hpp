@@ -4,13 +4,16 @@
 // hand-over, so pixel i+1's set-up overlaps pixel i's walk:
 //   set-up : accept a_i, record ready at a_i + S(levels_i), S(n) = 2 + 2 I/U + n (6 + R/S) + 2
 //   hand   : h_i = max(a_i + S, walker free); the set-up accepts again at h_i + 1
-//   walker : output valid at o_i = h_i + 1 + box_i + 5 + 6 (empty weight sum: + 5 + 1 + 2),
-//            taken at once, free again at o_i + 1
+//   walker : output valid at o_i = h_i + 1 + box_i + D + 6 (empty weight sum: + D + 1 + 2),
+//            taken at once, free again at o_i + 1; drain D = 5, + the border-weight pipeline's
+//            latency (border_latency) for a pixel with border weights (clip)
 //   B1-guard pixel (texture unit): S = 1, output valid at h_i + 3
 // (I = EwaCordIter CORDIC iterations, U = iterations per clock, R/S = square-root clocks.)
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "ewa/ewa_fx.hpp"
@@ -23,7 +26,17 @@ struct EngineParams {
   int cord_unroll = 2;
   int sqrt_step = 4;
   int root_w = 16;  // radicand root bits (tu_ewa_setup RootW)
+  int clip_variant = 0;  // tu_ewa ClipVariant (kRtlClipVariants index): the border pipeline's latency
 };
+
+// The clip-volume variants tu_ewa_border has (its ClipVariant codes 0, 1, 2), by C-model name
+// (gauss::clip); the unit configuration's EwaClipVariant is one of them.
+inline constexpr std::array<const char*, 3> kRtlClipVariants = {"mm_p1", "mm_p3", "mm_p3_estrin"};
+// ClipVariant code of a C-model variant name; -1 when tu_ewa_border has no RTL for it.
+int rtl_clip_code(const std::string& variant);
+// Latency of tu_ewa_border with that clip volume: S1, S2, the roots (EwaRootW), S27, the division
+// (ClipInF), S40, the clip volume's pipeline, the weight register (the vector block ewa_border's).
+int border_latency(int clip_code);
 
 // The texture unit's filter engines (tu_texture_unit filt_i codes, texunit/schema.hpp).
 using Engine = schema::Engine;
@@ -35,6 +48,7 @@ struct PixelCost {
   bool guard = false;      // B1 guard pixel (render engines): one texel, no set-up or walk
   Engine engine = Engine::Ewa;  // the texture-unit engine that filters the pixel
   bool one_level = false;  // trilinear: one bilinear pass (B1 guard, or the lod at the top level)
+  bool clip = false;       // EWA with sub-texel border weights (the grown box is in `box`)
 };
 
 // Per-pixel counts of the C model's result.
@@ -42,7 +56,7 @@ struct PixelCost {
 PixelCost pixel_cost(const fx::In& in, int level, uint32_t flags, uint64_t box, int top_level);
 
 int setup_cycles(const PixelCost& c, const EngineParams& p = {});
-int walk_cycles(const PixelCost& c);  // hand-over to output valid
+int walk_cycles(const PixelCost& c, const EngineParams& p = {});  // hand-over to output valid
 
 // Clock cycles from the first input offered (cycle 0, arriving at the engine at `first_arrival`;
 // later pixels are always waiting) to the cycle after the last output: what the co-simulation
@@ -80,7 +94,8 @@ class StreamModel {
 // clock after it entered the FIFO). px[i], relief_px[i]: pixel i's filter work and relief step.
 // Counted as stream_cycles. Without shifted pixels it equals stream_cycles(px,
 // texture_unit_front_latency(true)).
-uint64_t texture_unit_cycles(const std::vector<PixelCost>& px, const std::vector<relief::StagePixel>& relief_px);
+uint64_t texture_unit_cycles(const std::vector<PixelCost>& px, const std::vector<relief::StagePixel>& relief_px,
+                             const EngineParams& p = {});
 
 // The bilinear-only top (tu_texture_unit HasEwa = 0, tu_bilinear): 7 clocks per pixel (accept,
 // four texel reads, last data, output), pixels back to back.

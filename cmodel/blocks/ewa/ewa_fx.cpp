@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 
+#include "ewa/ewa_lanes.hpp"
 #include "gauss/weight.hpp"
 #include "reciprocal/reciprocal.hpp"
 #include "texunit/convert.hpp"
@@ -299,17 +300,44 @@ uint32_t channel(uint64_t acc, InvSum r) {
 
 uint32_t normalise(uint64_t acc, uint64_t wsum) { return channel(acc, inv_sum(wsum)); }
 
-Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool direct, WalkStats* st) {
+uint32_t texel_weight(const PixelSetup& su, const Config& cfg, int64_t q, int64_t xi, int64_t eta) {
+  if (cfg.clip) return border_weight(su, cfg, q, xi, eta);
+  return q < (int64_t(1) << kQF) ? weight_of(cfg.weights, static_cast<uint64_t>(q), xi, eta) : 0;
+}
+
+void finish(const PixelSetup& su, const tex::Texture& t, const Sums& s, Out* out) {
+  if (s.wsum == 0) {
+    out->flags |= kNoWeight;
+    out->color = t.fetch(su.level, floor_div_step(su.cu + kStep / 2), floor_div_step(su.cv + kStep / 2));
+    return;
+  }
+  const InvSum r = inv_sum(s.wsum);  // shared by the four channels
+  out->color = {static_cast<uint8_t>(channel(s.acc[0], r)), static_cast<uint8_t>(channel(s.acc[1], r)),
+                static_cast<uint8_t>(channel(s.acc[2], r)), static_cast<uint8_t>(channel(s.acc[3], r))};
+}
+
+Out walk_out(const PixelSetup& su) {
   Out out;
   out.level = su.level;
   out.flags = su.flags;
   out.capped = (su.flags & kCapped) != 0;
-  // Q(du, dv) = A du^2 + B du dv + C dv^2 in the frame coefficients (exact).
-  const int64_t A = int64_t(su.kxu) * su.kxu + int64_t(su.kyu) * su.kyu;
-  const int64_t B = 2 * (int64_t(su.kxu) * su.kxv + int64_t(su.kyu) * su.kyv);
-  const int64_t ddq = 2 * A * kStep * kStep;
-  const int64_t one = int64_t(1) << kQF;
-  uint64_t acc[4] = {0, 0, 0, 0}, wsum = 0;
+  return out;
+}
+
+QuadForm quad_form(const PixelSetup& su) {
+  QuadForm f;
+  f.a = int64_t(su.kxu) * su.kxu + int64_t(su.kyu) * su.kyu;
+  f.b = 2 * (int64_t(su.kxu) * su.kxv + int64_t(su.kyu) * su.kyv);
+  f.ddq = 2 * f.a * kStep * kStep;
+  return f;
+}
+
+Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool direct, WalkStats* st) {
+  Out out = walk_out(su);
+  const QuadForm qf = quad_form(su);
+  const int64_t A = qf.a, B = qf.b, ddq = qf.ddq;
+  Sums sums;
+  uint64_t* const acc = sums.acc;
   for (int64_t y = su.y0; y <= su.y1; ++y) {
     const int64_t dv = y * kStep - su.cv, du0 = su.x0 * kStep - su.cu;
     int64_t xi = int64_t(su.kxu) * du0 + int64_t(su.kxv) * dv;
@@ -331,23 +359,18 @@ Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool di
       }
       if (st && st->q_trace) st->q_trace->push_back(q);
       ++out.texels_visited;
-      uint32_t w;
-      if (cfg.clip) {
-        w = border_weight(su, cfg, q, xi, eta);
-        if (st) {
-          const Border b = border(su, q, xi, eta);
-          st->max_abs_g = std::max({st->max_abs_g, int64_t(std::abs(b.gu)), int64_t(std::abs(b.gv))});
-          st->max_root = std::max({st->max_root, uint64_t(b.r), uint64_t(b.g)});
-        }
-      } else {
-        w = q < one ? weight_of(cfg.weights, static_cast<uint64_t>(q), xi, eta) : 0;
+      const uint32_t w = texel_weight(su, cfg, q, xi, eta);
+      if (st && cfg.clip) {
+        const Border b = border(su, q, xi, eta);
+        st->max_abs_g = std::max({st->max_abs_g, int64_t(std::abs(b.gu)), int64_t(std::abs(b.gv))});
+        st->max_root = std::max({st->max_root, uint64_t(b.r), uint64_t(b.g)});
       }
       if (w > 0) {
         ++out.texels_inside;
         const img::Rgba8 px = t.fetch(su.level, x, y);
         acc[0] += uint64_t(w) * px.r, acc[1] += uint64_t(w) * px.g;
         acc[2] += uint64_t(w) * px.b, acc[3] += uint64_t(w) * px.a;
-        wsum += w;
+        sums.wsum += w;
       }
       if (!direct && x < su.x1) {  // Heckbert: first and second differences along x
         q += dq;
@@ -358,17 +381,10 @@ Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool di
     }
   }
   if (st) {
-    st->wsum = std::max(st->wsum, wsum);
+    st->wsum = std::max(st->wsum, sums.wsum);
     st->max_acc = std::max({st->max_acc, acc[0], acc[1], acc[2], acc[3]});
   }
-  if (wsum == 0) {
-    out.flags |= kNoWeight;
-    out.color = t.fetch(su.level, floor_div_step(su.cu + kStep / 2), floor_div_step(su.cv + kStep / 2));
-    return out;
-  }
-  const InvSum r = inv_sum(wsum);  // shared by the four channels
-  out.color = {static_cast<uint8_t>(channel(acc[0], r)), static_cast<uint8_t>(channel(acc[1], r)),
-               static_cast<uint8_t>(channel(acc[2], r)), static_cast<uint8_t>(channel(acc[3], r))};
+  finish(su, t, sums, &out);
   return out;
 }
 

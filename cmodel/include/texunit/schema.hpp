@@ -63,7 +63,8 @@
   X(twrapv, kWrapW, "colour texture: wrap mode along v (Wrap* codes)")   \
   X(wsrc, kWsrcW, "EWA weight source (Wsrc* codes)")                   \
   X(cap, kEwaCountW, "EWA texel cap")                                  \
-  X(filt, kEngineW, "filter engine (Eng* codes)")
+  X(filt, kEngineW, "filter engine (Eng* codes)")                     \
+  X(clip, 1, "EWA sub-texel border weights (the unit's EwaClipVariant)")
 // Material relief fields, used up by the relief stage.
 #define TU_REC_RELIEF(X)                             \
   X(rel, 1, "POM relief on")                         \

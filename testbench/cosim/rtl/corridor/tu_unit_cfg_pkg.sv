@@ -22,4 +22,7 @@ package tu_unit_cfg_pkg;
   localparam bit EllRecurrence = 1'b0;  // B2: 0 analytic (tu_ellipse), 1 seed recurrences (tu_ellipse_rec)
   // texel addressing (tu_texel_addr): bit = tu_formats_pkg::Wrap* code, 1 = the mode is built
   localparam logic [4:0] WrapModes = 5'd1;
+  localparam bit HasEwaClip = 1'b0;  // EWA sub-texel border weights (tu_ewa_border)
+  // clip volume: 0 mm_p1 (tu_clip_p1), 1 mm_p3 (tu_clip_horner), 2 mm_p3_estrin (tu_clip_estrin)
+  localparam int EwaClipVariant = 0;  // mm_p1
 endpackage
