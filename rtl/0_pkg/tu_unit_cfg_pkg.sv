@@ -19,4 +19,7 @@ package tu_unit_cfg_pkg;
   // brdf::Model code: 0 blinn, 1 schlick, 2 msh, 3 dsh, 4 scos2, 5 st16, 6 qr
   localparam int ShadeModel = 2;  // msh
   localparam bit EllRecurrence = 1'b0;  // B2: 0 analytic (tu_ellipse), 1 seed recurrences (tu_ellipse_rec)
+  localparam bit HasNoise = 1'b1;  // noise unit (tu_noise_unit): procedural materials
+  localparam int NoiseDims = 3;  // 2: no material with time, 3: with
+  localparam int NoiseCores = 4;  // octave cores: the largest octave count
 endpackage

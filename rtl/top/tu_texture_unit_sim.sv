@@ -12,6 +12,9 @@ module tu_texture_unit_sim #(
   parameter int HasPom      = {31'b0, tu_unit_cfg_pkg::HasPom},
   parameter int HasIterParallax = {31'b0, tu_unit_cfg_pkg::HasIterParallax},
   parameter int EllRecurrence = {31'b0, tu_unit_cfg_pkg::EllRecurrence},
+  parameter int HasNoise      = {31'b0, tu_unit_cfg_pkg::HasNoise},
+  parameter int NoiseDims     = tu_unit_cfg_pkg::NoiseDims,
+  parameter int NoiseCores    = tu_unit_cfg_pkg::NoiseCores,
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words
 ) (
   input  logic                                  clk_i,
@@ -63,6 +66,7 @@ module tu_texture_unit_sim #(
   input  logic [tu_formats_pkg::TexAddrW-1:0]   hbase_i,
   input  logic [3:0]                            hlw_i,
   input  logic [3:0]                            hlh_i,
+  input  logic [tu_formats_pkg::ProcW-1:0]      proc_i,
   // pixel output
   output logic                                  out_valid_o,
   input  logic                                  out_ready_i,
@@ -91,13 +95,14 @@ module tu_texture_unit_sim #(
   logic [tu_formats_pkg::ShadeWordW-1:0] shade;
   tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear), .HasTriFilter(HasTriFilter), .HasNearest(HasNearest),
                     .HasRelief(HasRelief), .HasShading(HasShading),
-                    .HasPom(HasPom), .HasIterParallax(HasIterParallax), .EllRecurrence(EllRecurrence)) u_tu (
+                    .HasPom(HasPom), .HasIterParallax(HasIterParallax), .EllRecurrence(EllRecurrence),
+                    .HasNoise(HasNoise), .NoiseDims(NoiseDims), .NoiseCores(NoiseCores)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
     .kuy_i, .kvy_i, .m_i, .nn_i, .dm_i, .dexp_i, .laniso_i, .maxlod_i, .lbias_i, .lminlod_i, .lmaxlod_i,
     .tbase_i, .tlw_i, .tlh_i, .tclamp_i, .wsrc_i, .cap_i, .filt_i,
-    .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i,
+    .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i, .proc_i,
     .view_valid_i(view_valid), .view_ready_o(view_ready), .view_ok_i(view[3 * VzW + tu_formats_pkg::PomCW]),
     .vx_i(view[2 * VzW + tu_formats_pkg::PomCW +: VzW]), .vy_i(view[VzW + tu_formats_pkg::PomCW +: VzW]),
     .vz_i(view[tu_formats_pkg::PomCW +: VzW]), .vc_i(view[0 +: tu_formats_pkg::PomCW]),
