@@ -67,21 +67,6 @@ module tu_ellipse (
   localparam int LDW = tu_formats_pkg::EllLodW;
 
   // ---------------- helpers ----------------
-  // log2 fraction of a mantissa 1.(LMW-1): L1 truncating squarings.
-  function automatic logic [L1-1:0] log_frac(input logic [LMW-1:0] m_in);
-    logic [2*LMW-1:0] sq;
-    logic [LMW:0]     m;
-    logic [L1-1:0]    fr;
-    m  = {1'b0, m_in};
-    fr = '0;
-    for (int i = 0; i < L1; i++) begin
-      sq = m[LMW-1:0] * m[LMW-1:0];
-      m  = (LMW+1)'(sq >> (LMW - 1));
-      fr = {fr[L1-2:0], m[LMW]};
-      if (m[LMW]) m = m >> 1;
-    end
-    log_frac = fr;
-  endfunction
   function automatic logic signed [31:0] sat_log(input logic signed [31:0] v);
     if (v > LogMax) sat_log = LogMax;
     else if (v < LogMin) sat_log = LogMin;
@@ -124,6 +109,8 @@ module tu_ellipse (
   logic [RhW-1:0] px0, py0;
   assign px0 = RhW'(uxx) + RhW'(pxx);
   assign py0 = RhW'(uyy) + RhW'(pyy);
+  logic [L1-1:0] lqf0;  // log2 fraction of q's mantissa
+  tu_log2_frac #(.MantW(LMW), .FracW(L1)) u_log_q (.m_i(mq0), .frac_o(lqf0));
   logic [RW-1:0] r_core;  // 1/q mantissa, valid with stage 4
   tu_recip_core u_core (.clk_i, .en_i(en), .m_i(mq0), .r_o(r_core));
 
@@ -151,7 +138,7 @@ module tu_ellipse (
         lx_q[i] <= lx_q[i-1];
       end
       e_q1   <= e0;
-      lqf_q1 <= log_frac(mq0);
+      lqf_q1 <= lqf0;
       a_q1   <= a0;
       b_q1   <= b0;
       c_q1   <= c0;
@@ -193,14 +180,18 @@ module tu_ellipse (
   logic [6:0]         mr1;
   logic [RhW-1:0]     pmn1;
   logic signed [31:0] lp1, lr1;
+  logic [L1-1:0]      lpf1;
   always_comb begin
     mr1 = '0;
     for (int i = 0; i < RhW; i++) begin
       if (pm_q1[i]) mr1 = 7'(i);
     end
     pmn1 = pm_q1 << (RhW - 1 - 32'(mr1));
+  end
+  tu_log2_frac #(.MantW(LMW), .FracW(L1)) u_log_rho (.m_i(pmn1[RhW-1 -: LMW]), .frac_o(lpf1));
+  always_comb begin
     // 2 log2 rho = log2 max(Px', Py') - 2 NumF - 4 log2 q (L1 fraction bits); halved, floored
-    lp1 = ((32'(mr1) - 32'(2 * NF)) <<< L1) + 32'(log_frac(pmn1[RhW-1 -: LMW]));
+    lp1 = ((32'(mr1) - 32'(2 * NF)) <<< L1) + 32'(lpf1);
     lp1 = lp1 - (lq1 <<< 2);
     lr1 = (pm_q1 == '0) ? LogMin : sat_log(lp1 >>> 2);
   end
@@ -275,14 +266,16 @@ module tu_ellipse (
   logic [4:0]         ml3;
   logic [RtW:0]       lamn3;
   logic signed [31:0] ll3;
+  logic [L1-1:0]      llf3;
   always_comb begin
     ml3 = '0;
     for (int i = 0; i <= RtW; i++) begin
       if (lam_q3[i]) ml3 = 5'(i);
     end
     lamn3 = lam_q3 << (RtW - 32'(ml3));
-    ll3 = ((32'(ml3) + 32'(k_q3) - 32'(2 * NF + 1)) <<< L1) + 32'(log_frac(LMW'(lamn3 >> (RtW + 1 - LMW))));
   end
+  tu_log2_frac #(.MantW(LMW), .FracW(L1)) u_log_lam (.m_i(LMW'(lamn3 >> (RtW + 1 - LMW))), .frac_o(llf3));
+  assign ll3 = ((32'(ml3) + 32'(k_q3) - 32'(2 * NF + 1)) <<< L1) + 32'(llf3);
   logic signed [31:0] ll_q4, lmaj2_q4;
   logic               sz_q4;
   logic [CW-1:0]      ae_q4, be_q4, ce_q4;
@@ -324,7 +317,11 @@ module tu_ellipse (
     fexp4 = 32'(mp4) + off4;
     if (fexp4 > 32'sd127) fexp4 = 32'sd127;
     if (fexp4 < -32'sd128) fexp4 = -32'sd128;
-    lf4   = ((32'(mp4) + off4) <<< L1) + 32'(log_frac(apn4[PW-1 -: LMW]));
+  end
+  logic [L1-1:0] lff4;
+  tu_log2_frac #(.MantW(LMW), .FracW(L1)) u_log_f (.m_i(apn4[PW-1 -: LMW]), .frac_o(lff4));
+  always_comb begin
+    lf4   = ((32'(mp4) + off4) <<< L1) + 32'(lff4);
     flags4 = '0;
     lmaj4 = sat_log(lmaj2_q4 >>> 2);
     cap4  = sat_log(lmaj4 - 32'(la_q[3]));

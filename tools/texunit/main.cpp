@@ -18,6 +18,7 @@
 #include "plan.hpp"
 #include "render_cmd.hpp"
 #include "sysmodel_cmd.hpp"
+#include "filter_cmd.hpp"
 #include "objspace_cmd.hpp"
 #include "report.hpp"
 #include "texunit/parallel.hpp"
@@ -353,6 +354,8 @@ int main(int argc, char** argv) {
       ->check(tu::cli::non_negative_integer() & CLI::Range(1ull, 1ull << 26));
   rep->add_option("--yosys-cache", ro.yosys_cache, "JSON cache of Yosys results (keyed by the RTL files' hash)");
   rep->add_flag("--no-yosys", no_yosys, "do not synthesise (cells: not measured)");
+  rep->add_flag("--yosys-cached-only", ro.yosys_cached_only,
+                "take cells from matching --yosys-cache entries only; never synthesise (stale: not measured)");
   rep->add_option("--stdcell-cache", ro.stdcell_cache, "standard-cell results (texunit stdcell); read only");
   rep->add_option("--root", ro.root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
   rep->add_option("--shard", shard_text, "measure the block groups i with i % N == K (groups in report order)")
@@ -398,6 +401,8 @@ int main(int argc, char** argv) {
   auto* sysm = tu::cli::add_sysmodel(app, sysmodel_args);
   tu::cli::ObjspaceArgs objspace_args;
   auto* objs = tu::cli::add_objspace(app, objspace_args);
+  tu::cli::FilterCompareArgs filter_args;
+  auto* fcmp = tu::cli::add_filter_compare(app, filter_args);
 
   try {
     app.parse(argc, argv);
@@ -412,6 +417,7 @@ int main(int argc, char** argv) {
     if (*rnd) return tu::cli::run_render(render_args);
     if (*sysm) return tu::cli::run_sysmodel(sysmodel_args);
     if (*objs) return tu::cli::run_objspace(objspace_args);
+    if (*fcmp) return tu::cli::run_filter_compare(filter_args);
     if (*cos) return cmd_cosim(block, file, stall, seed, fst, json, rtl_variant, shard);
     if (*gen) return cmd_gen_rtl(root, check);
     if (*rep) {

@@ -253,6 +253,11 @@ void area(Row& r, const Options& opt, AreaCache& cache) {
     return;
   }
   const std::string key = rtl_hash(opt.root, r.rtl_top, "scripts/yosys_area.sh");
+  const auto hit = cache.j.find(r.rtl_top);
+  if (opt.yosys_cached_only && (hit == cache.j.end() || !hit->is_object() || hit->value("hash", "") != key)) {
+    r.area_source = "not measured: no Yosys cache entry for this RTL (scripts/report.sh synthesises it)";
+    return;  // a stale entry is not a measurement of this RTL
+  }
   json& e = cache.j[r.rtl_top];
   if (!e.is_object() || e.value("hash", "") != key) {
     const auto files = rtl_files(opt.root, r.rtl_top);
@@ -565,6 +570,13 @@ Points points(const std::vector<Row>& rs, const std::string& grp, const Measure&
   return p;
 }
 
+// Text for inside a gnuplot single-quoted string: a quote is written twice.
+std::string gnuplot_quoted(const std::string& t) {
+  std::string q;
+  for (char c : t) q += c == '\'' ? std::string("''") : std::string(1, c);
+  return q;
+}
+
 // Per block: error against cycles and against Yosys cells, frontier joined by a line.
 void plots(const std::vector<Row>& rs, const std::string& dir) {
   fs::create_directories(dir);
@@ -585,7 +597,7 @@ void plots(const std::vector<Row>& rs, const std::string& dir) {
         d << p.xy[i].first << " " << p.xy[i].second << " " << p.rows[i]->variant << "/" << p.rows[i]->scheme << "\n";
       for (size_t i : frontier(p.xy)) fr << p.xy[i].first << " " << p.xy[i].second << "\n";
       g << "set output '" << stem << ".png'\nset title '" << grp << ": max abs error ("
-        << p.rows[0]->err_unit << ") against " << m.stem << "'\n"
+        << gnuplot_quoted(p.rows[0]->err_unit) << ") against " << m.stem << "'\n"
         << "set xlabel '" << m.label << "'\n"
         << "set ylabel 'max abs error'\n"
         << "plot '" << stem << ".dat' using 1:2 with points pt 7 ps 1.2 title 'variant', '"
@@ -808,18 +820,20 @@ void write(const std::vector<Row>& rs, const Options& opt) {
                 na(r.latency_cycles).c_str(), r.ii_cycles, na(r.cells).c_str(), na(r.multipliers).c_str(),
                 r.cmodel_ns_per_item, r.rtl_sim_items_per_s < 0 ? "n/a" : fmt_g(r.rtl_sim_items_per_s, "%.0f").c_str());
   if (!opt.yosys) std::printf("(cells: not measured: yosys not installed or --no-yosys)\n");
+  // Plots first: gnuplot is the step that can fail, and a failure must not leave a new JSON
+  // beside old plots.
+  if (!opt.plots.empty()) {
+    plots(rs, opt.plots);
+    if (std::any_of(rs.begin(), rs.end(), [](const Row& r) { return is_relief_block(r.block); }))
+      std::cerr << (relief_plot(opt.plots) ? "wrote " + opt.plots + "/relief_psnr_vs_steps.png, relief_psnr_vs_cycles.png\n"
+                                            : std::string("gnuplot failed (relief plots skipped)\n"));
+  }
   if (!opt.json.empty()) {
     std::ofstream o(opt.json);
     o << "[\n";
     for (size_t i = 0; i < rs.size(); ++i) o << "  " << rs[i].json() << (i + 1 < rs.size() ? ",\n" : "\n");
     o << "]\n";
     std::cerr << "wrote " << opt.json << "\n";
-  }
-  if (!opt.plots.empty()) {
-    plots(rs, opt.plots);
-    if (std::any_of(rs.begin(), rs.end(), [](const Row& r) { return is_relief_block(r.block); }))
-      std::cerr << (relief_plot(opt.plots) ? "wrote " + opt.plots + "/relief_psnr_vs_steps.png, relief_psnr_vs_cycles.png\n"
-                                            : std::string("gnuplot failed (relief plots skipped)\n"));
   }
   if (!opt.markdown.empty()) markdown(rs, opt);
 }

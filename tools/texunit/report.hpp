@@ -40,6 +40,7 @@ struct Options {
   std::string yosys_cache;          // JSON cache of Yosys results keyed by the RTL files' hash
   bool yosys = true;                // false: area "not measured: " + no_yosys_why
   std::string no_yosys_why = "--no-yosys";
+  bool yosys_cached_only = false;   // true: use matching cache entries, never synthesise (stale: not measured)
   std::string stdcell_cache;        // JSON cache of scripts/stdcell_flow.sh results (read only)
   uint64_t count = 20000;           // random vectors per registry block (plus its stiff set)
   Shard shard;                      // --shard K/N: the groups i with i % N == K (groups() order)
