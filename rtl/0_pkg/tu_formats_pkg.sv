@@ -41,6 +41,12 @@ package tu_formats_pkg;
   localparam int NoisePipeLatency = 7;  // pipelined scheme (K cores) + sum/normalise, II 1
   localparam int NoiseSerialLatency = 10;  // octave-serial scheme (one core)
   localparam int NoiseSerialIi = 4;  // octave-serial scheme: one sample per K clocks
+  localparam int NoiseFreqF = 24;  // frequency f/W, lattice cells per level-0 texel: fraction bits
+  localparam int NoiseFreqW = 32;  // frequency code: unsigned (f/W < 256)
+  localparam int NoiseWeightW = 11;  // octave weight in [0,1]: unsigned, EllLogF fraction bits (exact clamp)
+  localparam int NoiseGainF = 8;  // smoke opacity gain: fraction bits
+  localparam int NoiseGainW = 16;  // smoke opacity gain code: unsigned (gain < 256)
+  localparam int NoiseUnitLatency = 9;  // tu_noise_unit pipelined: coords, cores, sum, value
   localparam int ClipInW = 13;  // clip distance d: signed, ClipInF fraction bits; domain [-0.5, 0.5], clamped
   localparam int ClipInF = 12;
   localparam int ClipAW = 12;  // a = min(|d|, 0.5): unsigned, ClipInF fraction bits

@@ -40,12 +40,31 @@ typedef struct packed {
   logic [tu_formats_pkg::EllLodW-1:0] lminlod;  // trilinear min lod
   logic [tu_formats_pkg::EllLodW-1:0] lmaxlod;  // trilinear max lod
 } tu_tri_t;
+// procedural material constants
+typedef struct packed {
+  logic on;  // procedural colour: the noise unit, not a filter engine
+  logic smoke;  // smoke (turbulence, opacity) instead of fbm
+  logic limit;  // footprint-limited octaves
+  logic [2:0] noct;  // octaves K (1..NoiseOctaves)
+  logic [tu_formats_pkg::NoiseFreqW-1:0] freq;  // lattice cells per level-0 texel, NoiseFreqF bits
+  logic [tu_formats_pkg::EllLogW-1:0] lfreq;  // log2(freq) + lod bias, signed, EllLogF bits
+  logic [tu_formats_pkg::NoiseCoordW-1:0] sx;  // seed shift x, s32.16
+  logic [tu_formats_pkg::NoiseCoordW-1:0] sy;  // seed shift y, s32.16
+  logic [tu_formats_pkg::NoiseCoordW-1:0] z;  // speed t, s32.16 (0: the 2-D slice)
+  logic [tu_formats_pkg::NoiseNormW-1:0] norm;  // C_K, NoiseNormF bits
+  logic [tu_formats_pkg::NoiseValW-1:0] mabs;  // smoke: E|noise|, s19.16
+  logic [tu_formats_pkg::NoiseOutW-1:0] thr;  // smoke threshold, u17.16
+  logic [tu_formats_pkg::NoiseGainW-1:0] gain;  // smoke gain, NoiseGainF bits
+  logic [23:0] c0;  // colour at value 0, {b, g, r}
+  logic [23:0] c1;  // colour at value 1, {b, g, r}
+} tu_proc_t;
 // pixel on its way to the filter
 typedef struct packed {
   logic [tu_formats_pkg::PerspXyW-1:0] x;  // pixel x
   logic [tu_formats_pkg::PerspXyW-1:0] y;  // pixel y
   logic ovf;  // B1 span set-up overflow
   tu_material_t mat;  // material (tu_material_t)
+  tu_proc_t proc;  // procedural material (tu_proc_t)
 } tu_fpix_t;
 // pixel before the relief stage
 typedef struct packed {

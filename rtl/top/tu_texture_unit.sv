@@ -13,6 +13,9 @@
 // With HasShading the filtered pixel is joined with its word from the shade port (the shader's
 // N, L, H, exponent, cut-off and colours, brdf::shade::pack) and shaded by tu_shade (II = 1, the
 // model's latency) on its way out.
+// With HasNoise a procedural span (proc_i.on) sends its pixels to tu_noise_unit instead of a
+// filter engine: the colour of the fBm / smoke at B1's (u, v) with the octave weights of B2's
+// lrho (docs/blocks/noise.md §5); it takes turns with the engines and carries its pixels' fields.
 // Per-pixel records: tu_records.svh (generated from cmodel/include/texunit/schema.hpp).
 `include "tu_records.svh"
 `include "tu_assert.svh"
@@ -43,6 +46,11 @@ module tu_texture_unit #(
   // their clip volume (0 mm_p1, 1 mm_p3 Horner, 2 mm_p3 Estrin)
   parameter int HasEwaClip     = {31'b0, tu_unit_cfg_pkg::HasEwaClip},
   parameter int EwaClipVariant = tu_unit_cfg_pkg::EwaClipVariant,
+  // 1: noise unit (tu_noise_unit) beside the filter engines for procedural materials (proc_i.on):
+  // NoiseDims 2 (materials without time) or 3, NoiseCores octave cores (the largest octave count)
+  parameter int HasNoise   = {31'b0, tu_unit_cfg_pkg::HasNoise},
+  parameter int NoiseDims  = tu_unit_cfg_pkg::NoiseDims,
+  parameter int NoiseCores = tu_unit_cfg_pkg::NoiseCores,
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -96,6 +104,8 @@ module tu_texture_unit #(
   input  logic                                  rdm_i,     // distance map (cap = rlayers)
   input  logic [tu_formats_pkg::DmLayersW-1:0]  dlayers_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]   dbase_i,   // the map in the depth RAM
+  // procedural material (tu_proc_t; on = 0: a texture material)
+  input  logic [tu_formats_pkg::ProcW-1:0]      proc_i,
   // per-pixel tangent-space view, one word per pixel of a relief span, in pixel order
   input  logic                                  view_valid_i,
   output logic                                  view_ready_o,
@@ -141,7 +151,8 @@ module tu_texture_unit #(
   localparam int TriW  = tu_formats_pkg::TriW;     // tu_tri_t: per-triangle B2 fields
   localparam int PixW  = tu_formats_pkg::PixW;     // tu_pix_t: x, y, ovf, material, relief
   localparam int FPixW = tu_formats_pkg::FpixW;    // tu_fpix_t: after the relief stage
-  localparam int SpanW = 2 * PW + 2 * QW + 3 * XW + TriW + tu_formats_pkg::MaterialW + tu_formats_pkg::ReliefW;
+  localparam int SpanW = 2 * PW + 2 * QW + 3 * XW + TriW + tu_formats_pkg::MaterialW + tu_formats_pkg::ReliefW +
+                         tu_formats_pkg::ProcW;
 
   // ---------------- span set-up: fork to B1 set-up and numerator set-up, join ----------------
   logic ps_in_ready, ns_in_ready, ps_valid, ns_valid, sj_valid, sj_ready;
@@ -182,7 +193,7 @@ module tu_texture_unit #(
     in_rel.dlayers = dlayers_i;
     in_rel.dbase   = dbase_i;
   end
-  assign span_side = {a_i, d_i, g_i, h_i, x0_i, x1_i, y_i, in_tri, in_mat, in_rel};
+  assign span_side = {a_i, d_i, g_i, h_i, x0_i, x1_i, y_i, in_tri, in_mat, in_rel, proc_i};
   assign in_ready_o = ps_in_ready && ns_in_ready;
 
   tu_persp_setup u_psetup (
@@ -207,13 +218,15 @@ module tu_texture_unit #(
   tu_tri_t      s_tri;
   tu_material_t s_mat;
   tu_relief_t   s_rel;
-  assign {s_a, s_d, s_g, s_h, s_x0, s_x1, s_y, s_tri, s_mat, s_rel} = ns_side;
+  tu_proc_t     s_proc;
+  assign {s_a, s_d, s_g, s_h, s_x0, s_x1, s_y, s_tri, s_mat, s_rel, s_proc} = ns_side;
   tu_pix_t s_pix;  // x: filled per pixel by the expander
   always_comb begin
     s_pix.fpix.x   = '0;
     s_pix.fpix.y   = s_y;
     s_pix.fpix.ovf = ps_ovf;
     s_pix.fpix.mat = s_mat;
+    s_pix.fpix.proc = s_proc;
     s_pix.rel      = s_rel;
   end
 
@@ -311,7 +324,7 @@ module tu_texture_unit #(
     assign unused_qgh = ^{ex_qg, ex_qh};  // the recurrence's denominators
   end
   logic unused_b2;
-  assign unused_b2 = ^{b2_lrho, b2_tflags};  // reported by the C model's record only
+  assign unused_b2 = ^b2_tflags;  // reported by the C model's record only
   // Holds the sideband of every pixel inside B1/B2 (at most max(PerspLatency, EllB2Lat) + 1).
   tu_fifo #(.Width(PixW), .Depth(16)) u_side (
     .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && b2_in_ready), .in_ready_o(sb_in_ready),
@@ -322,11 +335,11 @@ module tu_texture_unit #(
   // ---------------- relief stage ----------------
   // B1's (u, v) shifted by the material's POM relief; everything else rides along in order.
   localparam int RSideW = FPixW + 1 + 3 * tu_formats_pkg::EllCoefW +
-                                   2 * tu_formats_pkg::EllLogW + 2 * tu_formats_pkg::EllLodW + 5;
+                                   3 * tu_formats_pkg::EllLogW + 2 * tu_formats_pkg::EllLodW + 5;
   tu_relief_t pj_rel;
   assign pj_rel = sb_pix.rel;
   logic [RSideW-1:0] rs_in, rs_out;
-  assign rs_in = {sb_pix.fpix, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_tlod, b2_flags};
+  assign rs_in = {sb_pix.fpix, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_tlod, b2_flags, b2_lrho};
   logic          rs_valid, rs_ready;
   logic [UW-1:0] rs_u, rs_v;
   localparam int RrW = 2 * tu_formats_pkg::PomNW + 3;  // relief result: n, steps, flags
@@ -376,10 +389,10 @@ module tu_texture_unit #(
   logic [UW-1:0] f_u, f_v;
   logic [RrW-1:0] f_rr;
   logic [tu_formats_pkg::EllCoefW-1:0] f_ae, f_ce, f_be;
-  logic [tu_formats_pkg::EllLogW-1:0]  f_lmaj, f_lmin;
+  logic [tu_formats_pkg::EllLogW-1:0]  f_lmaj, f_lmin, f_lrho;
   logic [tu_formats_pkg::EllLodW-1:0]  f_lod, f_tlod;
   logic [4:0]                          f_eflags;
-  assign {f_pix, f_guard, f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_tlod, f_eflags, f_u, f_v, f_rr} = fq_data;
+  assign {f_pix, f_guard, f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_tlod, f_eflags, f_lrho, f_u, f_v, f_rr} = fq_data;
   assign f_mat = f_pix.mat;
 
   // ---------------- filter ----------------
@@ -420,7 +433,12 @@ module tu_texture_unit #(
       default: sel = (HasBilinear != 0) ? EngBil : EngFirst;
     endcase
   end
-  assign can_go    = inflight_q == '0 || cur_q == sel;
+  // A procedural pixel goes to the noise unit (f_noise), which takes turns with the engines the
+  // same way (nz_busy: it has pixels in flight) and carries its pixels' fields itself.
+  logic f_noise, nz_busy, nz_in_ready, nz_valid;
+  logic [31:0]   nz_rgba;
+  assign f_noise   = HasNoise != 0 && f_pix.proc.on;
+  assign can_go    = (inflight_q == '0 || cur_q == sel) && !nz_busy;
   logic [3:0]    in_ready_of, valid_of, req_of;  // indexed by engine
   logic [AW-1:0] cur_addr;
   logic [31:0]   cur_rgba;
@@ -436,21 +454,22 @@ module tu_texture_unit #(
     endcase
   end
   assign eng_ready = in_ready_of[sel];
-  assign fq_ready  = can_go && eng_ready && os_in_ready;
-  assign fire_flt  = fq_valid && fq_ready;
+  assign fq_ready  = f_noise ? inflight_q == '0 && nz_in_ready : can_go && eng_ready && os_in_ready;
+  assign fire_flt  = fq_valid && fq_ready && !f_noise;
   tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
-    .clk_i, .rst_ni, .in_valid_i(fq_valid && can_go && eng_ready), .in_ready_o(os_in_ready),
+    .clk_i, .rst_ni, .in_valid_i(fq_valid && !f_noise && can_go && eng_ready), .in_ready_o(os_in_ready),
     .in_data_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rr}), .out_valid_o(os_valid),
     .out_ready_i(p_ready && flt_valid), .out_data_o(os_data)
   );
   // cur_q is the engine of the oldest pixel in flight (set when it accepted its first).
   logic eng_in_valid;
-  assign eng_in_valid = fq_valid && can_go && os_in_ready;
+  assign eng_in_valid = fq_valid && !f_noise && can_go && os_in_ready;
   assign flt_valid   = valid_of[cur_q];
-  assign p_valid     = flt_valid && os_valid;
-  assign fire_out    = p_valid && p_ready;
-  assign {p_x, p_y, p_pflags, p_eflags, p_rr} = os_data;
-  assign p_rgba      = cur_rgba;
+  assign p_valid     = nz_busy ? nz_valid : flt_valid && os_valid;
+  assign fire_out    = flt_valid && os_valid && p_ready;
+  logic [OsW-1:0] nz_side;
+  assign {p_x, p_y, p_pflags, p_eflags, p_rr} = nz_busy ? nz_side : os_data;
+  assign p_rgba      = nz_busy ? nz_rgba : cur_rgba;
   // Only the engine with pixels in flight reads texels.
   assign tex_req_o   = req_of[cur_q];
   assign tex_addr_o  = cur_addr;
@@ -538,13 +557,40 @@ module tu_texture_unit #(
     assign nst_addr     = '0;
     assign nst_rgba     = '0;
   end
+  // Noise unit: a procedural pixel's colour from tu_noise_unit at (u, v) with lrho, no texels.
+  if (HasNoise != 0) begin : g_noise
+    localparam int NzCntW = $clog2(tu_formats_pkg::NoiseUnitLatency + 2);
+    logic [NzCntW-1:0] nz_inflight_q;
+    logic              nz_fire_in, nz_fire_out;
+    assign nz_fire_in  = fq_valid && f_noise && fq_ready;
+    assign nz_fire_out = nz_valid && p_ready;
+    tu_noise_unit #(.Dims(NoiseDims), .Octaves(NoiseCores), .SideW(OsW)) u_noise (
+      .clk_i, .rst_ni, .in_valid_i(fq_valid && f_noise && inflight_q == '0), .in_ready_o(nz_in_ready),
+      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .lrho_i(f_lrho), .proc_i(f_pix.proc),
+      .side_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rr}),
+      .out_valid_o(nz_valid), .out_ready_i(p_ready), .rgba_o(nz_rgba), .side_o(nz_side)
+    );
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) nz_inflight_q <= '0;
+      else nz_inflight_q <= nz_inflight_q + NzCntW'(nz_fire_in) - NzCntW'(nz_fire_out);
+    end
+    assign nz_busy = nz_inflight_q != '0;
+  end else begin : g_no_noise
+    assign nz_busy     = 1'b0;
+    assign nz_in_ready = 1'b0;
+    assign nz_valid    = 1'b0;
+    assign nz_rgba     = '0;
+    assign nz_side     = '0;
+    logic unused_noise;
+    assign unused_noise = ^{f_lrho, f_pix.proc};
+  end
   // Bilinear pixels: level 0, four texels; trilinear: floor(lod), eight; nearest: level 0, one;
-  // no EWA flags.
-  assign p_level   = cur_q == EngEwa ? ewa_level : cur_q == EngTri ? tri_level : '0;
-  assign p_visited = cur_q == EngEwa ? ewa_visited
+  // no EWA flags; procedural pixels: none of these.
+  assign p_level   = nz_busy ? '0 : cur_q == EngEwa ? ewa_level : cur_q == EngTri ? tri_level : '0;
+  assign p_visited = nz_busy ? '0 : cur_q == EngEwa ? ewa_visited
                                      : tu_formats_pkg::EwaCountW'(cur_q == EngTri ? 8 : cur_q == EngNst ? 1 : 4);
-  assign p_inside  = cur_q == EngEwa ? ewa_inside : '0;
-  assign p_flags   = cur_q == EngEwa ? ewa_flags : '0;
+  assign p_inside  = nz_busy || cur_q != EngEwa ? '0 : ewa_inside;
+  assign p_flags   = nz_busy || cur_q != EngEwa ? '0 : ewa_flags;
 
 
   // ---------------- shading ----------------
@@ -583,6 +629,7 @@ module tu_texture_unit #(
   `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, twrap_i,
                                                                  wsrc_i, cap_i, filt_i, clip_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
                                                                  hlw_i, hlh_i, rdm_i, dlayers_i, dbase_i})
+  `TU_ASSERT_HANDSHAKE(InHandshakeProc, in_valid_i, in_ready_o, {proc_i})
   `TU_ASSERT_HANDSHAKE(ViewHandshake, view_valid_i, view_ready_o, {view_ok_i, vx_i, vy_i, vz_i, vc_i})
   `TU_ASSERT_HANDSHAKE(ShadeHandshake, shade_valid_i, shade_ready_o, {shade_i})
 endmodule

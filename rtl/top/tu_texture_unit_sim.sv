@@ -15,6 +15,9 @@ module tu_texture_unit_sim #(
   parameter int EllRecurrence = {31'b0, tu_unit_cfg_pkg::EllRecurrence},
   parameter int HasEwaClip     = {31'b0, tu_unit_cfg_pkg::HasEwaClip},
   parameter int EwaClipVariant = tu_unit_cfg_pkg::EwaClipVariant,
+  parameter int HasNoise      = {31'b0, tu_unit_cfg_pkg::HasNoise},
+  parameter int NoiseDims     = tu_unit_cfg_pkg::NoiseDims,
+  parameter int NoiseCores    = tu_unit_cfg_pkg::NoiseCores,
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words,
   // the depth RAM also holds the distance maps (the default scene's wall: 1,114,112 words)
   parameter int DepthWords = 2 * Words
@@ -72,6 +75,7 @@ module tu_texture_unit_sim #(
   input  logic                                  rdm_i,
   input  logic [tu_formats_pkg::DmLayersW-1:0]  dlayers_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]   dbase_i,
+  input  logic [tu_formats_pkg::ProcW-1:0]      proc_i,
   // pixel output
   output logic                                  out_valid_o,
   input  logic                                  out_ready_i,
@@ -102,13 +106,14 @@ module tu_texture_unit_sim #(
                     .HasRelief(HasRelief), .HasShading(HasShading),
                     .HasPom(HasPom), .HasIterParallax(HasIterParallax), .HasDistanceMap(HasDistanceMap),
                     .EllRecurrence(EllRecurrence),
-                    .HasEwaClip(HasEwaClip), .EwaClipVariant(EwaClipVariant)) u_tu (
+                    .HasEwaClip(HasEwaClip), .EwaClipVariant(EwaClipVariant),
+                    .HasNoise(HasNoise), .NoiseDims(NoiseDims), .NoiseCores(NoiseCores)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
     .kuy_i, .kvy_i, .m_i, .nn_i, .dm_i, .dexp_i, .laniso_i, .maxlod_i, .lbias_i, .lminlod_i, .lmaxlod_i,
     .tbase_i, .tlw_i, .tlh_i, .twrap_i, .wsrc_i, .cap_i, .filt_i, .clip_i,
-    .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i, .rdm_i, .dlayers_i, .dbase_i,
+    .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i, .rdm_i, .dlayers_i, .dbase_i, .proc_i,
     .view_valid_i(view_valid), .view_ready_o(view_ready), .view_ok_i(view[3 * VzW + tu_formats_pkg::PomCW]),
     .vx_i(view[2 * VzW + tu_formats_pkg::PomCW +: VzW]), .vy_i(view[VzW + tu_formats_pkg::PomCW +: VzW]),
     .vz_i(view[tu_formats_pkg::PomCW +: VzW]), .vc_i(view[0 +: tu_formats_pkg::PomCW]),

@@ -495,3 +495,39 @@ TEST(TextureUnitRtl, ShadedSphereEqualsCModelCyclesPredicted) {
   bil.filter = scene::Filter::Bilinear;
   EXPECT_THROW(cosim::render_rtl(s, bil), std::invalid_argument);
 }
+
+// The noise unit in the top (docs/blocks/noise.md §5 "In the RTL unit"): docs/scenes/procedural.json
+// at 64 x 48 (fbm ground, smoke wall), then with time, fewer octaves and no footprint limit, then
+// with the wall textured (engine turns between the noise unit and EWA): RTL = C model on every
+// pixel with 30 % stalls, cycles = ewa::texture_unit_cycles without.
+TEST(TextureUnitRtl, ProceduralSceneEqualsCModelCyclesPredicted) {
+  auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/procedural.json");
+  s.camera.width = 64;
+  s.camera.height = 48;
+  auto timed = s;
+  timed.materials.at("smoke").procedural->time = 1.3;
+  timed.materials.at("marble").procedural->octaves = 3;
+  timed.materials.at("marble").procedural->footprint_limit = false;
+  auto mixed = s;
+  mixed.materials.at("smoke").procedural.reset();
+  for (const auto* sc : {&s, &timed, &mixed}) {
+    const auto r = cosim::render_rtl(*sc, {});
+    EXPECT_TRUE(r.ok()) << r.first_mismatch;
+    EXPECT_GT(r.frame.pixels.size(), 1000u);
+    EXPECT_EQ(r.cycles, r.predicted_cycles);
+    std::printf("procedural: %zu px, cycles measured %llu predicted %llu\n", r.frame.pixels.size(),
+                (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
+    cosim::RtlRenderOptions o;
+    o.stall_prob = 0.3;
+    const auto q = cosim::render_rtl(*sc, o);
+    EXPECT_TRUE(q.ok()) << q.first_mismatch;
+    EXPECT_EQ(q.mismatches, 0u) << q.first_mismatch;
+  }
+  // Water's normal is not in the RTL; the bilinear-only unit has no noise unit.
+  const auto water = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/water.json");
+  EXPECT_THROW(cosim::render_rtl(water, {}), std::invalid_argument);
+  cosim::RtlRenderOptions bil;
+  bil.has_ewa = false;
+  bil.filter = scene::Filter::Bilinear;
+  EXPECT_THROW(cosim::render_rtl(s, bil), std::invalid_argument);
+}

@@ -14,6 +14,7 @@
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "harness.hpp"
+#include "noise/noise_proc.hpp"
 #include "pom/relief.hpp"
 #include "texel_ram.hpp"
 #include "texture/trilinear_lod.hpp"
@@ -34,8 +35,29 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kWrap,
   kWsrc, kCap, kFilt, kClip, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
-  kRdm, kDlayers, kDbase, kRowSize
+  kRdm, kDlayers, kDbase,
+  kProc, kRowSize = kProc + 5  // tu_proc_t: five 64-bit words, least significant first
 };
+
+// A procedural material's tu_proc_t bits (schema.hpp TU_REC_PROC: first field most significant).
+std::array<uint64_t, 5> pack_proc(const noise::ProcCodes& c) {
+  using namespace schema;
+  auto rgb = [](const std::array<uint8_t, 3>& k) { return uint64_t(k[0]) | uint64_t(k[1]) << 8 | uint64_t(k[2]) << 16; };
+  const uint64_t value[] = {1, c.smoke, c.limit, static_cast<uint64_t>(c.octaves), c.freq,
+                            code(c.lfreq, fmt::kEllLogW), code(c.sx, fmt::kNoiseCoordW), code(c.sy, fmt::kNoiseCoordW),
+                            code(c.z, fmt::kNoiseCoordW), c.norm, code(c.mean_abs, fmt::kNoiseValW), c.thr, c.gain,
+                            rgb(c.c0), rgb(c.c1)};
+#define TU_X_W(field, width, desc) (width),
+  constexpr int width[] = {TU_REC_PROC(TU_X_W)};
+#undef TU_X_W
+  static_assert(std::size(width) == sizeof value / sizeof value[0], "one value per field");
+  std::array<uint64_t, 5> w{};
+  int bit = 0;
+  for (size_t f = std::size(width); f-- > 0;)  // the last field is least significant
+    for (int b = 0; b < width[f]; ++b, ++bit)
+      if (value[f] >> b & 1) w[static_cast<size_t>(bit / 64)] |= uint64_t(1) << (bit % 64);
+  return w;
+}
 
 template <class V>
 void set_wide(V& port, uint64_t l, uint64_t h) {
@@ -91,6 +113,8 @@ void drive(V& d, const Row& r) {
   d.rdm_i = static_cast<uint8_t>(r[kRdm]);
   d.dlayers_i = static_cast<uint8_t>(r[kDlayers]);
   d.dbase_i = static_cast<uint32_t>(r[kDbase]);
+  for (size_t j = 0; j < (schema::kProcW + 31) / 32; ++j)  // the VlWide words of proc_i
+    d.proc_i[j] = static_cast<uint32_t>(r[kProc + j / 2] >> (32 * (j % 2)));
 }
 
 template <class V>
@@ -130,10 +154,14 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   }
   if (o.relief && !o.has_ewa)
     throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
+  // The noise unit (HasNoise) is in the full unit: fbm and smoke; water's normal is not in its RTL.
   for (const auto& [name, m] : s.materials)
-    if (m.procedural)
-      throw std::invalid_argument(s.source + ": /materials/" + name + "/procedural: the noise unit is not in the RTL "
-                                  "texture unit yet (docs/blocks/noise.md §5); render it with --engine cmodel or ref");
+    if (m.procedural && (!o.has_ewa || o.corridor_unit || m.procedural->kind == scene::ProceduralKind::Water))
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/procedural: " +
+                                  (m.procedural->kind == scene::ProceduralKind::Water
+                                       ? "water is not in the RTL noise unit yet (docs/blocks/noise.md §6)"
+                                       : "this unit has no noise unit (the full unit has)") +
+                                  "; render it with --engine cmodel or ref");
   // The full unit shades (HasShading); a light needs it, and a model the materials name must be its.
   const bool shade_unit = o.has_ewa && !o.corridor_unit;  // the corridor plan has no lights
   if (!shade_unit && !s.lights.empty())
@@ -172,12 +200,15 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     std::optional<relief::Maps> maps;  // with o.relief and a relief material
     uint64_t hbase = 0;                // its depth map in the depth RAM
     uint64_t dbase = 0;                // its distance map (after the depth map), if it has one
+    std::optional<noise::ProcCodes> proc;  // a procedural material's constants
   };
   std::vector<Obj> objs;
   std::vector<uint32_t> ram, depth_ram;
   for (size_t oi = 0; oi < s.objects.size(); ++oi) {
     const auto& ob = s.objects[oi];
-    Obj x{scene::build_texture(s, s.materials.at(ob.material).texture), ram.size() + 1, {}, std::nullopt, 0, 0};  // after its border word
+    Obj x{scene::build_texture(s, s.materials.at(ob.material).texture), ram.size() + 1, {}, std::nullopt, 0, 0, std::nullopt};  // after its border word
+    if (s.materials.at(ob.material).procedural)
+      x.proc = noise::quantise(render::procedural_params(s.materials.at(ob.material), x.tex.levels[0].width));
     if (o.relief && s.materials.at(ob.material).relief) {
       x.maps = relief::make_maps(s, ob.material);
       x.hbase = depth_ram.size();
@@ -256,6 +287,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(c.object)].material);
       r[kFilt] = static_cast<uint64_t>(eng);
       r[kClip] = clip_on(m);
+      if (ob.proc) {
+        const auto pw = pack_proc(*ob.proc);
+        std::copy(pw.begin(), pw.end(), r.begin() + kProc);
+      }
       if (ob.maps) {
         const auto& rel = *m.relief;
         const pom::View q = relief::quantise({}, rel.scale);
@@ -298,6 +333,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         pc.engine = eng;
         pc.guard = guard;
         pc.clip = r[kClip] != 0;
+        pc.noise = ob.proc.has_value();
         // Trilinear: one bilinear pass for a guard pixel or a lod (GL rule) at the top level.
         const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;
         pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(tlod >> fmt::kTexLodF), top);
@@ -404,11 +440,14 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       // Bilinear / trilinear / nearest pixels: the unit reports 4 / 8 / 1 texels, no EWA flags (the C
       // model's level and texel records of those are its own bookkeeping: compared is the engine
       // that filtered, and the colour).
+      // Procedural pixels (the noise unit): no texels, no filter flags.
       const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(e.object)].material);
+      const bool noise = objs[static_cast<size_t>(e.object)].proc.has_value();
       const bool same = rec.x == e.x && rec.y == e.y && rec.color == e.color && rec.b2_flags == e.b2_flags &&
                         rec.relief_n == e.relief_n && rec.relief_steps == e.relief_steps &&
                         rec.relief_flags == e.relief_flags &&
-                        (eng == ewa::Engine::Ewa
+                        (noise ? rec.lod == 0 && rec.texels == 0 && rec.texels_inside == 0 && rec.ewa_flags == 0
+                         : eng == ewa::Engine::Ewa
                              ? rec.lod == e.lod && rec.texels == e.texels && rec.texels_inside == e.texels_inside &&
                                    rec.ewa_flags == e.ewa_flags
                              : rec.texels == (eng == ewa::Engine::Trilinear ? 8 : eng == ewa::Engine::Nearest ? 1 : 4) &&

@@ -36,16 +36,17 @@ case $case in
     ;;
   render_procedural)
     # Procedural materials: an animation (one PNG per frame, the smoke moves), the PSNR against the
-    # truth, and the RTL engine's refusal (exit 2, nothing written).
+    # reference, and the RTL engine's refusal of water (exit 2, nothing written; fbm and smoke
+    # render on the RTL: TextureUnitRtl.ProceduralSceneEqualsCModelCyclesPredicted).
     "$tu" render docs/scenes/procedural.json --engine cmodel --frames 3 --dt 0.5 --out "$tmp/a" 2>/dev/null >/dev/null
     for i in 0000 0001 0002; do [ -s "$tmp/a/cmodel_$i.png" ] || fail "frame $i missing"; done
     ! cmp -s "$tmp/a/cmodel_0000.png" "$tmp/a/cmodel_0001.png" || fail "frames 0 and 1 are equal"
     "$tu" render docs/scenes/procedural.json --engine cmodel --vs ref --out "$tmp/b" 2>/dev/null >"$tmp/b.txt"
     grep -q "PSNR cmodel vs ref: .* dB over 2\?[0-9]* covered pixels; ground .* dB smoke .* dB" "$tmp/b.txt" || fail "$(cat "$tmp/b.txt")"
     [ -s "$tmp/b/heat_cmodel_vs_ref.png" ] || fail "heat map missing"
-    rc=0; "$tu" render docs/scenes/procedural.json --engine rtl --out "$tmp/c" 2>"$tmp/err" >/dev/null || rc=$?
+    rc=0; "$tu" render docs/scenes/water.json --engine rtl --out "$tmp/c" 2>"$tmp/err" >/dev/null || rc=$?
     [ "$rc" = 2 ] || fail "rtl engine: exit $rc"
-    grep -q "/materials/marble/procedural: the noise unit is not in the RTL" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    grep -q "/materials/water/procedural: water is not in the RTL noise unit" "$tmp/err" || fail "message: $(cat "$tmp/err")"
     [ ! -e "$tmp/c" ] || fail "partial output written"
     ;;
   plan_default)
@@ -82,12 +83,13 @@ case $case in
     # Its one texture clamps: the texel addressing keeps repeat and clamp only (bits 0 and 2).
     grep -q "localparam logic \[4:0\] WrapModes = 5'd5;" "$tmp/tu_unit_cfg_pkg.sv" || fail "WrapModes"
     [ "$(val "$tmp/p.json" "d['wrap_modes']")" = "['repeat', 'clamp']" ] || fail "wrap_modes $(cat "$tmp/p.json")"
+    grep -q "localparam bit HasNoise = 1'b0;" "$tmp/tu_unit_cfg_pkg.sv" || fail "HasNoise"
     # Exact scene cycles (texture path): bilinear on every span is cheaper than the authored EWA.
     [ "$(val "$tmp/p.json" "0 < d['scene_cycles']['specialised'] < d['scene_cycles']['full']")" = True ] || fail "scene cycles"
     # The package lints (-Wall) as the RTL top would read it.
     cat >"$tmp/tu_cfg_user.sv" <<'SV'
 module tu_cfg_user (
-  output logic [10:0] has_o,
+  output logic [11:0] has_o,
   output logic [2:0]  wsrc_o,
   output logic [31:0] sizes_o,
   output logic [4:0]  wrap_o
@@ -95,10 +97,11 @@ module tu_cfg_user (
   assign wrap_o = tu_unit_cfg_pkg::WrapModes;
   assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasTriFilter, tu_unit_cfg_pkg::HasNearest, tu_unit_cfg_pkg::HasRelief,
                   tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax, tu_unit_cfg_pkg::HasShading, tu_unit_cfg_pkg::EllRecurrence,
-                  tu_unit_cfg_pkg::HasEwaClip};
+                  tu_unit_cfg_pkg::HasEwaClip, tu_unit_cfg_pkg::HasNoise};
   assign wsrc_o = tu_unit_cfg_pkg::WeightSources;
   assign sizes_o = tu_unit_cfg_pkg::PomMaxLayers + tu_unit_cfg_pkg::WtabLog2N + tu_unit_cfg_pkg::Wtab2dLog2N +
-                   tu_unit_cfg_pkg::PerspLanes + tu_unit_cfg_pkg::ShadeModel + tu_unit_cfg_pkg::EwaClipVariant;
+                   tu_unit_cfg_pkg::PerspLanes + tu_unit_cfg_pkg::ShadeModel + tu_unit_cfg_pkg::EwaClipVariant +
+                   tu_unit_cfg_pkg::NoiseDims + tu_unit_cfg_pkg::NoiseCores;
 endmodule
 SV
     verilator --lint-only -Wall "$tmp/tu_unit_cfg_pkg.sv" "$tmp/tu_cfg_user.sv" || fail "package does not lint"
@@ -107,6 +110,16 @@ SV
     # The committed configuration the RTL top reads by default is the full unit's, as plan writes it.
     "$tu" plan default --out-full "$tmp/full.sv" >/dev/null
     diff -u rtl/0_pkg/tu_unit_cfg_pkg.sv "$tmp/full.sv" || fail "rtl/0_pkg/tu_unit_cfg_pkg.sv is not the full unit: texunit plan default --out-full rtl/0_pkg/tu_unit_cfg_pkg.sv"
+    ;;
+  plan_procedural)
+    # Procedural materials: the noise unit, 3-D cores (the smoke moves through time), the fewest
+    # octave cores meeting min_psnr_db on the procedural pixels (docs/blocks/noise.md §5).
+    "$tu" plan docs/scenes/procedural.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
+    [ "$(val "$tmp/p.json" "d['noise']['dims'], sorted(d['noise']['materials'])")" = "(3, ['marble', 'smoke'])" ] || fail "$(cat "$tmp/p.json")"
+    k=$(val "$tmp/p.json" "d['noise']['octave_cores']")
+    [ "$(val "$tmp/p.json" "all((float(v) if v != 'identical' else 1e9) >= d['budget']['min_psnr_db'] for kk, v in d['noise']['psnr_db_by_octaves'].items() if int(kk) == $k)")" = True ] || fail "octaves"
+    grep -q "localparam bit HasNoise = 1'b1;" "$tmp/cfg.sv" || fail "HasNoise"
+    grep -q "localparam int NoiseCores = $k;" "$tmp/cfg.sv" || fail "NoiseCores"
     ;;
   plan_corridor)
     "$tu" plan docs/scenes/corridor.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"

@@ -297,6 +297,45 @@ json unit_json(const Unit& u) {
           {"fmax_mhz_slowest_block", u.area_measured() ? json(u.fmax_mhz()) : json(kNoArea)}};
 }
 
+// The noise unit (docs/blocks/noise.md §5 "In the RTL texture unit"): in the unit when a material
+// is procedural; 2-D cores unless a material moves through time (speed != 0); the fewest octave
+// cores K whose C-model render (each material's octaves capped at K, C_K for the capped count)
+// meets min_psnr_db against the float reference with every material's own octaves, over the
+// procedural pixels (none meeting it: the largest octave count, the authored picture).
+struct NoisePlan {
+  bool on = false, water = false;
+  int dims = 2, cores = 0;
+  std::vector<std::string> materials;
+  json psnr_by_octaves = json::object();
+  std::vector<bool> objects;  // per object: procedural
+};
+NoisePlan plan_noise(const scene::Scene& s) {
+  NoisePlan p;
+  int kmax = 0;
+  for (const auto& [name, m] : s.materials)
+    if (m.procedural) {
+      p.materials.push_back(name);
+      kmax = std::max(kmax, m.procedural->octaves);
+      if (m.procedural->speed != 0) p.dims = 3;
+      p.water = p.water || m.procedural->kind == scene::ProceduralKind::Water;
+    }
+  for (const auto& o : s.objects) p.objects.push_back(s.materials.at(o.material).procedural.has_value());
+  if (p.materials.empty()) return p;
+  p.on = true;
+  const auto procedural = [&](int object) { return p.objects.at(static_cast<size_t>(object)); };
+  const render::Frame ref = render::render_ref(s);
+  for (int k = 1; k <= kmax; ++k) {
+    scene::Scene t = s;
+    for (auto& [name, m] : t.materials)
+      if (m.procedural) m.procedural->octaves = std::min(k, m.procedural->octaves);
+    const double db = psnr_objects(render::render_cmodel(t), ref, procedural);
+    p.psnr_by_octaves[std::to_string(k)] = std::isinf(db) ? json("identical") : json(db);
+    if (p.cores == 0 && db >= s.budget.min_psnr_db) p.cores = k;
+  }
+  if (p.cores == 0) p.cores = kmax;
+  return p;
+}
+
 // The RTL configuration: tu_unit_cfg_pkg, read by the RTL top.
 struct Config {
   bool trilinear, ewa, bilinear, tri_filter, nearest, relief, pom, iter_parallax;
@@ -308,6 +347,8 @@ struct Config {
   int wrap_modes = 31;  // bit = tex::Wrap code: the modes some texture uses (repeat always)
   bool ewa_clip = false;  // EWA sub-texel border weights (tu_ewa_border in the walk)
   int clip_variant = 0;   // their clip volume: ewa::kRtlClipVariants code
+  bool noise = false;  // noise unit (tu_noise_unit) for procedural materials
+  int noise_dims = 3, noise_cores = tu::fmt::kNoiseOctaves;
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -339,6 +380,9 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam bit HasEwaClip = 1'b" << c.ewa_clip << ";  // EWA sub-texel border weights (tu_ewa_border)\n"
      << "  // clip volume: 0 mm_p1 (tu_clip_p1), 1 mm_p3 (tu_clip_horner), 2 mm_p3_estrin (tu_clip_estrin)\n"
      << "  localparam int EwaClipVariant = " << c.clip_variant << ";  // " << ewa::kRtlClipVariants[static_cast<size_t>(c.clip_variant)] << "\n"
+     << "  localparam bit HasNoise = 1'b" << c.noise << ";  // noise unit (tu_noise_unit): procedural materials\n"
+     << "  localparam int NoiseDims = " << c.noise_dims << ";  // 2: no material with time, 3: with\n"
+     << "  localparam int NoiseCores = " << c.noise_cores << ";  // octave cores: the largest octave count\n"
      << "endpackage\n";
   return sv.str();
 }
@@ -347,7 +391,7 @@ std::string package(const Config& c, const std::string& origin) {
 
 uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::Filter(const scene::Material&)>& filter_of,
                            bool relief_stage, std::optional<scene::WeightSource> weights, bool ell_recurrence,
-                           int clip_variant) {
+                           int clip_variant, const std::vector<bool>& noise_objects) {
   scene::Scene t = scene::without_relief(s);
   t.footprint = ell_recurrence ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
   for (auto& [name, m] : t.materials) m.filter = filter_of(m);
@@ -370,17 +414,23 @@ uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::F
       // A B1-guard pixel is recorded with 1 texel (the workload's guard is EWA's: no level tried).
       c.one_level = ewa::trilinear_one_level(rec.texels == 1, static_cast<int>(std::floor(rec.lod)), top_level[obj]);
     }
+    c.noise = obj < noise_objects.size() && noise_objects[obj];
     costs.push_back(c);
   }
   ewa::EngineParams ep;
   ep.clip_variant = clip_variant;
+  // Noise-unit pixels (II 1) can outrun the relief stage's pass-through, which only the
+  // cycle-by-cycle model of the whole unit counts (= the RTL, render --engine rtl).
+  if (relief_stage && !ell_recurrence && std::find(noise_objects.begin(), noise_objects.end(), true) != noise_objects.end())
+    return ewa::texture_unit_cycles(costs, std::vector<relief::StagePixel>(costs.size()), ep);
   return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage, ell_recurrence)), ep);
 }
 
 int run(const Options& opt) {
   scene::Scene s = opt.scene == "default" ? scene::default_scene() : scene::load(opt.scene);
-  // No noise unit in the RTL top yet: procedural materials are planned on their texture path, the
-  // float reference included (docs/blocks/noise.md §6).
+  // The noise unit is planned on the authored scene; the texture path (filters, footprint, relief)
+  // without the procedural descriptions, the float reference included.
+  const NoisePlan noise = plan_noise(s);
   for (auto& [name, m] : s.materials) m.procedural.reset();
   const auto table = load_table(opt.report);
   const std::string report_name = opt.report.empty() ? kBuiltInReport : opt.report;
@@ -679,11 +729,13 @@ int run(const Options& opt) {
   }
   for (int k = 0; k < 5; ++k)
     if (planned_shaded.wrap_modes >> k & 1) wrap_names.push_back(scene::kWrapNames[k]);
+  planned_shaded.noise = noise.on;
+  if (noise.on) planned_shaded.noise_dims = noise.dims, planned_shaded.noise_cores = noise.cores;
   if (brdf_row) planned_shaded.shade_model = shading::model_of(brdf_row->variant);
   // The full unit: F_MSH (the thesis's model) when the scene does not need another.
   const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n,
                           planned.persp_lanes, false, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel,
-                          true, 31, true, clip_code};
+                          true, 31, true, clip_code, true};
 
   // 5. Scene cycles of the RTL texture unit (texture path), from the exact cycle model
   //    ewa::stream_cycles on the bit-accurate C-model render's per-pixel work (equal to Verilator:
@@ -691,7 +743,7 @@ int run(const Options& opt) {
   //    unit with the plan's filter per material, and the full unit as authored.
   auto scene_cycles = [&](std::function<scene::Filter(const scene::Material&)> filter_of, bool relief_stage,
                           std::optional<scene::WeightSource> weights, bool rec) -> uint64_t {
-    return scene_stream_cycles(s, filter_of, relief_stage, weights, rec, clip_code);
+    return scene_stream_cycles(s, filter_of, relief_stage, weights, rec, clip_code, noise.objects);
   };
   auto authored = [](const scene::Material& m) { return m.filter; };
   auto planned_filter = [&](const scene::Material& m) {
@@ -723,6 +775,13 @@ int run(const Options& opt) {
               {"shading", shade ? json({{"model", brdf_row->name()}, {"why", shade_why}, {"latency_cycles", brdf_row->latency}})
                                 : json(false)},
               {"wrap_modes", wrap_names},
+              {"noise", noise.on ? json({{"materials", noise.materials}, {"dims", noise.dims}, {"octave_cores", noise.cores},
+                                         {"scheme", "pipelined (one pixel per clock; the top has no octave-serial noise unit)"},
+                                         {"latency_cycles", tu::fmt::kNoiseUnitLatency},
+                                         {"psnr_db_by_octaves", noise.psnr_by_octaves},
+                                         {"psnr_source", "C-model render, octaves capped at K, vs the float reference, procedural pixels"},
+                                         {"rtl_has_every_kind", !noise.water}})
+                                 : json(false)},
               {"persp", persp->name()},
               {"weights", weights ? json(weights->name()) : json(nullptr)},
               {"weights_db", weights ? json(weight_render_db(*weights)) : json(nullptr)},
@@ -770,6 +829,12 @@ int run(const Options& opt) {
   std::printf("wrap modes: %s (the texel addressing leaves out the others)\n", wraps.c_str());
   std::printf("persp: %s, max %.4g texel\n", persp->name().c_str(), persp->max_abs);
   std::printf("shading: %s\n", shade ? (brdf_row->name() + ", " + shade_why).c_str() : shade_why.c_str());
+  if (noise.on)
+    std::printf("noise unit: %d-D, %d octave cores (pipelined, latency %d), the fewest meeting %g dB on the procedural "
+                "pixels: %s%s\n", noise.dims, noise.cores, tu::fmt::kNoiseUnitLatency, s.budget.min_psnr_db,
+                noise.psnr_by_octaves.dump().c_str(), noise.water ? "; water is not in the RTL noise unit" : "");
+  else
+    std::printf("noise unit: none (no procedural material)\n");
   if (weights) std::printf("weights: %s, %.2f dB (%s); clip volume: %s, %.2f dB (C-model EWA render with border "
                            "weights vs float EWA with exact Phi ones, texture path)\n",
                            weights->name().c_str(), weight_render_db(*weights),

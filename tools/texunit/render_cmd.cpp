@@ -168,6 +168,7 @@ int run_render(const RenderArgs& a) {
   opt.threads = a.threads;
   render::Frame frame;
   bool ok = true;
+  cosim::RtlRenderOptions ro;  // --engine rtl
   if (a.pipeline == "object-space") {
     if (a.engine != "ref" && a.engine != "cmodel" && a.engine != "rtl")
       throw std::invalid_argument("render --pipeline object-space: --engine must be ref, cmodel or rtl (not " + a.engine + ")");
@@ -182,7 +183,6 @@ int run_render(const RenderArgs& a) {
       print_objspace_stats(r.stats);
     }
   } else if (a.engine == "rtl") {
-    cosim::RtlRenderOptions ro;
     ro.has_ewa = a.rtl_unit != "bilinear";
     ro.corridor_unit = a.rtl_unit == "corridor";
     ro.filter = f;
@@ -242,10 +242,20 @@ int run_render(const RenderArgs& a) {
     std::printf("\n");
   }
   // Frames 1.. of an animation (frame 0 gives the flags and the dump). Time moves only the
-  // procedural materials, which the RTL unit rejects: its frames are all frame 0.
-  for (int i = 1; i < a.frames; ++i)
-    img::write_png_rgba(png_tmps[static_cast<size_t>(i)],
-                        a.engine == "rtl" ? frame.image : render_at(scene::at_time(s, i * a.dt)).image);
+  // procedural materials; the RTL unit renders each frame against the C model.
+  for (int i = 1; i < a.frames; ++i) {
+    const scene::Scene si = scene::at_time(s, i * a.dt);
+    render::Frame fi;
+    if (a.engine == "rtl") {
+      const auto r = cosim::render_rtl(si, ro);
+      if (!r.ok()) std::printf("rtl frame %d: %llu mismatches; first: %s\n", i, (unsigned long long)r.mismatches, r.first_mismatch.c_str());
+      ok = ok && r.ok();
+      fi = r.frame;
+    } else {
+      fi = render_at(si);
+    }
+    img::write_png_rgba(png_tmps[static_cast<size_t>(i)], fi.image);
+  }
   {
     const auto& flags = render::pixel_flags();
     const auto counts = render::flag_counts(frame);

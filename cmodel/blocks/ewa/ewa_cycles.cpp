@@ -43,9 +43,18 @@ int walk_cycles(const PixelCost& c, const EngineParams& p) {
 
 StreamModel::Times StreamModel::add(const PixelCost& c, uint64_t avail) {
   // An engine switch waits for the other engine's last output.
-  const uint64_t drained = any_ && last_engine_ != c.engine ? last_out_ + 1 : 0;
+  const bool other = last_noise_ != c.noise || (!c.noise && last_engine_ != c.engine);
+  const uint64_t drained = any_ && other ? last_out_ + 1 : 0;
   const uint64_t ready = std::max(drained, avail);
   uint64_t a = 0;
+  if (c.noise) {
+    a = std::max(noise_free_, ready);
+    last_out_ = a + static_cast<uint64_t>(fmt::kNoiseUnitLatency);
+    noise_free_ = a + 1;
+    any_ = last_noise_ = true;
+    return {a, last_out_};
+  }
+  last_noise_ = false;
   switch (c.engine) {
     case Engine::Bilinear:
       a = std::max(bil_free_, ready);

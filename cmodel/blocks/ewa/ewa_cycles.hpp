@@ -49,6 +49,7 @@ struct PixelCost {
   Engine engine = Engine::Ewa;  // the texture-unit engine that filters the pixel
   bool one_level = false;  // trilinear: one bilinear pass (B1 guard, or the lod at the top level)
   bool clip = false;       // EWA with sub-texel border weights (the grown box is in `box`)
+  bool noise = false;      // procedural: the noise unit (tu_noise_unit), not `engine`
 };
 
 // Per-pixel counts of the C model's result.
@@ -63,7 +64,8 @@ int walk_cycles(const PixelCost& c, const EngineParams& p = {});  // hand-over t
 // harness measures as sim_cycles with no stalls.
 // Pixels for the bilinear engine: accepted at a, output at a + 6, accepts again at a + 7; for the
 // trilinear engine: output at a + 15 (one pass: a + 8), accepts again the clock after; for the
-// nearest engine: output at a + 3, accepts again at a + 4. The engines
+// nearest engine: output at a + 3, accepts again at a + 4; for the noise unit (pipelined): output at
+// a + NoiseUnitLatency, accepts again at a + 1. The engines (the noise unit one of them)
 // take turns, so the first pixel after a switch is accepted the cycle after the other engine's
 // last output (tu_texture_unit).
 uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival = 0,
@@ -82,8 +84,8 @@ class StreamModel {
 
  private:
   EngineParams p_;
-  uint64_t setup_free_ = 0, walker_free_ = 0, bil_free_ = 0, tri_free_ = 0, nst_free_ = 0, last_out_ = 0;
-  bool any_ = false;
+  uint64_t setup_free_ = 0, walker_free_ = 0, bil_free_ = 0, tri_free_ = 0, nst_free_ = 0, noise_free_ = 0, last_out_ = 0;
+  bool any_ = false, last_noise_ = false;
   Engine last_engine_ = Engine::Ewa;
 };
 

@@ -24,16 +24,16 @@
 
 namespace tu::noise {
 
-// Formats of the procedural path (docs/blocks/noise.md §5). They join formats.hpp (and
-// tu_formats_pkg.sv through gen-rtl) with the noise unit's RTL in the texture-unit top; until
-// then only the C model uses them.
+// Formats of the procedural path (docs/blocks/noise.md §5): the ones the RTL noise unit
+// (rtl/noise/tu_noise_unit.sv) shares are in formats.hpp; water's stay here (C model only).
 namespace pfmt {
-inline constexpr int kNoiseFreqF = 24;  // frequency f / W, lattice cells per texel: fraction bits
-inline constexpr int kNoiseFreqW = 32;  // frequency code: unsigned (f / W < 256)
-inline constexpr int kNoiseLodF = 10;   // footprint log2 and octave weights: fraction bits (= EllLogF)
-inline constexpr int kNoiseWeightW = kNoiseLodF + 1;  // octave weight in [0, 1]: unsigned
-inline constexpr int kNoiseGainF = 8;   // smoke opacity gain: fraction bits
-inline constexpr int kNoiseGainW = 16;  // smoke opacity gain code: unsigned (gain < 256)
+inline constexpr int kNoiseFreqF = fmt::kNoiseFreqF;  // frequency f / W, lattice cells per texel: fraction bits
+inline constexpr int kNoiseFreqW = fmt::kNoiseFreqW;  // frequency code: unsigned (f / W < 256)
+inline constexpr int kNoiseLodF = fmt::kEllLogF;      // footprint log2 and octave weights: fraction bits
+inline constexpr int kNoiseWeightW = fmt::kNoiseWeightW;  // octave weight in [0, 1]: unsigned
+static_assert(kNoiseWeightW == kNoiseLodF + 1, "a weight holds exactly 1");
+inline constexpr int kNoiseGainF = fmt::kNoiseGainF;  // smoke opacity gain: fraction bits
+inline constexpr int kNoiseGainW = fmt::kNoiseGainW;  // smoke opacity gain code: unsigned (gain < 256)
 inline constexpr int kWaterAmpF = 8;    // water height amplitude a: fraction bits
 inline constexpr int kWaterAmpW = 13;   // water amplitude code: unsigned (a < 32; |n|^2 stays < 2^55)
 }  // namespace pfmt

@@ -43,8 +43,13 @@ ProcCodes quantise(const ProcParams& p) {
   c.octaves = std::clamp(p.octaves, 1, fmt::kNoiseOctaves);
   c.freq = static_cast<uint32_t>(std::clamp<int64_t>(round_i64(std::ldexp(p.freq, pfmt::kNoiseFreqF)), 1,
                                                      int64_t(UINT32_MAX)));
-  c.lfreq = static_cast<int32_t>(round_i64(
-      std::ldexp(std::log2(std::ldexp(double(c.freq), -pfmt::kNoiseFreqF)) + p.lod_bias, pfmt::kNoiseLodF)));
+  // Saturated to B2's lrho format (s(EllLogW).EllLogF, the RTL's field): a bias beyond +-128
+  // octaves keeps every octave or none either way.
+  constexpr int64_t kLogMax = (int64_t(1) << (fmt::kEllLogW - 1)) - 1;
+  c.lfreq = static_cast<int32_t>(std::clamp<int64_t>(
+      round_i64(std::ldexp(std::log2(std::ldexp(double(c.freq), -pfmt::kNoiseFreqF)) + std::clamp(p.lod_bias, -256.0, 256.0),
+                           pfmt::kNoiseLodF)),
+      -kLogMax - 1, kLogMax));
   c.sx = round_i64(std::ldexp(p.sx, fmt::kNoiseTF));
   c.sy = round_i64(std::ldexp(p.sy, fmt::kNoiseTF));
   c.z = p.dims == 2 ? 0 : wrap32(round_i64(std::ldexp(std::fmod(p.z, 256.0), fmt::kNoiseTF)));

@@ -55,6 +55,13 @@
   X(NoisePipeLatency, kNoiseCoreLatency + 1, "pipelined scheme (K cores) + sum/normalise, II 1") \
   X(NoiseSerialLatency, kNoiseCoreLatency + kNoiseOctaves, "octave-serial scheme (one core)")   \
   X(NoiseSerialIi, kNoiseOctaves, "octave-serial scheme: one sample per K clocks")              \
+  /* Noise unit in the texture unit: procedural materials (docs/blocks/noise.md §5) */         \
+  X(NoiseFreqF, 24, "frequency f/W, lattice cells per level-0 texel: fraction bits")            \
+  X(NoiseFreqW, 32, "frequency code: unsigned (f/W < 256)")                                     \
+  X(NoiseWeightW, 11, "octave weight in [0,1]: unsigned, EllLogF fraction bits (exact clamp)")  \
+  X(NoiseGainF, 8, "smoke opacity gain: fraction bits")                                         \
+  X(NoiseGainW, 16, "smoke opacity gain code: unsigned (gain < 256)")                           \
+  X(NoiseUnitLatency, kNoiseCoreLatency + 3, "tu_noise_unit pipelined: coords, cores, sum, value") \
   /* Gaussian pixel model: clip volume, weight, weight tables (docs/blocks/gaussian.md) */      \
   X(ClipInW, 13, "clip distance d: signed, ClipInF fraction bits; domain [-0.5, 0.5], clamped")  \
   X(ClipInF, 12, "")                                                                            \

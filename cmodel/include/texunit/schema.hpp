@@ -87,12 +87,30 @@
   X(lbias, kTexLodBiasW, "trilinear lod bias (s14.8)") \
   X(lminlod, kEllLodW, "trilinear min lod")  \
   X(lmaxlod, kEllLodW, "trilinear max lod")
+// Procedural material constants (noise::ProcCodes, docs/blocks/noise.md §5) for tu_noise_unit.
+#define TU_REC_PROC(X)                                                       \
+  X(on, 1, "procedural colour: the noise unit, not a filter engine")         \
+  X(smoke, 1, "smoke (turbulence, opacity) instead of fbm")                  \
+  X(limit, 1, "footprint-limited octaves")                                   \
+  X(noct, 3, "octaves K (1..NoiseOctaves)")                                  \
+  X(freq, kNoiseFreqW, "lattice cells per level-0 texel, NoiseFreqF bits")   \
+  X(lfreq, kEllLogW, "log2(freq) + lod bias, signed, EllLogF bits")          \
+  X(sx, kNoiseCoordW, "seed shift x, s32.16")                                \
+  X(sy, kNoiseCoordW, "seed shift y, s32.16")                                \
+  X(z, kNoiseCoordW, "speed t, s32.16 (0: the 2-D slice)")                   \
+  X(norm, kNoiseNormW, "C_K, NoiseNormF bits")                               \
+  X(mabs, kNoiseValW, "smoke: E|noise|, s19.16")                             \
+  X(thr, kNoiseOutW, "smoke threshold, u17.16")                              \
+  X(gain, kNoiseGainW, "smoke gain, NoiseGainF bits")                        \
+  X(c0, 24, "colour at value 0, {b, g, r}")                                  \
+  X(c1, 24, "colour at value 1, {b, g, r}")
 // A pixel on its way to the filter: position, B1 span set-up overflow, material.
 #define TU_REC_FPIX(X)                       \
   X(x, kPerspXyW, "pixel x")                 \
   X(y, kPerspXyW, "pixel y")                 \
   X(ovf, 1, "B1 span set-up overflow")       \
-  X(mat, kMaterialW, "material (tu_material_t)")
+  X(mat, kMaterialW, "material (tu_material_t)") \
+  X(proc, kProcW, "procedural material (tu_proc_t)")
 // A pixel before the relief stage.
 #define TU_REC_PIX(X)                        \
   X(fpix, kFpixW, "tu_fpix_t")               \
@@ -104,6 +122,7 @@
   X(Material, TU_REC_MATERIAL, "material fields of a pixel")  \
   X(Relief, TU_REC_RELIEF, "material relief fields")          \
   X(Tri, TU_REC_TRI, "per-triangle footprint constants")      \
+  X(Proc, TU_REC_PROC, "procedural material constants")       \
   X(Fpix, TU_REC_FPIX, "pixel on its way to the filter")      \
   X(Pix, TU_REC_PIX, "pixel before the relief stage")
 

@@ -25,4 +25,7 @@ package tu_unit_cfg_pkg;
   localparam bit HasEwaClip = 1'b0;  // EWA sub-texel border weights (tu_ewa_border)
   // clip volume: 0 mm_p1 (tu_clip_p1), 1 mm_p3 (tu_clip_horner), 2 mm_p3_estrin (tu_clip_estrin)
   localparam int EwaClipVariant = 0;  // mm_p1
+  localparam bit HasNoise = 1'b0;  // noise unit (tu_noise_unit): procedural materials
+  localparam int NoiseDims = 3;  // 2: no material with time, 3: with
+  localparam int NoiseCores = 4;  // octave cores: the largest octave count
 endpackage
