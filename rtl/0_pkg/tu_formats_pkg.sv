@@ -271,10 +271,11 @@ package tu_formats_pkg;
   localparam int EllFlagMagnify = 4;  // minor_c < 1 texel: lod = 0
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
-  localparam int MaterialW = 56;  // material fields of a pixel
+  localparam int MaterialW = 62;  // material fields of a pixel
   localparam int ReliefW = 94;  // material relief fields
   localparam int TriW = 104;  // per-triangle footprint constants
-  localparam int FpixW = 81;  // pixel on its way to the filter
-  localparam int PixW = 175;  // pixel before the relief stage
+  localparam int ProcW = 270;  // procedural material constants
+  localparam int FpixW = 357;  // pixel on its way to the filter
+  localparam int PixW = 451;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage
