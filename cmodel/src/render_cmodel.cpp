@@ -4,10 +4,13 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <stdexcept>
 
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
+#include "feline/feline_fx.hpp"
 #include "pom/relief.hpp"
 #include "texture/trilinear_lod.hpp"
 #include "texunit/parallel.hpp"
@@ -54,7 +57,9 @@ ewa::Engine engine_of(scene::Filter f) {
     case scene::Filter::Bilinear: return ewa::Engine::Bilinear;
     case scene::Filter::Trilinear: return ewa::Engine::Trilinear;
     case scene::Filter::Ewa: return ewa::Engine::Ewa;
+    case scene::Filter::Feline: break;
   }
+  if (f == scene::Filter::Feline) throw std::invalid_argument("filter feline: the RTL texture unit has no Feline engine yet");
   return ewa::Engine::Ewa;
 }
 
@@ -92,6 +97,9 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
                           ? std::optional(relief::make_maps(s, o.material))
                           : std::nullopt);
   const auto mats = object_materials(s);
+  std::vector<uint64_t> tex_base;  // per object: its texture's trace base (texel-cache model)
+  for (const auto& o : s.objects)
+    tex_base.push_back(uint64_t(std::distance(s.textures.begin(), s.textures.find(s.materials.at(o.material).texture))) << 32);
   std::vector<std::optional<noise::ProcCodes>> procs;  // per procedural object: the unit's constants
   for (const auto& p : procedural_objects(s, texs))
     procs.push_back(opt.procedural && p ? std::optional(noise::quantise(*p)) : std::nullopt);
@@ -150,6 +158,8 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
         pixels.push_back(rec);
         continue;
       }
+      std::optional<tex::TexelTrace> trace;
+      if (opt.trace_texels) trace.emplace(&rec.texel_addrs, tex_base[static_cast<size_t>(c.object)]);
       switch (filter.value_or(m.filter)) {
         case scene::Filter::Nearest:
           rec.color = tex::nearest(tx, 0, in.u, in.v);
@@ -168,6 +178,15 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           rec.texels = 8;
           break;
         }
+        case scene::Filter::Feline: {
+          const auto r = feline::fx::filter(in, tx, {m.feline_max_probes, tex::lod_params(m.lod_bias, m.min_lod, m.max_lod)});
+          rec.color = r.color;
+          rec.lod = std::ldexp(double(r.lod), -fmt::kTexLodF);
+          rec.tri_flags = r.tri_flags;
+          rec.texels = r.texels;
+          rec.probes = r.probes;
+          break;
+        }
         case scene::Filter::Ewa: {
           const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels,
                                                   m.clip.empty() ? nullptr : &clip::variant(m.clip)});
@@ -180,9 +199,10 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           break;
         }
       }
+      trace.reset();
       rec.color = shaded(c, x, y, rec.color);
       f.image.at(x, y) = rec.color;
-      pixels.push_back(rec);
+      pixels.push_back(std::move(rec));
     }
     if (const int done = ++rows_done; opt.progress && (done % 8 == 0 || done == h))
       std::fprintf(stderr, "\rC-model render %3d%%", done * 100 / h);

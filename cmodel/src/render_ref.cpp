@@ -9,6 +9,7 @@
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_fx.hpp"
 #include "ewa/ewa_ref.hpp"
+#include "feline/feline_ref.hpp"
 #include "pom/pom_layers.hpp"
 #include "pom/relief.hpp"
 #include "texture/trilinear_lod.hpp"
@@ -161,6 +162,15 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
           rec.color = to8(tex::trilinear_ref(tx, rec.lod, u, v));
           rec.texels = 8;
           break;
+        case scene::Filter::Feline: {
+          const auto r = feline::filter_ref(tx, u, v, j, {m.feline_max_probes, m.max_aniso, m.lod_bias, m.min_lod, m.max_lod});
+          rec.color = to8(r.color);
+          rec.lod = r.lod;
+          rec.tri_flags = r.tri_flags;
+          rec.texels = r.texels;
+          rec.probes = r.probes;
+          break;
+        }
         case scene::Filter::Ewa: {
           const auto r = ewa::filter_ref(tx, u, v, j, {m.max_aniso, ewa::kDefaultMaxTexels, !m.clip.empty()});
           rec.color = to8(r.color);

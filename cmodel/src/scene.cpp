@@ -286,9 +286,10 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
   m.name = name;
   m.texture = n.str("texture");
   if (!s.textures.count(m.texture)) n.fail_at("texture", "unknown texture '" + m.texture + "'");
-  const auto f = n.str("filter", std::string("ewa"), {"nearest", "bilinear", "trilinear", "ewa"});
+  const auto f = n.str("filter", std::string("ewa"), {"nearest", "bilinear", "trilinear", "ewa", "feline"});
   m.filter = f == "nearest" ? Filter::Nearest : f == "bilinear" ? Filter::Bilinear
-             : f == "trilinear" ? Filter::Trilinear : Filter::Ewa;
+             : f == "trilinear" ? Filter::Trilinear : f == "feline" ? Filter::Feline : Filter::Ewa;
+  m.feline_max_probes = n.integer("feline_max_probes", 1, fmt::kFelNMax, 8);
   const auto w = n.str("weights", std::string("formula"), {"formula", "table1d", "table2d"});
   m.weights = w == "table1d" ? WeightSource::Table1d : w == "table2d" ? WeightSource::Table2d
                                                                       : WeightSource::Formula;
@@ -582,6 +583,7 @@ const char* to_string(Filter f) {
     case Filter::Bilinear: return "bilinear";
     case Filter::Trilinear: return "trilinear";
     case Filter::Ewa: return "ewa";
+    case Filter::Feline: return "feline";
   }
   return "?";
 }

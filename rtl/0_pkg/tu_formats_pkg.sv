@@ -201,6 +201,16 @@ package tu_formats_pkg;
   localparam int ShadeWordW = 320;  // shade port word: {on, N, L, H, n, c_cut, ks*lc rgb, lc rgb, ambient}
   localparam int EwaDrainCycles = 5;  // tu_ewa_walk: clocks from the last texel to the accumulated sums
   localparam int EwaNormCycles = 6;  // tu_ewa_walk normalisation: mantissa, 4 reciprocal stages, round
+  localparam int FelNMax = 16;  // largest probe cap Nmax (material feline_max_probes, 1..FelNMax)
+  localparam int FelProbeW = 5;  // probe count N and the cap: unsigned integers, 1..FelNMax
+  localparam int FelSigF = 16;  // major semi-axis sigma1 (level-0 texels, from EwaExpF-bit log): frac bits
+  localparam int FelAxisMaxLog2 = 13;  // sigma1 clamped to 2^FelAxisMaxLog2 texels (flag; > TexMaxLevels - 1)
+  localparam int FelSigW = 30;  // sigma1 and D = sigma1 - sigma2: unsigned, FelSigF fraction bits
+  localparam int FelRecipF = 16;  // 1/(N-1) ROM: unsigned u1.FelRecipF, round to nearest
+  localparam int FelStepW = 32;  // half step (D / (N-1)) (c, s) between probes: signed, FelSigF fraction bits
+  localparam int FelTF = 16;  // probe distance t = d / sigma1 in [0, 1) and its step: unsigned, FelTF frac
+  localparam int FelWsumW = 21;  // weight sum over <= FelNMax probes: unsigned, GaussSqF fraction bits (exact)
+  localparam int FelAccW = 29;  // per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)
   // filter engine of a span (schema.hpp TU_ENGINE_CODES)
   typedef enum logic [1:0] {
     EngBilinear = 2'd0,  // bilinear at level 0 (tu_bilinear)

@@ -104,6 +104,8 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (f != scene::Filter::Bilinear && !o.has_ewa)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: " + std::string(scene::to_string(f)) +
                                   ", but the unit is bilinear-only");
+    if (f == scene::Filter::Feline)
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: feline, but the RTL unit has no Feline engine yet");
     engine_of[name] = render::engine_of(f);
   }
   // The corridor unit (its plan: EWA with the 1-D weight table on every material, iterative

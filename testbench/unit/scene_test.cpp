@@ -56,7 +56,10 @@ TEST(Scene, BadInputNamesFileAndField) {
   EXPECT_EQ(error_of(edited("\"filter\": \"ewa\", \"weights\": \"formula\"",
                             "\"filter\": \"cubic\", \"weights\": \"formula\"")),
             "s.json: /materials/ground/filter: 'cubic' is not one of: nearest, bilinear, "
-            "trilinear, ewa");
+            "trilinear, ewa, feline");
+  EXPECT_EQ(error_of(edited("\"filter\": \"ewa\", \"weights\": \"formula\"",
+                            "\"filter\": \"feline\", \"feline_max_probes\": 17, \"weights\": \"formula\"")),
+            "s.json: /materials/ground/feline_max_probes: value 17 is out of range [1, 16]");
   EXPECT_EQ(error_of(edited("\"size\": 256, \"cells\"", "\"size\": 200, \"cells\"")),
             "s.json: /textures/checker/size: must be a power of two");
   EXPECT_EQ(error_of(edited("\"builtin\": \"bricks\"", "\"png\": \"missing.png\"")),
@@ -68,6 +71,17 @@ TEST(Scene, BadInputNamesFileAndField) {
   EXPECT_EQ(error_of(edited("\"texunit_scene\": 1", "\"texunit_scene\": 2")),
             "s.json: /texunit_scene: value 2 is out of range [1, 1]");
   EXPECT_EQ(error_of("[1, 2]"), "s.json: /: expected an object");
+}
+
+// "filter": "feline" with its probe cap (default 8).
+TEST(Scene, FelineFilterAndProbeCap) {
+  EXPECT_EQ(default_scene().materials.at("ground").feline_max_probes, 8);
+  const Scene s = parse(edited("\"filter\": \"ewa\", \"weights\": \"formula\"",
+                               "\"filter\": \"feline\", \"feline_max_probes\": 4, \"weights\": \"formula\""),
+                        "s.json", ".");
+  EXPECT_EQ(s.materials.at("ground").filter, Filter::Feline);
+  EXPECT_EQ(s.materials.at("ground").feline_max_probes, 4);
+  EXPECT_STREQ(to_string(Filter::Feline), "feline");
 }
 
 // The B2 variant: "footprint" (default analytic), one of analytic | recurrence.

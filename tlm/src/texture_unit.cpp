@@ -114,8 +114,9 @@ Pipeline texture_unit(const UnitConfig& c) {
   s = {};
   s.name = "ewa_walk";
   s.capacity = 1, s.direct = true, s.fifo_depth = 1, s.work = Work::Texels;
-  s.timing = [](const PixelWork& w) {
-    const int n = ewa::walk_cycles(cost_of(w));
+  const int penalty = c.miss_penalty;
+  s.timing = [penalty](const PixelWork& w) {
+    const int n = ewa::walk_cycles(cost_of(w)) + penalty * static_cast<int>(w.misses);
     return Timing{n, n + 1};  // output valid and taken in its last clock, free the clock after
   };
   p.stages.push_back(s);

@@ -18,6 +18,7 @@
 #include "plan.hpp"
 #include "render_cmd.hpp"
 #include "sysmodel_cmd.hpp"
+#include "filter_cmd.hpp"
 #include "objspace_cmd.hpp"
 #include "report.hpp"
 #include "texunit/parallel.hpp"
@@ -400,6 +401,8 @@ int main(int argc, char** argv) {
   auto* sysm = tu::cli::add_sysmodel(app, sysmodel_args);
   tu::cli::ObjspaceArgs objspace_args;
   auto* objs = tu::cli::add_objspace(app, objspace_args);
+  tu::cli::FilterCompareArgs filter_args;
+  auto* fcmp = tu::cli::add_filter_compare(app, filter_args);
 
   try {
     app.parse(argc, argv);
@@ -414,6 +417,7 @@ int main(int argc, char** argv) {
     if (*rnd) return tu::cli::run_render(render_args);
     if (*sysm) return tu::cli::run_sysmodel(sysmodel_args);
     if (*objs) return tu::cli::run_objspace(objspace_args);
+    if (*fcmp) return tu::cli::run_filter_compare(filter_args);
     if (*cos) return cmd_cosim(block, file, stall, seed, fst, json, rtl_variant, shard);
     if (*gen) return cmd_gen_rtl(root, check);
     if (*rep) {

@@ -234,7 +234,7 @@ json unit_json(const Unit& u) {
           {"pixel_latency_cycles", u.latency()},
           {"ii_cycles", u.ii()},
           {"texels_per_pixel", u.texels_per_pixel},
-          {"cells_sum_of_blocks", u.cells_measured() ? json(u.cells()) : json("not measured: yosys not installed")},
+          {"cells_sum_of_blocks", u.cells_measured() ? json(u.cells()) : json("not measured: a block has no Yosys cell count in the report (scripts/report.sh)")},
           {"area_um2_sum_of_blocks", u.area_measured() ? json(u.area_um2()) : json(kNoArea)},
           {"fmax_mhz_slowest_block", u.area_measured() ? json(u.fmax_mhz()) : json(kNoArea)}};
 }

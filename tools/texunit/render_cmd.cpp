@@ -1,6 +1,7 @@
 // `texunit render SCENE.json --out DIR [--dump FILE.csv] [--engine ref] [--filter F]`.
 #include "render_cmd.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -57,7 +58,9 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
                 "variant (docs/blocks/gaussian.md) or off (docs/blocks/ewa.md#border-weights)")
       ->check(CLI::IsMember(clip_choices()));
   r->add_option("--filter", a.filter, "override every material's filter")
-      ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa"}));
+      ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "ewa", "feline"}));
+  r->add_option("--feline-max-probes", a.feline_max_probes, "override every material's Feline probe cap Nmax")
+      ->check(CLI::Range(1, fmt::kFelNMax));
   r->add_flag("--no-footprint-limit", a.no_footprint_limit,
               "procedural materials: keep every octave (footprint_limit false), the aliased field");
   r->add_option("--vs", a.vs, "also render with this engine (same options) and print the PSNR over covered pixels "
@@ -137,6 +140,9 @@ int run_render(const RenderArgs& a) {
   if (a.filter == "bilinear") f = scene::Filter::Bilinear;
   if (a.filter == "trilinear") f = scene::Filter::Trilinear;
   if (a.filter == "ewa") f = scene::Filter::Ewa;
+  if (a.filter == "feline") f = scene::Filter::Feline;
+  if (a.feline_max_probes > 0)
+    for (auto& [name, m] : s.materials) m.feline_max_probes = a.feline_max_probes;
   std::optional<scene::WeightSource> w;
   if (a.weights == "formula") w = scene::WeightSource::Formula;
   if (a.weights == "table1d") w = scene::WeightSource::Table1d;
@@ -245,6 +251,11 @@ int run_render(const RenderArgs& a) {
     const auto counts = render::flag_counts(frame);
     std::printf("guard flags, pixels of %zu:", frame.pixels.size());
     for (size_t i = 0; i < flags.size(); ++i) std::printf(" %s %zu", flags[i].name, counts[i]);
+    std::printf("\n");
+    double texels = 0, probes = 0, probe_px = 0;
+    for (const auto& p : frame.pixels) texels += p.texels, probes += p.probes, probe_px += p.probes > 0;
+    std::printf("texels read per covered pixel: %.3f", texels / double(std::max<size_t>(1, frame.pixels.size())));
+    if (probe_px > 0) std::printf("; Feline: %.0f pixels, %.3f probes per pixel", probe_px, probes / probe_px);
     std::printf("\n");
   }
   img::write_png_rgba(png_tmp, frame.image);

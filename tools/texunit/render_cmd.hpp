@@ -13,6 +13,7 @@ struct RenderArgs {
   bool no_relief = false;
   int ss = 16;                      // --engine truth: samples per pixel side
   std::string truth_kernel = "box";  // --engine truth: box | gauss
+  int feline_max_probes = 0;  // > 0: overrides every material's Feline probe cap
   int threads = 0;  // C-model render and visibility (<= 0: every core)
   bool no_footprint_limit = false;  // procedural materials: every octave, unfiltered
   std::string vs;                   // print the PSNR against this engine's render (ref | cmodel | truth)

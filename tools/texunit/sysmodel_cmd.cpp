@@ -12,6 +12,7 @@
 #include "texunit/formats.hpp"
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
+#include "texunit/texel_cache.hpp"
 #include "texunit/texture_unit_model.hpp"
 #include "texture_unit_rtl.hpp"
 
@@ -39,6 +40,13 @@ CLI::App* add_sysmodel(CLI::App& app, SysmodelArgs& a) {
   c->add_flag("--relief", a.relief,
               "apply each material's relief: shifted pixels' march steps (C model) drive the relief stage "
               "(default: the texture path, relief pixels pass the stage like any other)");
+  c->add_option("--cache-size", a.cache_size, "texel cache in front of the texel memory: bytes (power of two; "
+                "0: none, the RTL's single-cycle RAM); prints reads, hit rate and memory bandwidth")
+      ->check(CLI::Range(0u, 1u << 30));
+  c->add_option("--cache-line", a.cache_line, "texel cache line, bytes (power of two, >= 4)")->check(CLI::Range(4u, 1u << 20));
+  c->add_option("--cache-ways", a.cache_ways, "texel cache associativity (power of two)")->check(CLI::Range(1u, 1u << 16));
+  c->add_option("--miss-penalty", a.miss_penalty, "clocks the EWA walker stalls per texel-cache miss (blocking cache)")
+      ->check(CLI::Range(0u, 10000u));
   c->add_flag("--json", a.json, "print one JSON object");
   return c;
 }
@@ -49,13 +57,22 @@ int run_sysmodel(const SysmodelArgs& a) {
   // Per-pixel work (texels walked, levels tried) from the bit-accurate C-model render.
   render::CmodelOptions copt = render::texture_path_only();
   copt.relief = a.relief;  // relief pixels' march steps drive the relief stage
+  copt.trace_texels = a.cache_size > 0;
+  const sysmodel::CacheConfig cc{a.cache_size, a.cache_line, a.cache_ways, a.miss_penalty};
+  if (a.cache_size > 0) sysmodel::TexelCache{cc};  // a bad geometry fails before the render
   const render::Frame frame = render::render_cmodel(s, tu::scene::Filter::Ewa, copt);
-  const sysmodel::Workload wl = sysmodel::scene_workload(s, frame);
+  sysmodel::Workload wl = sysmodel::scene_workload(s, frame);
+  sysmodel::CacheStats cs;
+  if (a.cache_size > 0) {
+    cs = sysmodel::run_cache(frame, cc);
+    for (size_t i = 0; i < wl.pixels.size(); ++i) wl.pixels[i].misses = cs.misses_per_pixel[i];
+  }
   const double work_s = seconds_since(t0);
   sysmodel::UnitConfig cfg;
   cfg.pixel_fifo = a.fifo_depth;
   cfg.ewa.cord_unroll = a.cord_unroll;
   cfg.ewa.sqrt_step = a.sqrt_step;
+  cfg.miss_penalty = static_cast<int>(a.miss_penalty);
   auto r = sysmodel::simulate(sysmodel::texture_unit(cfg), wl);
   const double model_s = seconds_since(t0);
   // Speed: the fastest of three identical runs (a short run is easily disturbed by other load).
@@ -68,7 +85,8 @@ int run_sysmodel(const SysmodelArgs& a) {
   double rtl_s = 0;
   if (a.compare == "rtl") {
     const ewa::EngineParams rtl_ewa;
-    if (a.fifo_depth != 4 || a.cord_unroll != rtl_ewa.cord_unroll || a.sqrt_step != rtl_ewa.sqrt_step)
+    if (a.fifo_depth != 4 || a.cord_unroll != rtl_ewa.cord_unroll || a.sqrt_step != rtl_ewa.sqrt_step ||
+        a.miss_penalty != 0)
       throw std::invalid_argument("--engine-compare rtl: the RTL top is built with FifoDepth 4, CordUnroll " +
                                   std::to_string(rtl_ewa.cord_unroll) + ", SqrtStep " +
                                   std::to_string(rtl_ewa.sqrt_step) + "; drop the what-if options");
@@ -89,6 +107,10 @@ int run_sysmodel(const SysmodelArgs& a) {
     j["spans"] = wl.spans.size();
     j["workload_seconds"] = work_s;
     j["model_seconds"] = model_s;
+    if (a.cache_size > 0)
+      j["texel_cache"] = {{"size_bytes", cc.size_bytes}, {"line_bytes", cc.line_bytes}, {"ways", cc.ways},
+                          {"miss_penalty", cc.miss_penalty}, {"reads", cs.reads}, {"hits", cs.hits},
+                          {"misses", cs.misses}, {"hit_rate", cs.hit_rate()}, {"memory_bytes", cs.memory_bytes}};
     if (a.compare == "rtl") {
       j["rtl"] = {{"cycles", rtl.cycles}, {"sim_seconds", rtl.sim_wall_s}, {"seconds", rtl_s},
                   {"mismatches", rtl.mismatches}, {"ok", rtl.ok()}};
@@ -102,6 +124,14 @@ int run_sysmodel(const SysmodelArgs& a) {
     std::printf("scene %s: %zu spans, %zu covered pixels (per-pixel work from the C model: %.3f s)\n",
                 s.source.c_str(), wl.spans.size(), wl.pixels.size(), work_s);
     std::cout << sysmodel::table(r);
+    if (a.cache_size > 0) {
+      const double px = double(std::max<size_t>(1, wl.pixels.size())), clk = double(r.total_cycles + 1);
+      std::printf("texel cache %u B, %u B lines, %u ways: %llu texel reads (%.2f per pixel, %.3f per clock), hit rate "
+                  "%.2f %%, memory %llu B (%.2f B per pixel, %.3f B per clock); miss penalty %u clocks\n",
+                  cc.size_bytes, cc.line_bytes, cc.ways, static_cast<unsigned long long>(cs.reads), double(cs.reads) / px,
+                  double(cs.reads) / clk, 100 * cs.hit_rate(), static_cast<unsigned long long>(cs.memory_bytes),
+                  double(cs.memory_bytes) / px, double(cs.memory_bytes) / clk, cc.miss_penalty);
+    }
     if (a.compare == "rtl") {
       std::printf("RTL (Verilator tu_texture_unit): %llu cycles, %llu mismatches vs C model, simulation %.3f s, "
                   "render %.3f s\n",

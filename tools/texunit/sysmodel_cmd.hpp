@@ -11,6 +11,7 @@ struct SysmodelArgs {
   bool relief = false;
   int fifo_depth = 4;
   int cord_unroll = 2, sqrt_step = 4;  // tu_ewa CordUnroll, SqrtStep (what-if: the RTL uses 2, 4)
+  uint32_t cache_size = 0, cache_line = 64, cache_ways = 4, miss_penalty = 0;  // texel cache (0: none)
 };
 
 // `texunit sysmodel SCENE|default [--engine-compare rtl] [--json]` (docs/systemc.md).

@@ -404,14 +404,18 @@ In random_in(std::mt19937_64& rng) {
   return in_from_local(l, 4 << fmt::kEllLogF, rng() % 8 == 0 ? 12 : 8);
 }
 
+double theta_ref_b2(const ellipse::fx::Out& o) {
+  const double d = double(o.ae) - double(o.ce), b = double(o.be);
+  return d == 0 && b == 0 ? 0 : 0.5 * std::atan2(b, d) + M_PI / 2;
+}
+
 Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels, bool clip) {
   const auto& o = in.b2;
   const Params p{16, static_cast<int>(max_texels), clip};
   const double u = std::ldexp(double(in.u), -fmt::kTexUvF), v = std::ldexp(double(in.v), -fmt::kTexUvF);
   if ((o.flags & ellipse::fx::kHorizon) || o.lmaj == ellipse::fx::kLogNegInf)
     return filter_axes(t, u, v, 1, 1, 0, p);
-  const double d = double(o.ae) - double(o.ce), b = double(o.be);
-  const double theta = d == 0 && b == 0 ? 0 : 0.5 * std::atan2(b, d) + M_PI / 2;
+  const double theta = theta_ref_b2(o);
   const double s1 = std::exp2(ellipse::fx::log_value(o.lmaj));
   const double s2 = o.lmin == ellipse::fx::kLogNegInf ? 0 : std::exp2(ellipse::fx::log_value(o.lmin));
   return filter_axes(t, u, v, s1, s2, theta, p);

@@ -164,6 +164,8 @@ ellipse::fx::Local footprint_local(double major, double aniso, double theta, dou
 // double; horizon / point footprints -> unit disc (ewa_ref.hpp filter_axes).
 // clip: the float border weights (ewa::Params::clip).
 Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels, bool clip = false);
+// The major-axis angle of B2's conic codes in double (radians; 0 for a circle).
+double theta_ref_b2(const ellipse::fx::Out& o);
 
 // Real major-axis angle of a set-up (radians, in [-pi/2, pi/2)).
 double theta_value(int32_t theta);

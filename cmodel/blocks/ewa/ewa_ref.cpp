@@ -8,6 +8,11 @@ namespace tu::ewa {
 
 Result filter_ref(const tex::Texture& t, double u, double v, const ellipse::Jacobian& j,
                   const Params& p) {
+  const Axes ax = axes_ref(j, p.max_aniso);
+  return filter_axes(t, u, v, ax.s1, ax.s2, ax.theta, p);
+}
+
+Axes axes_ref(const ellipse::Jacobian& j, double max_aniso) {
   // Singular values and the major direction of J (eigen-decomposition of J J^T).
   const double a11 = j.ux * j.ux + j.uy * j.uy, a12 = j.ux * j.vx + j.uy * j.vy,
                a22 = j.vx * j.vx + j.vy * j.vy;
@@ -16,8 +21,8 @@ Result filter_ref(const tex::Texture& t, double u, double v, const ellipse::Jaco
   const double s1 = std::sqrt(tr / 2 + disc);
   double s2 = s1 > 0 ? det / s1 : 0;
   const double theta = 0.5 * std::atan2(2 * a12, a11 - a22);  // major axis angle in (u, v)
-  s2 = std::max(s2, s1 / p.max_aniso);
-  return filter_axes(t, u, v, s1, s2, theta, p);
+  s2 = std::max(s2, s1 / max_aniso);
+  return {s1, s2, theta};
 }
 
 Result filter_axes(const tex::Texture& t, double u, double v, double s1, double s2, double theta,

@@ -35,6 +35,13 @@ struct Result {
   bool capped = false;     // the texel cap raised the level
 };
 
+// The footprint's semi-axes s1 >= s2 (singular values of J; s2 grown to s1 / max_aniso) and the
+// major-axis angle theta (radians, in (u, v)), from the eigen-decomposition of J J^T.
+struct Axes {
+  double s1 = 0, s2 = 0, theta = 0;
+};
+Axes axes_ref(const ellipse::Jacobian& j, double max_aniso);
+
 // (u, v): level-0 texel coordinates of the pixel centre; j: the Jacobian there.
 Result filter_ref(const tex::Texture& t, double u, double v, const ellipse::Jacobian& j,
                   const Params& p);

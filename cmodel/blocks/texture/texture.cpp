@@ -23,6 +23,9 @@ int64_t wrap_coord(int64_t x, int size, Wrap w) {
 uint8_t ch(const Rgba8& c, int i) { return i == 0 ? c.r : i == 1 ? c.g : i == 2 ? c.b : c.a; }
 void set_ch(Rgba8& c, int i, uint8_t v) { (i == 0 ? c.r : i == 1 ? c.g : i == 2 ? c.b : c.a) = v; }
 
+thread_local std::vector<uint64_t>* trace_out = nullptr;  // TexelTrace
+thread_local uint64_t trace_base = 0;
+
 // Level-L position u / 2^L - 1/2, exact: kUvF + level fraction bits.
 int64_t level_pos(int64_t u, int level) { return u - (int64_t(1) << (kUvF + level - 1)); }
 }  // namespace
@@ -64,10 +67,25 @@ Texture Texture::build(const std::string& name, Rgba8Image base, Wrap wrap) {
   return t;
 }
 
+TexelTrace::TexelTrace(std::vector<uint64_t>* out, uint64_t base) : prev_out_(trace_out), prev_base_(trace_base) {
+  trace_out = out;
+  trace_base = base;
+}
+TexelTrace::~TexelTrace() {
+  trace_out = prev_out_;
+  trace_base = prev_base_;
+}
+
 Rgba8 Texture::fetch(int level, int64_t x, int64_t y) const {
-  const auto& im = levels[static_cast<size_t>(std::clamp(level, 0, num_levels() - 1))];
-  return im.at(static_cast<int>(wrap_coord(x, im.width, wrap)),
-               static_cast<int>(wrap_coord(y, im.height, wrap)));
+  const size_t l = static_cast<size_t>(std::clamp(level, 0, num_levels() - 1));
+  const auto& im = levels[l];
+  const int xi = static_cast<int>(wrap_coord(x, im.width, wrap)), yi = static_cast<int>(wrap_coord(y, im.height, wrap));
+  if (trace_out) {
+    uint64_t a = trace_base;
+    for (size_t k = 0; k < l; ++k) a += uint64_t(levels[k].width) * uint64_t(levels[k].height);
+    trace_out->push_back(a + uint64_t(yi) * uint64_t(im.width) + uint64_t(xi));
+  }
+  return im.at(xi, yi);
 }
 
 Rgba8Image checkerboard(int size, int cells, Rgba8 a, Rgba8 b) {

@@ -41,6 +41,21 @@ struct Texture {
   Rgba8 fetch(int level, int64_t x, int64_t y) const;
 };
 
+// Texel address trace (texel bandwidth, the SystemC texel cache): while a TexelTrace lives on a
+// thread, every Texture::fetch on that thread appends its texel's word address in the RTL's texel
+// RAM layout (tu_texel_addr: the levels one after another, row-major, after the wrap) plus `base`.
+class TexelTrace {
+ public:
+  TexelTrace(std::vector<uint64_t>* out, uint64_t base);
+  ~TexelTrace();
+  TexelTrace(const TexelTrace&) = delete;
+  TexelTrace& operator=(const TexelTrace&) = delete;
+
+ private:
+  std::vector<uint64_t>* prev_out_;
+  uint64_t prev_base_;
+};
+
 // 2x2 box filter, round half up per channel (odd sizes never occur: power-of-two only).
 Rgba8Image downsample(const Rgba8Image& im);
 

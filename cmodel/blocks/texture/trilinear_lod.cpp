@@ -39,7 +39,12 @@ TriLod trilinear_lod(int32_t lrho, const LodParams& p, int top) {
 double trilinear_lod_ref(double ux, double vx, double uy, double vy, double bias, double min_lod,
                          double max_lod, int top, uint32_t* flags) {
   const double rho2 = std::max(ux * ux + vx * vx, uy * uy + vy * vy);
-  double lam = (rho2 > 0 ? 0.5 * std::log2(rho2) : -INFINITY) + bias;
+  return lod_rule_ref(rho2 > 0 ? 0.5 * std::log2(rho2) : -INFINITY, bias, min_lod, max_lod, top, flags);
+}
+
+double lod_rule_ref(double log2_rho, double bias, double min_lod, double max_lod, int top,
+                    uint32_t* flags) {
+  double lam = log2_rho + bias;
   uint32_t f = 0;
   if ((lam < min_lod && min_lod > 0) || lam > max_lod) f |= kTriLodClamp;
   lam = std::clamp(lam, min_lod, std::max(min_lod, max_lod));

@@ -46,6 +46,10 @@ struct TriLod {
 };
 TriLod trilinear_lod(int32_t lrho, const LodParams& p, int top);
 
+// The rule from log2 rho on (bias, clamps, magnification, pyramid): the float reference of the
+// step tex::trilinear_lod; -inf gives magnification. Flags as above.
+double lod_rule_ref(double log2_rho, double bias, double min_lod, double max_lod, int top,
+                    uint32_t* flags = nullptr);
 // Float reference on the Jacobian (texels per pixel); flags as above.
 double trilinear_lod_ref(double ux, double vx, double uy, double vy, double bias, double min_lod,
                          double max_lod, int top, uint32_t* flags = nullptr);

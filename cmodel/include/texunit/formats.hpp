@@ -224,7 +224,18 @@
   X(ShadeEW, 10, "E = ambient + lc d (lc d rounded half up to ShadeColF): unsigned, ShadeColF") \
   X(ShadeWordW, 320, "shade port word: {on, N, L, H, n, c_cut, ks*lc rgb, lc rgb, ambient}")   \
   X(EwaDrainCycles, 5, "tu_ewa_walk: clocks from the last texel to the accumulated sums")        \
-  X(EwaNormCycles, 6, "tu_ewa_walk normalisation: mantissa, 4 reciprocal stages, round")
+  X(EwaNormCycles, 6, "tu_ewa_walk normalisation: mantissa, 4 reciprocal stages, round")       \
+  /* Feline probe filter (docs/blocks/feline.md) */                                             \
+  X(FelNMax, 16, "largest probe cap Nmax (material feline_max_probes, 1..FelNMax)")             \
+  X(FelProbeW, 5, "probe count N and the cap: unsigned integers, 1..FelNMax")                   \
+  X(FelSigF, 16, "major semi-axis sigma1 (level-0 texels, from EwaExpF-bit log): frac bits")     \
+  X(FelAxisMaxLog2, 13, "sigma1 clamped to 2^FelAxisMaxLog2 texels (flag; > TexMaxLevels - 1)")  \
+  X(FelSigW, 30, "sigma1 and D = sigma1 - sigma2: unsigned, FelSigF fraction bits")              \
+  X(FelRecipF, 16, "1/(N-1) ROM: unsigned u1.FelRecipF, round to nearest")                      \
+  X(FelStepW, 32, "half step (D / (N-1)) (c, s) between probes: signed, FelSigF fraction bits")   \
+  X(FelTF, 16, "probe distance t = d / sigma1 in [0, 1) and its step: unsigned, FelTF frac")   \
+  X(FelWsumW, 21, "weight sum over <= FelNMax probes: unsigned, GaussSqF fraction bits (exact)") \
+  X(FelAccW, 29, "per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)")
 
 namespace tu::fmt {
 #define TU_X_DECLARE(name, value, desc) inline constexpr int k##name = (value);

@@ -35,6 +35,10 @@ struct PixelRecord {
   img::Rgba8 color;
   int relief_n = 0;     // relief materials: layers N of the material's method (0: no relief)
   int relief_steps = 0; // relief materials: march steps (POM) or iterations (iterative)
+  int probes = 0;       // Feline: trilinear probes N (0: another filter)
+  // CmodelOptions::trace_texels: the filter's texel reads in order (tex::TexelTrace word
+  // addresses; texture i of the scene's textures at i << 32).
+  std::vector<uint64_t> texel_addrs;
 };
 
 struct Frame {
@@ -87,6 +91,8 @@ struct CmodelOptions {
   // Shading stage (scenes with a light): the model of materials whose specular model is "auto"
   // (the unit's; texunit/shading.hpp kUnitModel when not given).
   std::optional<brdf::Model> shade_model;
+  // Record every pixel's texel reads (PixelRecord::texel_addrs; the texel-cache model).
+  bool trace_texels = false;
 };
 // The options of the texture path alone (relief off), for comparisons with the RTL top.
 inline CmodelOptions texture_path_only() {
@@ -99,7 +105,8 @@ inline CmodelOptions texture_path_only() {
 // render engine sets the same.
 uint32_t laniso_code(double max_aniso);
 
-// The RTL texture unit's engine for a material's filter (its filt_i code).
+// The RTL texture unit's engine for a material's filter (its filt_i code); std::invalid_argument
+// for a filter the RTL has no engine for (feline).
 ewa::Engine engine_of(scene::Filter f);
 Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter = {},
                     const CmodelOptions& opt = {});

@@ -21,7 +21,7 @@ struct SceneError : std::runtime_error {
   explicit SceneError(const std::string& what);  // control bytes quoted from the file escaped
 };
 
-enum class Filter { Nearest, Bilinear, Trilinear, Ewa };
+enum class Filter { Nearest, Bilinear, Trilinear, Ewa, Feline };
 using WeightSource = schema::WeightSource;  // EWA weight source: its RTL code is the enum value
 enum class ReliefMethod { PomFixed, PomAdaptive, Iterative, DistanceMap, DistanceMapRefined };
 // B2's Jacobian (docs/blocks/ellipse.md): analytic (tu_ellipse) or the seed's forward-difference
@@ -72,6 +72,8 @@ struct Material {
   // Trilinear's GL LOD rule (texture/trilinear_lod.hpp): lambda + lod_bias clamped to
   // [min_lod, max_lod] (levels), then to the pyramid.
   double lod_bias = 0, min_lod = 0, max_lod = 12;
+  // Feline (feline/feline_ref.hpp): at most this many trilinear probes per pixel (1..FelNMax).
+  int feline_max_probes = 8;
   std::optional<Relief> relief;
   std::optional<Procedural> procedural;  // colour from noise; `texture` still fixes the uv grid
   std::optional<Specular> specular;  // absent: diffuse only (when the scene has a light)

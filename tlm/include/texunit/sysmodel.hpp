@@ -32,6 +32,7 @@ struct PixelWork {
   bool relief = false;   // the pixel's material has relief (it enters the relief unit)
   bool no_weight = false;  // EWA: no texel had weight (the walker's nearest-texel fallback)
   bool guard = false;      // B1 guard: no texture coordinates, the filter's short path
+  uint32_t misses = 0;     // texel-cache misses of its reads (texel_cache.hpp; 0: the ideal RAM)
 };
 
 // A run of covered pixels on one scanline of one triangle: the unit of set-up.

@@ -26,6 +26,7 @@ struct UnitConfig {
   bool relief_stage = true;  // HasRelief (the full unit): tu_relief_stage between B1/B2 and the FIFO
   int relief_fifo = 32;      // its sideband FIFO (tu_relief_stage FifoDepth)
   ewa::EngineParams ewa;  // tu_ewa structure parameters (CORDIC unroll, square-root step)
+  int miss_penalty = 0;   // texel cache (texel_cache.hpp): clocks the walker stalls per miss
 };
 
 // span set-up -> expander -> B1 || B2 -> [relief stage] -> FIFO -> EWA set-up -> EWA walker
