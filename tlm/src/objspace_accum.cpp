@@ -16,6 +16,7 @@ namespace {
 using sc_core::sc_time;
 using sc_core::SC_NS;
 const sc_time kClk(1, SC_NS);
+constexpr std::size_t kStack = std::size_t(1) << 20;  // thread stacks (the ASan build's frames are large)
 uint64_t cycles(const sc_time& t) { return static_cast<uint64_t>(std::llround(t / kClk)); }
 
 bool pow2_in_range(int b) { return b >= 2 && b <= 8 && (b & (b - 1)) == 0; }
@@ -77,6 +78,7 @@ struct Issue : sc_core::sc_module {
   Issue(sc_core::sc_module_name n, const AccumScheme& sc, const std::vector<AccumSample>& samples, AccumResult& res)
       : sc_module(n), s(sc), v(samples), r(res) {
     SC_THREAD(run);
+    set_stack_size(kStack);
   }
   void run() {
     for (size_t pos = 0; pos < v.size();) {
@@ -101,6 +103,7 @@ struct Accumulate : sc_core::sc_module {
   Accumulate(sc_core::sc_module_name n, const AccumScheme& sc, uint64_t samples, uint64_t cov, AccumResult& res)
       : sc_module(n), s(sc), total(samples), covered(cov), r(res) {
     SC_THREAD(run);
+    set_stack_size(kStack);
   }
   void wait_until(const sc_time& t) {
     if (t > sc_core::sc_time_stamp()) wait(t - sc_core::sc_time_stamp());
