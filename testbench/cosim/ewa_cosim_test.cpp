@@ -326,16 +326,6 @@ TEST(TextureUnitRtl, DistanceMapReliefSceneEqualsCModelWithCyclesPredicted) {
   }
 }
 
-// EWA sub-texel border weights are not in the RTL unit yet (docs/blocks/ewa.md "Border
-// weights"): a message naming the material's field, before any simulation.
-TEST(TextureUnitRtl, BorderWeightsAreRejectedNamingTheField) {
-  const auto s = scene::with_clip(small_scene(), "mm_p1");
-  try {
-    cosim::render_rtl(s, {});
-    ADD_FAILURE() << "border weights accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("/clip: EWA border weights are not in the RTL"), std::string::npos) << e.what();
-
 // EWA sub-texel border weights in the walk (tu_ewa_border, HasEwaClip, EwaClipVariant 0 = mm_p1;
 // docs/blocks/ewa.md "Border weights"): the small scene with border weights on every material, and
 // with them on the ground only (pixels with and without, the drain differs per pixel), every pixel
