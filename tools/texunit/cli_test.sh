@@ -12,10 +12,12 @@ case $case in
   report_fields)
     # Measured fields are numbers; a field that is not measured says why.
     "$tu" report --blocks reciprocal,persp --count 2000 --no-yosys --json "$tmp/r.json" >/dev/null
-    [ "$(val "$tmp/r.json" "len(d)")" = 4 ] || fail "expected 4 rows (reciprocal + 3 persp variants)"
-    [ "$(val "$tmp/r.json" "all(r['cells'] == 'not measured: --no-yosys' for r in d)")" = True ] || fail "cells reason"
-    [ "$(val "$tmp/r.json" "all(isinstance(r['rtl_sim_items_per_s'], (int, float)) and r['rtl_sim_items_per_s'] > 0 for r in d)")" = True ] || fail "rtl speed"
-    [ "$(val "$tmp/r.json" "all(r['cycles_source'].startswith('measured') for r in d)")" = True ] || fail "cycles source"
+    [ "$(val "$tmp/r.json" "len(d)")" = 5 ] || fail "expected 5 rows (reciprocal + 4 persp variants, incl. texel_depth)"
+    [ "$(val "$tmp/r.json" "all(r['cells'] == 'not measured: --no-yosys' for r in d if r['variant'] != 'texel_depth')")" = True ] || fail "cells reason"
+    [ "$(val "$tmp/r.json" "all(isinstance(r['rtl_sim_items_per_s'], (int, float)) and r['rtl_sim_items_per_s'] > 0 for r in d if r['variant'] != 'texel_depth')")" = True ] || fail "rtl speed"
+    [ "$(val "$tmp/r.json" "all(r['cycles_source'].startswith('measured') for r in d if r['variant'] != 'texel_depth')")" = True ] || fail "cycles source"
+    # texel_depth (seed 001 §3) is a C-model variant: its RTL fields say so.
+    [ "$(val "$tmp/r.json" "[r['cells'] for r in d if r['variant'] == 'texel_depth'][0]")" = "not measured: no RTL" ] || fail "texel_depth cells"
     [ "$(val "$tmp/r.json" "[r['max_abs_err'] for r in d if r['variant'] == 'incremental'][0] < 1/16")" = True ] || fail "persp error"
     ;;
   report_stdcell)
@@ -89,7 +91,7 @@ case $case in
     # The package lints (-Wall) as the RTL top would read it.
     cat >"$tmp/tu_cfg_user.sv" <<'SV'
 module tu_cfg_user (
-  output logic [11:0] has_o,
+  output logic [12:0] has_o,
   output logic [2:0]  wsrc_o,
   output logic [31:0] sizes_o,
   output logic [4:0]  wrap_o
@@ -97,7 +99,7 @@ module tu_cfg_user (
   assign wrap_o = tu_unit_cfg_pkg::WrapModes;
   assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasTriFilter, tu_unit_cfg_pkg::HasNearest, tu_unit_cfg_pkg::HasRelief,
                   tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax, tu_unit_cfg_pkg::HasShading, tu_unit_cfg_pkg::EllRecurrence,
-                  tu_unit_cfg_pkg::HasEwaClip, tu_unit_cfg_pkg::HasNoise};
+                  tu_unit_cfg_pkg::HasEwaClip, tu_unit_cfg_pkg::HasNoise, tu_unit_cfg_pkg::HasDistanceMap};
   assign wsrc_o = tu_unit_cfg_pkg::WeightSources;
   assign sizes_o = tu_unit_cfg_pkg::PomMaxLayers + tu_unit_cfg_pkg::WtabLog2N + tu_unit_cfg_pkg::Wtab2dLog2N +
                    tu_unit_cfg_pkg::PerspLanes + tu_unit_cfg_pkg::ShadeModel + tu_unit_cfg_pkg::EwaClipVariant +
