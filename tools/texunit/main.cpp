@@ -238,10 +238,18 @@ int cmd_demo(uint64_t count, const std::string& out_dir, int threads) {
 }
 
 // `texunit rtl-files`: the manifest's lists, one path a line.
-int cmd_rtl_files(const std::string& root, const std::string& top, const std::string& list) {
+int cmd_rtl_files(const std::string& root, const std::string& top, const std::string& list, const std::string& key) {
   if (top.empty() == list.empty()) {
     std::cerr << "texunit rtl-files: give a TOP or --list (not both)\n";
     return 2;
+  }
+  if (!key.empty()) {
+    if (top.empty()) {
+      std::cerr << "texunit rtl-files: --key needs a TOP\n";
+      return 2;
+    }
+    std::cout << tu::report::rtl_hash(root, top, key == "yosys" ? "scripts/yosys_area.sh" : "scripts/stdcell_flow.sh") << "\n";
+    return 0;
   }
   const auto m = tu::rtl::Manifest::load(root);
   std::vector<std::string> out;
@@ -376,6 +384,9 @@ int main(int argc, char** argv) {
   rtf->add_option("--list", rtl_list, "instead: every top, every file (packages first), the include dirs or the lint-only files")
       ->check(CLI::IsMember({"tops", "all", "include-dirs", "lint-only"}));
   rtf->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+  std::string rtl_key;
+  rtf->add_option("--key", rtl_key, "instead: the top's cache key in docs/report/{yosys,stdcell}_cache.json (the hash of its files)")
+      ->check(CLI::IsMember({"yosys", "stdcell"}));
 
   std::vector<std::string> sc_tops;
   std::string sc_cache = "docs/report/stdcell_cache.json", sc_netlists = "build/stdcell";
@@ -427,7 +438,7 @@ int main(int argc, char** argv) {
     }
     if (*pln) return tu::plan::run(po);
     if (*stc) return tu::report::stdcell(sc_tops, root, sc_cache, sc_netlists, sc_force);
-    if (*rtf) return cmd_rtl_files(root, rtl_top, rtl_list);
+    if (*rtf) return cmd_rtl_files(root, rtl_top, rtl_list, rtl_key);
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*rqc) return cmd_relief_quality(rq);
     if (*dmc) return cmd_distance_map(dm_in, dm_out, dm_slices, dmp);
