@@ -384,6 +384,8 @@ int main(int argc, char** argv) {
   rqc->add_option("--afvis-heights", afq.heights, "--afvis camera heights (multiples of the scene's)")
       ->delimiter(',')->check(tu::cli::finite_in(0.1, 100.0));
   rqc->add_option("--afvis-ss", afq.ss, "--afvis truth samples per pixel side")->check(CLI::Range(1, 64));
+  rqc->add_option("--afvis-bias", afq.bias, "--afvis: the trace's bias in depth codes (default " +
+                  std::to_string(tu::afvis::kDefaultBias) + ")")->check(CLI::Range(0, 255));
   rqc->add_option("--threads", afq.threads, "--afvis: threads for the C-model renders (0: every core)")->check(CLI::Range(0, 256));
 
   tu::report::Options ro;

@@ -113,6 +113,7 @@ std::vector<QualityRow> quality(const scene::Scene& base, const QualityParams& p
         o.afvis = v.mode;
         o.afvis_rule = v.rule;
         o.afvis_pyramid = v.pyramid;
+        o.afvis_bias = p.bias;
         const render::Frame f = render::render_cmodel(s, {}, o);
         QualityRow r;
         r.map = map, r.height = hm, r.variant = v.name;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "afvis/afvis.hpp"
 #include "texunit/scene.hpp"
 
 namespace tu::afvis {
@@ -21,6 +22,7 @@ struct QualityParams {
   int ss = 8;          // truth samples per pixel side
   int threads = 0;     // C-model renders (0: every core)
   std::string tmp_dir; // where the height PNGs go (required when a map is not "bricks")
+  int bias = kDefaultBias;  // the trace's bias (depth codes), every variant
 };
 
 struct QualityRow {
