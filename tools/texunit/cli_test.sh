@@ -210,8 +210,10 @@ SV
   relief_quality_afvis)
     # relief-quality --afvis (docs/blocks/afvis.md §4): one row per visibility variant, plain traces
     # nothing; the height PNGs' temporary directory is removed; a scene without relief is refused.
+    mkdir -p "$tmp/p"
     "$tu" relief-quality --afvis docs/scenes/af_visibility.json --afvis-maps bricks,gravel --afvis-heights 1 --afvis-ss 2 \
-      --threads 2 >"$tmp/out" 2>/dev/null
+      --threads 2 --afvis-plot "$tmp/p" >"$tmp/out" 2>/dev/null
+    [ -s "$tmp/p/afvis_gain_vs_clocks.png" ] || fail "no plot"
     [ "$(grep -cE '^\| (bricks|gravel) \| ×1 \| [0-9.]+° \| (plain|every|row|pyramid2|row\+pyramid2) \| [0-9]+ \| [0-9.]+ dB \|' "$tmp/out")" = 10 ] ||
       fail "table: $(cat "$tmp/out")"
     grep -qE '^\| bricks \| ×1 \| [0-9.]+° \| plain \| [0-9]+ \| [0-9.]+ dB \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| 0.00 \| 0.00 \|' "$tmp/out" ||

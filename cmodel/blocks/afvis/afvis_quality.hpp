@@ -45,5 +45,9 @@ struct QualityRow {
 // Every relief material of `s` gets af_visibility per variant (the flag in the file is ignored).
 std::vector<QualityRow> quality(const scene::Scene& s, const QualityParams& p);
 std::string quality_markdown(const std::vector<QualityRow>& rows);
+// The plot of the table: PSNR gain over plain EWA (same map and camera) against the added clocks,
+// one series per variant: DIR/afvis_gain_vs_clocks.{dat,gp,png} (gnuplot; std::runtime_error and
+// nothing left behind when it fails).
+void write_quality_plot(const std::vector<QualityRow>& rows, const std::string& dir);
 
 }  // namespace tu::afvis
