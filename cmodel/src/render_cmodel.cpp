@@ -55,12 +55,12 @@ std::optional<pom::View> shift_relief_fx(const scene::Scene& s, const persp::Ray
 
 // AF with parallax visibility (docs/blocks/afvis.md): the EWA walk over the texels the eye sees.
 afvis::Relief afvis_relief(const relief::Maps& maps, const img::Gray8* trace_map, const tex::Texture& tx,
-                           const pom::View& view) {
+                           const pom::View& view, int bias) {
   const pom::Parallax p = pom::parallax(view);
   const img::Gray8& cells = trace_map ? *trace_map : maps.depth;
   return {&maps.depth, trace_map, afvis::min_depth(cells), p.pu, p.pv,
           std::countr_zero(static_cast<unsigned>(tx.levels[0].width)),
-          std::countr_zero(static_cast<unsigned>(tx.levels[0].height))};
+          std::countr_zero(static_cast<unsigned>(tx.levels[0].height)), bias};
 }
 }  // namespace
 
@@ -213,7 +213,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           if (const auto& cells = afv_cells[static_cast<size_t>(c.object)]; cells && view) {
             const auto& maps = *reliefs[static_cast<size_t>(c.object)];
             const auto a = afvis::filter(in, tx, {ecfg, opt.afvis_rule},
-                                         afvis_relief(maps, opt.afvis_pyramid > 0 ? &*cells : nullptr, tx, *view));
+                                         afvis_relief(maps, opt.afvis_pyramid > 0 ? &*cells : nullptr, tx, *view, opt.afvis_bias));
             r = a.ewa;
             rec.afv_traced = static_cast<int>(a.traced);
             rec.afv_steps = static_cast<int>(a.steps);

@@ -16,6 +16,7 @@
 #include "afvis/afvis_quality.hpp"
 #include "afvis/afvis_ref.hpp"
 #include "ewa/ewa_fx.hpp"
+#include "ewa_walk_checks.hpp"
 #include "gauss/clip.hpp"
 #include "pom/pom_march.hpp"
 #include "pom/relief_quality.hpp"
@@ -26,10 +27,7 @@ namespace {
 using namespace tu;
 namespace efx = ewa::fx;
 
-const tex::Texture& bricks() {
-  static const tex::Texture t = tex::Texture::build("bricks", tex::bricks(256).color, tex::Wrap::Repeat);
-  return t;
-}
+const tex::Texture& bricks() { return test::bricks_texture(); }
 
 // The unit's view (s16.14, S u0.16) at `angle` degrees from the normal, azimuth `az` degrees.
 pom::View view_at(double angle, double az, double scale) {
@@ -59,16 +57,10 @@ efx::In pixel(double major, double aniso, double theta, double u, double v) {
   return efx::in_from_local(efx::footprint_local(major, aniso, theta, u, v));
 }
 
-void expect_same(const efx::Out& a, const efx::Out& b) {
-  EXPECT_EQ(a.color, b.color);
-  EXPECT_EQ(a.level, b.level);
-  EXPECT_EQ(a.texels_visited, b.texels_visited);
-  EXPECT_EQ(a.texels_inside, b.texels_inside);
-  EXPECT_EQ(a.flags, b.flags);
-}
+void expect_same(const efx::Out& a, const efx::Out& b) { test::expect_same_walk(a, b); }
 
 // Exhaustive on a grid: every surface point at 1/8 cell on three 8 x 8 maps (a cliff, random
-// codes, steps) x 64 directions x 4 lengths of P: the integer trace equals the same DDA in double
+// codes, steps) x 32 directions x 4 lengths of P: the integer trace equals the same DDA in double
 // on the same codes (visibility and steps), except where the double trace has a tie within 1e-6
 // depth codes (the integer test is exact there; double rounding is not).
 TEST(AfvisFx, TraceEqualsTheDoubleTraceOnTheSameCodes) {
@@ -92,9 +84,9 @@ TEST(AfvisFx, TraceEqualsTheDoubleTraceOnTheSameCodes) {
       for (int px = 0; px < 64; ++px) {
         const int64_t u = int64_t(px) << (fmt::kPomUvF - 6), v = int64_t(py) << (fmt::kPomUvF - 6);
         const uint8_t d0 = pom::tex_nearest(m, u, v);
-        for (int dir = 0; dir < 64; ++dir)
+        for (int dir = 0; dir < 32; ++dir)
           for (int len = 0; len < 4; ++len) {
-            const double r = std::ldexp(0.03, 2 * len), a = dir * 2 * M_PI / 64;
+            const double r = std::ldexp(0.03, 2 * len), a = dir * 2 * M_PI / 32;  // incl. the axes (Pu or Pv = 0) and the diagonals (corner ties)
             const int64_t pu = std::llround(std::cos(a) * r * 65536), pv = std::llround(std::sin(a) * r * 65536);
             const afvis::Trace f = afvis::trace(m, dmin, d0, u, v, pu, pv);
             const afvis::Trace d = afvis::trace_ref(m, dmin, d0, code_to_uv(u), code_to_uv(v), code_to_uv(pu), code_to_uv(pv));

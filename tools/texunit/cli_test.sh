@@ -207,6 +207,21 @@ SV
     grep -q "object 'panel' (/objects/0): .*--max-samples" "$tmp/err" || fail "message: $(cat "$tmp/err")"
     [ ! -e "$tmp/bad2/objspace_ref.png" ] || fail "partial output written"
     ;;
+  relief_quality_afvis)
+    # relief-quality --afvis (docs/blocks/afvis.md §4): one row per visibility variant, plain traces
+    # nothing; the height PNGs' temporary directory is removed; a scene without relief is refused.
+    mkdir -p "$tmp/p"
+    "$tu" relief-quality --afvis docs/scenes/af_visibility.json --afvis-maps bricks,gravel --afvis-heights 1 --afvis-ss 2 \
+      --threads 2 --afvis-plot "$tmp/p" >"$tmp/out" 2>/dev/null
+    [ -s "$tmp/p/afvis_gain_vs_clocks.png" ] || fail "no plot"
+    [ "$(grep -cE '^\| (bricks|gravel) \| ×1 \| [0-9.]+° \| (plain|every|row|pyramid2|row\+pyramid2) \| [0-9]+ \| [0-9.]+ dB \|' "$tmp/out")" = 10 ] ||
+      fail "table: $(cat "$tmp/out")"
+    grep -qE '^\| bricks \| ×1 \| [0-9.]+° \| plain \| [0-9]+ \| [0-9.]+ dB \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| 0.00 \| 0.00 \|' "$tmp/out" ||
+      fail "plain row: $(cat "$tmp/out")"
+    ! ls -d "${TMPDIR:-/tmp}"/texunit_afvis_* 2>/dev/null | grep -q . || fail "temporary directory left"
+    if "$tu" relief-quality --afvis docs/scenes/ui_quad.json 2>"$tmp/err" >/dev/null; then fail "accepted a scene without relief"; fi
+    grep -q "no material has relief" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    ;;
   filter_compare)
     # filter-compare: one row per filter and Feline cap, numbers in every column, the plot; a Feline
     # material through render: probes per pixel printed; the RTL engine refuses it naming the field.

@@ -192,7 +192,7 @@ int cmd_relief_quality(const tu::pom::QualityParams& p) {
 // relief-quality --afvis SCENE (docs/blocks/afvis.md §4): plain EWA and each visibility rule against
 // the truth on the scene's relief pixels, per height map and camera height. The height PNGs go to a
 // private temporary directory, removed afterwards.
-int cmd_afvis_quality(const std::string& scene_arg, tu::afvis::QualityParams p) {
+int cmd_afvis_quality(const std::string& scene_arg, tu::afvis::QualityParams p, const std::string& plot_dir) {
   const tu::scene::Scene s = scene_arg == "default" ? tu::scene::default_scene() : tu::scene::load(scene_arg);
   bool relief = false;
   for (const auto& [name, m] : s.materials) relief |= m.relief.has_value();
@@ -208,6 +208,7 @@ int cmd_afvis_quality(const std::string& scene_arg, tu::afvis::QualityParams p) 
     throw;
   }
   fs::remove_all(dir);
+  if (!plot_dir.empty()) tu::afvis::write_quality_plot(rows, plot_dir);
   std::cout << tu::afvis::quality_markdown(rows);
   return 0;
 }
@@ -384,6 +385,11 @@ int main(int argc, char** argv) {
   rqc->add_option("--afvis-heights", afq.heights, "--afvis camera heights (multiples of the scene's)")
       ->delimiter(',')->check(tu::cli::finite_in(0.1, 100.0));
   rqc->add_option("--afvis-ss", afq.ss, "--afvis truth samples per pixel side")->check(CLI::Range(1, 64));
+  std::string afvis_plot;
+  rqc->add_option("--afvis-plot", afvis_plot, "--afvis: write afvis_gain_vs_clocks.{dat,gp,png} (gnuplot) into this directory")
+      ->check(CLI::ExistingDirectory);
+  rqc->add_option("--afvis-bias", afq.bias, "--afvis: the trace's bias in depth codes (default " +
+                  std::to_string(tu::afvis::kDefaultBias) + ")")->check(CLI::Range(0, 255));
   rqc->add_option("--threads", afq.threads, "--afvis: threads for the C-model renders (0: every core)")->check(CLI::Range(0, 256));
 
   tu::report::Options ro;
@@ -477,7 +483,7 @@ int main(int argc, char** argv) {
     if (*stc) return tu::report::stdcell(sc_tops, root, sc_cache, sc_netlists, sc_force);
     if (*rtf) return cmd_rtl_files(root, rtl_top, rtl_list, rtl_key);
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
-    if (*rqc) return afvis_scene.empty() ? cmd_relief_quality(rq) : cmd_afvis_quality(afvis_scene, afq);
+    if (*rqc) return afvis_scene.empty() ? cmd_relief_quality(rq) : cmd_afvis_quality(afvis_scene, afq, afvis_plot);
     if (*dmc) return cmd_distance_map(dm_in, dm_out, dm_slices, dmp);
     if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000, demo_out, threads);
   } catch (const fs::filesystem_error& e) {

@@ -38,10 +38,10 @@ int64_t centre_code(int64_t x, int level, int lw) {
 }
 
 Trace trace(const img::Gray8& cells, uint8_t dmin, uint8_t d0, int64_t u, int64_t v, int64_t pu,
-            int64_t pv, TraceStats* st) {
+            int64_t pv, int bias, TraceStats* st) {
   Trace t;
   t.steps = 1;  // the read of d0
-  if (d0 <= dmin || (pu == 0 && pv == 0)) return t;
+  if (int(d0) <= int(dmin) + bias || (pu == 0 && pv == 0)) return t;
   const int cu_log = fmt::kPomUvF - log2_of(cells.width), cv_log = fmt::kPomUvF - log2_of(cells.height);
   const int64_t cw = int64_t(1) << cu_log, ch = int64_t(1) << cv_log;  // cell sides in uv codes
   const int64_t au = std::abs(pu), av = std::abs(pv);
@@ -50,7 +50,8 @@ Trace trace(const img::Gray8& cells, uint8_t dmin, uint8_t d0, int64_t u, int64_
   // Length (uv codes along the axis) to the next boundary in the ray's direction.
   int64_t nu = su > 0 ? (i + 1) * cw - u : u - i * cw;
   int64_t nv = sv > 0 ? (j + 1) * ch - v : v - j * ch;
-  const int64_t reach = int64_t(d0) - dmin;  // depth the ray climbs before nothing can occlude it
+  const int64_t reach = int64_t(d0) - dmin - bias;  // depth the ray climbs before nothing can occlude it
+  const int64_t top = int64_t(d0) - bias;            // d0 - bias - h: the depth test's left operand
   for (uint32_t entered = 0;; ++entered) {
     // Crossing order n_u / |Pu| vs n_v / |Pv| (an axis with P = 0 never crosses).
     const bool along_u = av == 0 || (au != 0 && nu * av <= nv * au);
@@ -74,8 +75,8 @@ Trace trace(const img::Gray8& cells, uint8_t dmin, uint8_t d0, int64_t u, int64_
     }
     const int64_t h = cells.at(static_cast<int>(i & (cells.width - 1)), static_cast<int>(j & (cells.height - 1)));
     ++t.steps;
-    if (st) st->max_abs_test = std::max(st->max_abs_test, std::abs((int64_t(d0) - h) * a));
-    if ((int64_t(d0) - h) * a > 255 * n) {  // entered the cell below its surface
+    if (st) st->max_abs_test = std::max(st->max_abs_test, std::abs((top - h) * a));
+    if ((top - h) * a > 255 * n) {  // entered the cell more than bias below its surface
       t.visible = false;
       return t;
     }
@@ -114,7 +115,7 @@ Out walk(const ewa::fx::PixelSetup& su, const tex::Texture& t, const Config& cfg
     const int64_t cv = centre_code(y, su.level, r.lh);
     apply_rule(cfg.rule, row.size(), [&](size_t k) {
       const int64_t cu = centre_code(row[k].x, su.level, r.lw);
-      const Trace tr = trace(cells, r.dmin, pom::tex_nearest(*r.depth, cu, cv), cu, cv, r.pu, r.pv, st);
+      const Trace tr = trace(cells, r.dmin, pom::tex_nearest(*r.depth, cu, cv), cu, cv, r.pu, r.pv, r.bias, st);
       ++out.traced;
       out.steps += tr.steps;
       out.capped += tr.capped ? 1 : 0;

@@ -13,10 +13,10 @@
 // 2^(PomUvF - log2 side) codes); the next crossing is along u iff n_u |Pv| <= n_v |Pu| (the exact
 // order of n_u / |Pu| and n_v / |Pv|; a corner is taken u first, then v: both neighbours are
 // tested); at a crossing along u the ray's depth is d0 - 255 n_u / |Pu| (codes), so
-//     occluded  iff  (d0 - h) |Pu| > 255 n_u      (entered below the surface)
-//     visible   iff  (d0 - dmin) |Pu| <= 255 n_u  (the ray is above the map's highest point dmin:
-//                                                  nothing further can occlude; stop)
-// (and the same along v with |Pv|). d0 <= dmin or P = 0: visible at once. One depth read per
+//     occluded  iff  (d0 - h - bias) |Pu| > 255 n_u      (entered more than bias below the top)
+//     visible   iff  (d0 - dmin - bias) |Pu| <= 255 n_u  (the ray is within bias of the map's
+//                                                  highest point dmin: nothing can occlude; stop)
+// (and the same along v with |Pv|). d0 <= dmin + bias or P = 0: visible at once. One depth read per
 // clock: steps = 1 (d0) + cells entered. At most AfvStepMax cells are entered; a trace reaching
 // the cap is declared visible (flag, counted): a bounded latency, measured how often it happens.
 // Error: none against the same trace in exact arithmetic on the same codes (AfvisFx.*); against the
@@ -49,6 +49,8 @@
 namespace tu::afvis {
 
 enum class Rule { Every = 0, Row = 1 };
+// The trace's default bias in depth codes (docs/blocks/afvis.md §4: measured against the truth).
+inline constexpr int kDefaultBias = 16;
 
 // The relief seen by one pixel.
 struct Relief {
@@ -57,6 +59,7 @@ struct Relief {
   uint8_t dmin = 0;    // the smallest depth code of the trace map (its highest point)
   int64_t pu = 0, pv = 0;  // P: pom::parallax(view).pu, pv (PomUvF codes)
   int lw = 0, lh = 0;  // log2 of the colour texture's level-0 sides (texel centres -> repeats)
+  int bias = kDefaultBias;  // depth codes, 0..255 (trace)
 };
 
 // The smallest depth code of a map.
@@ -77,8 +80,10 @@ struct TraceStats {
   int64_t max_n = 0, max_cross = 0, max_abs_test = 0;
 };
 // u, v: the surface point in repeats (PomUvF codes, any integer part); d0 its depth code.
+// bias (depth codes): a cell occludes only when the ray enters it more than bias below its top
+// (the shadow-ray epsilon against the box model's self-occlusion on slopes and grain).
 Trace trace(const img::Gray8& cells, uint8_t dmin, uint8_t d0, int64_t u, int64_t v, int64_t pu,
-            int64_t pv, TraceStats* st = nullptr);
+            int64_t pv, int bias = 0, TraceStats* st = nullptr);
 
 // A level-L texel's centre in repeats (PomUvF codes): ((x + 1/2) 2^L) / 2^lw, floored beyond
 // 2^-PomUvF (exact while L + PomUvF - 1 >= lw).

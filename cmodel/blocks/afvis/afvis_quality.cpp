@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -113,6 +116,7 @@ std::vector<QualityRow> quality(const scene::Scene& base, const QualityParams& p
         o.afvis = v.mode;
         o.afvis_rule = v.rule;
         o.afvis_pyramid = v.pyramid;
+        o.afvis_bias = p.bias;
         const render::Frame f = render::render_cmodel(s, {}, o);
         QualityRow r;
         r.map = map, r.height = hm, r.variant = v.name;
@@ -151,6 +155,44 @@ std::string quality_markdown(const std::vector<QualityRow>& rows) {
     o << b;
   }
   return o.str();
+}
+
+void write_quality_plot(const std::vector<QualityRow>& rows, const std::string& dir) {
+  const std::string base = (std::filesystem::path(dir) / "afvis_gain_vs_clocks").string();
+  std::map<std::pair<std::string, double>, double> plain;  // (map, camera) -> PSNR of plain EWA
+  for (const auto& r : rows)
+    if (r.variant == "plain") plain[{r.map, r.height}] = r.psnr;
+  {
+    std::ofstream d(base + ".dat");
+    d << "# one block per variant: added_clocks_pct psnr_gain_db map camera\n";
+    for (const Variant& v : kVariants) {
+      if (v.mode == render::AfvisMode::Off) continue;
+      d << "# " << v.name << "\n";
+      for (const auto& r : rows)
+        if (r.variant == v.name && plain.count({r.map, r.height}))
+          d << r.cost_pct << ' ' << r.psnr - plain[{r.map, r.height}] << " \"" << r.map << " x" << r.height << "\"\n";
+      d << "\n\n";
+    }
+  }
+  std::ofstream g(base + ".gp");
+  g << "set terminal pngcairo size 900,600\nset output '" << base << ".png'\n"
+    << "set title 'AF visibility: PSNR gain over plain EWA (relief pixels, vs truth) vs added clocks'\n"
+    << "set xlabel 'added clocks per relief pixel (%, serial trace: one depth read per clock)'\n"
+    << "set ylabel 'PSNR gain over POM + plain EWA (dB)'\nset grid\nset key outside right\nset xzeroaxis lw 2\nplot";
+  int i = 0;
+  for (const Variant& v : kVariants) {
+    if (v.mode == render::AfvisMode::Off) continue;
+    g << (i ? ", " : " ") << "'" << base << ".dat' index " << i << " using 1:2 with points pt " << 5 + 2 * i
+      << " ps 1.5 title '" << v.name << "'";
+    ++i;
+  }
+  g << ", '' index 0 using 1:2:3 with labels offset 0,1 font ',8' notitle\n";
+  g.close();
+  if (std::system(("gnuplot '" + base + ".gp' 2>'" + base + ".gp.log'").c_str()) != 0) {
+    for (const char* ext : {".dat", ".gp", ".png"}) std::filesystem::remove(base + ext);
+    throw std::runtime_error("afvis plot: gnuplot failed on " + base + ".gp (see " + base + ".gp.log)");
+  }
+  std::filesystem::remove(base + ".gp.log");
 }
 
 }  // namespace tu::afvis

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "afvis/afvis.hpp"
 #include "texunit/scene.hpp"
 
 namespace tu::afvis {
@@ -21,6 +22,7 @@ struct QualityParams {
   int ss = 8;          // truth samples per pixel side
   int threads = 0;     // C-model renders (0: every core)
   std::string tmp_dir; // where the height PNGs go (required when a map is not "bricks")
+  int bias = kDefaultBias;  // the trace's bias (depth codes), every variant
 };
 
 struct QualityRow {
@@ -43,5 +45,9 @@ struct QualityRow {
 // Every relief material of `s` gets af_visibility per variant (the flag in the file is ignored).
 std::vector<QualityRow> quality(const scene::Scene& s, const QualityParams& p);
 std::string quality_markdown(const std::vector<QualityRow>& rows);
+// The plot of the table: PSNR gain over plain EWA (same map and camera) against the added clocks,
+// one series per variant: DIR/afvis_gain_vs_clocks.{dat,gp,png} (gnuplot; std::runtime_error and
+// nothing left behind when it fails).
+void write_quality_plot(const std::vector<QualityRow>& rows, const std::string& dir);
 
 }  // namespace tu::afvis

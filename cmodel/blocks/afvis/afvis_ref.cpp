@@ -18,9 +18,10 @@ struct RefTrace {
 };
 // The DDA of afvis::trace in cell units (the cell of the point: floor), s in relief depth units.
 RefTrace run_ref(const img::Gray8& cells, uint8_t dmin, double d0, double u, double v, double pu,
-                 double pv) {
+                 double pv, int bias) {
   RefTrace r;
   r.t.steps = 1;
+  d0 -= bias;  // the ray bias codes lower: the same tests as afvis::trace
   if (d0 <= dmin || (pu == 0 && pv == 0)) return r;
   const double x = u * cells.width, y = v * cells.height;
   const double au = std::fabs(pu) * cells.width, av = std::fabs(pv) * cells.height;
@@ -58,13 +59,13 @@ ParallaxRef parallax_ref(double vx, double vy, double vz, double scale) {
 }
 
 Trace trace_ref(const img::Gray8& cells, uint8_t dmin, double d0, double u, double v, double pu,
-                double pv) {
-  return run_ref(cells, dmin, d0, u, v, pu, pv).t;
+                double pv, int bias) {
+  return run_ref(cells, dmin, d0, u, v, pu, pv, bias).t;
 }
 
 double trace_margin_ref(const img::Gray8& cells, uint8_t dmin, double d0, double u, double v,
-                        double pu, double pv) {
-  return run_ref(cells, dmin, d0, u, v, pu, pv).margin;
+                        double pu, double pv, int bias) {
+  return run_ref(cells, dmin, d0, u, v, pu, pv, bias).margin;
 }
 
 double depth_bilinear(const img::Gray8& depth, double u, double v) {
@@ -92,7 +93,7 @@ ewa::Params with_visibility(ewa::Params p, const RefRelief& r) {
     const img::Gray8& cells = r.trace_map ? *r.trace_map : *r.depth;
     apply_rule(r.rule, xs.size(), [&](size_t k) {
       const double cu = (double(xs[k]) + 0.5) * l / tw;
-      const Trace t = trace_ref(cells, r.dmin, pom::tex_nearest_f(*r.depth, cu, cv), cu, cv, r.pu, r.pv);
+      const Trace t = trace_ref(cells, r.dmin, pom::tex_nearest_f(*r.depth, cu, cv), cu, cv, r.pu, r.pv, r.bias);
       if (r.traced) ++*r.traced;
       if (r.steps) *r.steps += t.steps;
       return t.visible;

@@ -21,11 +21,11 @@ ParallaxRef parallax_ref(double vx, double vy, double vz, double scale);
 // The box-field trace of afvis::trace in double: the point (u, v) (repeats) at depth code d0,
 // towards the eye along P; cells of `cells`, dmin its smallest code. No cap.
 Trace trace_ref(const img::Gray8& cells, uint8_t dmin, double d0, double u, double v, double pu,
-                double pv);
+                double pv, int bias = 0);
 // The same test with its slack: the smallest (h - D_entry) over the cells entered, in depth codes
 // (< 0: occluded; near 0: a tie that rounding may flip); +inf when no cell is entered.
 double trace_margin_ref(const img::Gray8& cells, uint8_t dmin, double d0, double u, double v,
-                        double pu, double pv);
+                        double pu, double pv, int bias = 0);
 
 // The exact visibility of the surface point above (u, v) on the BILINEAR field (texel centres at
 // (i + 1/2) / side): the eye's ray through it first meets the relief there (relief::exact_hit from
@@ -46,6 +46,7 @@ struct RefRelief {
   Rule rule = Rule::Row;
   uint32_t* traced = nullptr;  // optional: traces run (added to)
   uint32_t* steps = nullptr;   // optional: depth reads (added to)
+  int bias = kDefaultBias;     // depth codes (trace)
 };
 ewa::Params with_visibility(ewa::Params p, const RefRelief& r);
 

@@ -103,6 +103,7 @@ struct CmodelOptions {
   AfvisMode afvis = AfvisMode::Scene;
   afvis::Rule afvis_rule = afvis::Rule::Row;
   int afvis_pyramid = 0;
+  int afvis_bias = afvis::kDefaultBias;  // the trace's bias (depth codes)
 };
 // The options of the texture path alone (relief off), for comparisons with the RTL top.
 inline CmodelOptions texture_path_only() {
