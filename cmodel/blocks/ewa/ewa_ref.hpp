@@ -11,6 +11,9 @@
 // instead of an unbounded walk).
 #pragma once
 
+#include <functional>
+#include <vector>
+
 #include "ellipse/ellipse_ref.hpp"
 #include "texture/texture.hpp"
 
@@ -25,6 +28,10 @@ struct Params {
   // Sub-texel border weights (seed 003 §2, docs/blocks/ewa.md "Border weights"): the box grows by
   // 1/2 texel per side, texels with |d| <= 1/2 get w' Phi(d / 0.2) (exact), d = border_distance().
   bool clip = false;
+  // Optional visibility per walk row (afvis, docs/blocks/afvis.md): given the level, the row y and
+  // the x of its texels with weight > 0 (walk order), clears keep[k] for the texels left out of the
+  // sums. None kept at all: the level's texel nearest the centre (Result::no_weight).
+  std::function<void(int level, int64_t y, const std::vector<int64_t>& xs, std::vector<char>* keep)> row_mask = {};
 };
 
 struct Result {
@@ -33,6 +40,7 @@ struct Result {
   int texels_visited = 0;  // bounding-box texels walked
   int texels_inside = 0;   // texels with Q < 1 (weighted)
   bool capped = false;     // the texel cap raised the level
+  bool no_weight = false;  // row_mask left no texel: the nearest texel at the level
 };
 
 // The footprint's semi-axes s1 >= s2 (singular values of J; s2 grown to s1 / max_aniso) and the
