@@ -90,6 +90,22 @@ case $case in
     "$tu" plan "$tmp/pinned.json" --json >"$tmp/p3.json"
     [ "$(val "$tmp/p3.json" "d['shading']['model'].split()[0], d['shading']['why']")" = "('brdf/dsh', 'named by the materials (MAD 0.00251)')" ] || fail "$(cat "$tmp/p3.json")"
     ;;
+  plan_pipeline)
+    # Pipeline per material (object space vs screen space, by rendering each material alone).
+    # ui_quad's head-on panel: object space at spacing 1.9 (0.28 samples/px x 16 trilinear clocks
+    # + 1 divide) beats screen bilinear (7 clocks/px) and meets 28 dB; at a 30 dB budget it does
+    # not (29.4 dB): the choice flips back to screen space. hud_floor: never (the floor needs more
+    # samples than EWA's clocks allow; the HUD at 1.9 leaves holes).
+    "$tu" plan docs/scenes/ui_quad.json --json >"$tmp/p.json"
+    [ "$(val "$tmp/p.json" "d['pipelines']['panel']['pipeline']")" = object-space ] || fail "ui_quad: $(val "$tmp/p.json" "d['pipelines']")"
+    [ "$(val "$tmp/p.json" "[k['spacing'] for k in d['pipelines']['panel']['object_space'] if k['rendered'] and k['clocks_per_px'] < d['pipelines']['panel']['screen_clocks_per_px'] and k['psnr_db'] >= 28 and k['holes'] == 0]")" = "[1.9]" ] || fail "ui_quad tries"
+    python3 -c "import json,sys; d=json.load(open('docs/scenes/ui_quad.json')); d['error_budget']['min_psnr_db']=30; json.dump(d, open(sys.argv[1],'w'))" "$tmp/ui30.json"
+    "$tu" plan "$tmp/ui30.json" --json >"$tmp/p30.json"
+    [ "$(val "$tmp/p30.json" "d['pipelines']['panel']['pipeline']")" = screen ] || fail "ui_quad at 30 dB: $(val "$tmp/p30.json" "d['pipelines']")"
+    "$tu" plan docs/scenes/hud_floor.json --json >"$tmp/h.json"
+    [ "$(val "$tmp/h.json" "sorted((k, v['pipeline']) for k, v in d['pipelines'].items())")" = "[('floor', 'screen'), ('hud', 'screen')]" ] || fail "hud_floor"
+    [ "$(val "$tmp/h.json" "[k['holes'] > 0 for k in d['pipelines']['hud']['object_space'] if k['rendered']]")" = "[True]" ] || fail "hud holes"
+    ;;
   plan_ui_quad)
     # Head-on, magnified: bilinear instead of EWA, no relief hardware; fewer cells than the full unit.
     "$tu" plan docs/scenes/ui_quad.json --json --out "$tmp/tu_unit_cfg_pkg.sv" >"$tmp/p.json"
