@@ -7,6 +7,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "afvis/afvis.hpp"
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
@@ -34,20 +35,32 @@ ewa::fx::Weights weights_of(scene::WeightSource w) {
 // Relief (docs/blocks/relief.md §9): B1's u, v codes are shifted by the material's method
 // (relief::shift_texel_uv_fx, the step the RTL tu_relief_stage implements). The tangent-space
 // view is the shader's float input, quantised to the unit's s16.14 (as render_ref).
-void shift_relief_fx(const scene::Scene& s, const persp::RayCaster& rays, const scene::Relief& rel,
-                     const Cover& c, const relief::Maps& maps, const tex::Texture& tx, int x, int y,
-                     int64_t* u, int64_t* v, PixelRecord* rec) {
+// Returns the pixel's quantised view (nullopt: no view, no shift).
+std::optional<pom::View> shift_relief_fx(const scene::Scene& s, const persp::RayCaster& rays, const scene::Relief& rel,
+                                         const Cover& c, const relief::Maps& maps, const tex::Texture& tx, int x, int y,
+                                         int64_t* u, int64_t* v, PixelRecord* rec) {
   relief::TangentView tv;
-  if (!relief::pixel_view(rays, s, c.object, c.triangle, x, y, &tv)) return;  // no shift (as render_ref)
+  if (!relief::pixel_view(rays, s, c.object, c.triangle, x, y, &tv)) return std::nullopt;  // no shift (as render_ref)
   const int lw = std::countr_zero(static_cast<unsigned>(tx.levels[0].width));
   const int lh = std::countr_zero(static_cast<unsigned>(tx.levels[0].height));
-  const auto r = relief::shift_texel_uv_fx(maps, *u, *v, lw, lh, relief::quantise(tv, rel.scale),
-                                          rel.method, rel.layers);
+  const pom::View view = relief::quantise(tv, rel.scale);
+  const auto r = relief::shift_texel_uv_fx(maps, *u, *v, lw, lh, view, rel.method, rel.layers);
   *u = r.u;
   *v = r.v;
   rec->relief_n = static_cast<int>(r.n);
   rec->relief_steps = static_cast<int>(r.steps);
   rec->relief_flags = r.flags;
+  return view;
+}
+
+// AF with parallax visibility (docs/blocks/afvis.md): the EWA walk over the texels the eye sees.
+afvis::Relief afvis_relief(const relief::Maps& maps, const img::Gray8* trace_map, const tex::Texture& tx,
+                           const pom::View& view) {
+  const pom::Parallax p = pom::parallax(view);
+  const img::Gray8& cells = trace_map ? *trace_map : maps.depth;
+  return {&maps.depth, trace_map, afvis::min_depth(cells), p.pu, p.pv,
+          std::countr_zero(static_cast<unsigned>(tx.levels[0].width)),
+          std::countr_zero(static_cast<unsigned>(tx.levels[0].height))};
 }
 }  // namespace
 
@@ -100,6 +113,11 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
     reliefs.push_back(opt.relief && s.materials.at(o.material).relief
                           ? std::optional(relief::make_maps(s, o.material))
                           : std::nullopt);
+  // Per object with af_visibility: the trace's cells (the depth map, or its min-depth pyramid level).
+  std::vector<std::optional<img::Gray8>> afv_cells(s.objects.size());
+  for (size_t o = 0; o < s.objects.size(); ++o)
+    if (reliefs[o] && opt.afvis != AfvisMode::Off && (opt.afvis == AfvisMode::On || s.materials.at(s.objects[o].material).relief->af_visibility))
+      afv_cells[o] = afvis::min_depth_pyramid(reliefs[o]->depth, opt.afvis_pyramid);
   const auto mats = object_materials(s);
   std::vector<uint64_t> tex_base;  // per object: its texture's trace base (texel-cache model)
   for (const auto& o : s.objects)
@@ -133,8 +151,9 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       in.u = px.u;
       in.v = px.v;
       PixelRecord rec;
+      std::optional<pom::View> view;
       if (const auto& maps = reliefs[static_cast<size_t>(c.object)]; maps && !px.flag)
-        shift_relief_fx(s, rays, *m.relief, c, *maps, tx, x, y, &in.u, &in.v, &rec);
+        view = shift_relief_fx(s, rays, *m.relief, c, *maps, tx, x, y, &in.u, &in.v, &rec);
       if (opt.uv_shift) opt.uv_shift(x, y, c.object, &in.u, &in.v);
       in.b2 = ellipse::fx::pixel(k, x, y, laniso_code(m.max_aniso), static_cast<uint32_t>(top),
                                  s.footprint == scene::Footprint::Recurrence);
@@ -195,8 +214,20 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
         case scene::Filter::Ewa: {
           // The EWA's level: the sampler's rule on B2's clamped minor axis (tu_ellipse elod_o).
           in.b2.lod = tex::trilinear_lod(in.b2.lmin, lp, top).lod;
-          const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels,
-                                                  m.clip.empty() ? nullptr : &clip::variant(m.clip)});
+          const ewa::fx::Config ecfg{weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels,
+                                     m.clip.empty() ? nullptr : &clip::variant(m.clip)};
+          ewa::fx::Out r;
+          if (const auto& cells = afv_cells[static_cast<size_t>(c.object)]; cells && view) {
+            const auto& maps = *reliefs[static_cast<size_t>(c.object)];
+            const auto a = afvis::filter(in, tx, {ecfg, opt.afvis_rule},
+                                         afvis_relief(maps, opt.afvis_pyramid > 0 ? &*cells : nullptr, tx, *view));
+            r = a.ewa;
+            rec.afv_traced = static_cast<int>(a.traced);
+            rec.afv_steps = static_cast<int>(a.steps);
+            rec.afv_visible = static_cast<int>(a.visible);
+          } else {
+            r = ewa::fx::filter(in, tx, ecfg);
+          }
           rec.color = r.color;
           rec.lod = r.level;
           rec.texels = static_cast<int>(r.texels_visited);

@@ -337,6 +337,7 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
                  : meth == "distance_map_refined" ? ReliefMethod::DistanceMapRefined : ReliefMethod::PomAdaptive;
     rel.layers = r.integer("layers", 1, 256, 32);
     rel.map_layers = r.integer("map_layers", 1, 255, 16);
+    if (r.has("af_visibility")) rel.af_visibility = r.boolean("af_visibility");
     r.finish();
     m.relief = rel;
   }

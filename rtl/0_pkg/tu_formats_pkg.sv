@@ -233,6 +233,12 @@ package tu_formats_pkg;
   localparam int FelTF = 16;  // probe distance t = d / sigma1 in [0, 1) and its step: unsigned, FelTF frac
   localparam int FelWsumW = 21;  // weight sum over <= FelNMax probes: unsigned, GaussSqF fraction bits (exact)
   localparam int FelAccW = 29;  // per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)
+  localparam int AfvStepMax = 64;  // visibility trace: at most this many depth cells entered per texel (flag)
+  localparam int AfvStepW = 7;  // trace step counter 0..AfvStepMax: unsigned integer
+  localparam int AfvPW = 22;  // |Pu|, |Pv| (pom::parallax, < 2^(PomUvF+5)): unsigned magnitude, PomUvF bits
+  localparam int AfvDistW = 23;  // n: ray length to the next cell boundary, |P| s units: unsigned, PomUvF bits
+  localparam int AfvCrossW = 45;  // crossing order e = n_u |Pv|, n_v |Pu|: unsigned, exact products
+  localparam int AfvTestW = 32;  // depth test (d0 - h) |P| vs 255 n: exact, signed, PomUvF bits
   // filter engine of a span (schema.hpp TU_ENGINE_CODES)
   typedef enum logic [1:0] {
     EngBilinear = 2'd0,  // bilinear at level 0 (tu_bilinear)

@@ -164,6 +164,12 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
                                        ? "water is not in the RTL noise unit yet (docs/blocks/noise.md §6)"
                                        : "this unit has no noise unit (the full unit has)") +
                                   "; render it with --engine cmodel or ref");
+  // AF with parallax visibility (docs/blocks/afvis.md): C model only, no RTL visibility unit yet.
+  for (const auto& [name, m] : s.materials)
+    if (o.relief && m.relief && m.relief->af_visibility && o.filter.value_or(m.filter) == scene::Filter::Ewa)
+      throw std::invalid_argument(s.source + ": /materials/" + name +
+                                  "/relief/af_visibility: the RTL unit has no visibility unit yet (docs/blocks/afvis.md);"
+                                  " render it with --engine cmodel or ref, or with --no-relief");
   // The full unit shades (HasShading); a light needs it, and a model the materials name must be its.
   const bool shade_unit = o.has_ewa && !o.corridor_unit;  // the corridor plan has no lights
   if (!shade_unit && !s.lights.empty())

@@ -31,6 +31,23 @@ case $case in
     "$tu" report --blocks reciprocal --count 2000 --no-yosys --stdcell-cache "$tmp/none.json" --json "$tmp/r2.json" >/dev/null
     [ "$(val "$tmp/r2.json" "d[0]['area_um2'].startswith('not measured: tu_reciprocal not in')")" = True ] || fail "missing-cache reason"
     ;;
+  report_cache_key)
+    # A top's synthesis cache key covers the package constants and enums its files name, not the
+    # rest of the package: a constant or enum added for another block keeps the key, a changed
+    # width or enum member the top uses changes it.
+    mkdir -p "$tmp/r/scripts"; cp -r rtl "$tmp/r/"; cp scripts/yosys_area.sh scripts/stdcell_flow.sh "$tmp/r/scripts/"
+    key() { "$tu" rtl-files "$1" --root "$tmp/r" --key "$2"; }
+    k_rec=$(key tu_reciprocal yosys); k_top=$(key tu_texture_unit stdcell); pkg="$tmp/r/rtl/0_pkg/tu_formats_pkg.sv"
+    sed -i 's/^endpackage/  localparam int OtherBlockW = 7;\n  typedef enum logic [1:0] {\n    OtherA = 2'"'"'d0,\n    OtherB = 2'"'"'d1\n  } other_e;\nendpackage/' "$pkg"
+    grep -q "other_e;" "$pkg" || fail "test edit of the package"
+    [ "$(key tu_reciprocal yosys)" = "$k_rec" ] || fail "an unused constant or enum changed tu_reciprocal's key"
+    [ "$(key tu_texture_unit stdcell)" = "$k_top" ] || fail "an unused constant or enum changed tu_texture_unit's key"
+    sed -i 's/EngNearest = 2.d3/EngNearest = 2'"'"'d2/' "$pkg"
+    [ "$(key tu_texture_unit stdcell)" != "$k_top" ] || fail "a changed engine code kept tu_texture_unit's key"
+    [ "$(key tu_reciprocal yosys)" = "$k_rec" ] || fail "the engine enum changed tu_reciprocal's key"
+    sed -i 's/localparam int RecipIdxW = [0-9]*;/localparam int RecipIdxW = 9;/' "$pkg"
+    [ "$(key tu_reciprocal yosys)" != "$k_rec" ] || fail "a changed width kept tu_reciprocal's key"
+    ;;
   report_bad_block)
     if "$tu" report --blocks recip --no-yosys --json "$tmp/r.json" 2>"$tmp/err"; then fail "accepted an unknown block"; fi
     grep -q "unknown block 'recip' (known: reciprocal, persp" "$tmp/err" || fail "message: $(cat "$tmp/err")"

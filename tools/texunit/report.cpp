@@ -123,29 +123,61 @@ std::vector<std::string> rtl_files(const std::string& root, const std::string& t
 }
 
 namespace {
-// A package (`*_pkg.sv`) enters a top's key with every line but its localparams, and with only
-// the localparams the top's other files name (`pkg::Name`): a constant added for another block
-// does not make every cached synthesis stale, a changed width of this one does.
+// A package (`*_pkg.sv`) enters a top's key with its lines outside localparams and typedefs, and
+// with only the localparams and typedef blocks the top's other files name (`pkg::Name`, for a
+// typedef its type or one of its enum members): a constant or enum added for another block does
+// not make every cached synthesis stale, a changed width of this one does.
+bool names(const std::string& users, const std::string& id) {
+  const std::string name = "::" + id;
+  for (auto at = users.find(name); at != std::string::npos; at = users.find(name, at + 1)) {
+    const char next = at + name.size() < users.size() ? users[at + name.size()] : ' ';
+    if (!std::isalnum(static_cast<unsigned char>(next)) && next != '_') return true;
+  }
+  return false;
+}
+// The identifier ending just before position `end` (exclusive) of `line`.
+std::string word_before(const std::string& line, size_t end) {
+  const auto last = line.find_last_not_of(" \t", end - 1);
+  if (last == std::string::npos) return "";
+  size_t first = last + 1;
+  while (first > 0 && (std::isalnum(static_cast<unsigned char>(line[first - 1])) || line[first - 1] == '_')) --first;
+  return line.substr(first, last + 1 - first);
+}
 std::string package_part(const std::string& pkg, const std::string& users) {
   std::istringstream in(pkg);
   std::string line, out;
   while (std::getline(in, line)) {
     const auto lp = line.find("localparam");
     const auto eq = line.find('=');
+    if (line.find("typedef") != std::string::npos) {
+      // A typedef block up to `} name;`: kept if its type or any member (`Member = ...`) is named.
+      std::string block = line + "\n";
+      std::vector<std::string> ids;
+      auto member = [&](const std::string& l) {
+        const auto e = l.find('=');
+        if (e != std::string::npos) ids.push_back(word_before(l, e));
+      };
+      member(line);
+      const bool braced = line.find('{') != std::string::npos;
+      while (braced && line.find('}') == std::string::npos && std::getline(in, line)) {
+        block += line + "\n";
+        member(line);
+      }
+      const auto close = line.find('}');
+      const auto semi = line.find(';', close == std::string::npos ? 0 : close);
+      if (semi != std::string::npos) ids.push_back(word_before(line, semi));
+      for (const auto& id : ids)
+        if (!id.empty() && names(users, id)) {
+          out += block;
+          break;
+        }
+      continue;
+    }
     if (lp == std::string::npos || eq == std::string::npos || eq < lp) {
       out += line + "\n";
       continue;
     }
-    auto end = line.find_last_not_of(" \t", eq - 1);
-    auto begin = line.find_last_of(" \t", end);
-    const std::string name = "::" + line.substr(begin + 1, end - begin);
-    for (auto at = users.find(name); at != std::string::npos; at = users.find(name, at + 1)) {
-      const char next = at + name.size() < users.size() ? users[at + name.size()] : ' ';
-      if (!std::isalnum(static_cast<unsigned char>(next)) && next != '_') {
-        out += line + "\n";
-        break;
-      }
-    }
+    if (names(users, word_before(line, eq))) out += line + "\n";
   }
   return out;
 }

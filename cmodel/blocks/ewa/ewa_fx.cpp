@@ -423,8 +423,10 @@ double theta_ref_b2(const ellipse::fx::Out& o) {
 }
 
 Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels, bool clip) {
+  return filter_ref_b2(in, t, Params{16, static_cast<int>(max_texels), clip});
+}
+Result filter_ref_b2(const In& in, const tex::Texture& t, const Params& p) {
   const auto& o = in.b2;
-  const Params p{16, static_cast<int>(max_texels), clip};
   const double u = std::ldexp(double(in.u), -fmt::kTexUvF), v = std::ldexp(double(in.v), -fmt::kTexUvF);
   if ((o.flags & ellipse::fx::kHorizon) || o.lmaj == ellipse::fx::kLogNegInf)
     return filter_axes(t, u, v, 1, 1, 0, p);

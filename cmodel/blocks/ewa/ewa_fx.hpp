@@ -165,6 +165,8 @@ ellipse::fx::Local footprint_local(double major, double aniso, double theta, dou
 // double; horizon / point footprints -> unit disc (ewa_ref.hpp filter_axes).
 // clip: the float border weights (ewa::Params::clip).
 Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels, bool clip = false);
+// The same with every float parameter (max_aniso is not used: B2's axes are already clamped).
+Result filter_ref_b2(const In& in, const tex::Texture& t, const Params& p);
 // The major-axis angle of B2's conic codes in double (radians; 0 for a circle).
 double theta_ref_b2(const ellipse::fx::Out& o);
 

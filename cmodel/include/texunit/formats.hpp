@@ -259,7 +259,14 @@
   X(FelStepW, 32, "half step (D / (N-1)) (c, s) between probes: signed, FelSigF fraction bits")   \
   X(FelTF, 16, "probe distance t = d / sigma1 in [0, 1) and its step: unsigned, FelTF frac")   \
   X(FelWsumW, 21, "weight sum over <= FelNMax probes: unsigned, GaussSqF fraction bits (exact)") \
-  X(FelAccW, 29, "per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)")
+  X(FelAccW, 29, "per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)")         \
+  /* AF with parallax visibility (docs/blocks/afvis.md): the per-texel trace, in PomUvF codes */ \
+  X(AfvStepMax, 64, "visibility trace: at most this many depth cells entered per texel (flag)") \
+  X(AfvStepW, 7, "trace step counter 0..AfvStepMax: unsigned integer")                         \
+  X(AfvPW, 22, "|Pu|, |Pv| (pom::parallax, < 2^(PomUvF+5)): unsigned magnitude, PomUvF bits")  \
+  X(AfvDistW, 23, "n: ray length to the next cell boundary, |P| s units: unsigned, PomUvF bits") \
+  X(AfvCrossW, 45, "crossing order e = n_u |Pv|, n_v |Pu|: unsigned, exact products")          \
+  X(AfvTestW, 32, "depth test (d0 - h) |P| vs 255 n: exact, signed, PomUvF bits")
 
 namespace tu::fmt {
 #define TU_X_DECLARE(name, value, desc) inline constexpr int k##name = (value);

@@ -34,6 +34,7 @@ struct Relief {
   ReliefMethod method = ReliefMethod::PomAdaptive;
   int layers = 16;             // PomFixed: N; PomAdaptive: Nmax (Nmin = 4); Iterative, DistanceMap*: cap
   int map_layers = 16;         // DistanceMap*: the distance map's layers D
+  bool af_visibility = false;  // EWA keeps only the footprint texels visible over the relief (afvis)
 };
 
 // A procedural colour source (docs/scene-format.md "procedural"; docs/blocks/noise.md §5): the
