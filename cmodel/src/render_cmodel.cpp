@@ -93,6 +93,10 @@ uint32_t laniso_code(double max_aniso) {
   return static_cast<uint32_t>(std::min(l, std::ldexp(1.0, fmt::kEllAnisoW) - 1));
 }
 
+tex::LodParams lod_params(const scene::Material& m) {
+  return tex::lod_params(m.lod_bias, m.min_lod, m.max_lod, m.base_level, m.max_level);
+}
+
 Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, const CmodelOptions& opt) {
   const int w = s.camera.width, h = s.camera.height;
   Frame f;
@@ -179,18 +183,19 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       }
       std::optional<tex::TexelTrace> trace;
       if (opt.trace_texels) trace.emplace(&rec.texel_addrs, tex_base[static_cast<size_t>(c.object)]);
+      const tex::LodParams lp = lod_params(m);
       switch (filter.value_or(m.filter)) {
-        case scene::Filter::Nearest:
-          rec.color = tex::nearest(tx, 0, in.u, in.v);
+        case scene::Filter::Nearest:  // GL NEAREST / LINEAR: the base level
+          rec.color = tex::nearest(tx, tex::level_range(lp, top).base, in.u, in.v);
           rec.texels = 1;
           break;
         case scene::Filter::Bilinear:
-          rec.color = tex::bilinear(tx, 0, in.u, in.v);
+          rec.color = tex::bilinear(tx, tex::level_range(lp, top).base, in.u, in.v);
           rec.texels = 4;
           break;
         case scene::Filter::Trilinear: {
           // The GL rule on B2's log2 rho: the blend position between levels floor(lod) and + 1.
-          const auto tl = tex::trilinear_lod(in.b2.lrho, tex::lod_params(m.lod_bias, m.min_lod, m.max_lod), top);
+          const auto tl = tex::trilinear_lod(in.b2.lrho, lp, top);
           rec.lod = std::ldexp(double(tl.lod), -fmt::kTexLodF);
           rec.tri_flags = tl.flags;
           rec.color = tex::trilinear(tx, tl.lod, in.u, in.v);
@@ -198,7 +203,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           break;
         }
         case scene::Filter::Feline: {
-          const auto r = feline::fx::filter(in, tx, {m.feline_max_probes, tex::lod_params(m.lod_bias, m.min_lod, m.max_lod)});
+          const auto r = feline::fx::filter(in, tx, {m.feline_max_probes, lp});
           rec.color = r.color;
           rec.lod = std::ldexp(double(r.lod), -fmt::kTexLodF);
           rec.tri_flags = r.tri_flags;
@@ -207,6 +212,8 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           break;
         }
         case scene::Filter::Ewa: {
+          // The EWA's level: the sampler's rule on B2's clamped minor axis (tu_ellipse elod_o).
+          in.b2.lod = tex::trilinear_lod(in.b2.lmin, lp, top).lod;
           const ewa::fx::Config ecfg{weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels,
                                      m.clip.empty() ? nullptr : &clip::variant(m.clip)};
           ewa::fx::Out r;

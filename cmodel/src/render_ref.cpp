@@ -152,23 +152,25 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
         f.pixels.push_back(rec);
         continue;
       }
+      const tex::LevelRange lv = tex::level_range(m.base_level, m.max_level, tx.num_levels() - 1);
       switch (filter.value_or(m.filter)) {
-        case scene::Filter::Nearest:
-          rec.color = tx.fetch(0, floor_i64(u), floor_i64(v));
+        case scene::Filter::Nearest:  // GL NEAREST / LINEAR: the base level
+          rec.color = tx.fetch(lv.base, floor_i64(std::ldexp(u, -lv.base)), floor_i64(std::ldexp(v, -lv.base)));
           rec.texels = 1;
           break;
         case scene::Filter::Bilinear:
-          rec.color = to8(tex::bilinear_ref(tx, 0, u, v));
+          rec.color = to8(tex::bilinear_ref(tx, lv.base, u, v));
           rec.texels = 4;
           break;
         case scene::Filter::Trilinear:
           rec.lod = tex::trilinear_lod_ref(j.ux, j.vx, j.uy, j.vy, m.lod_bias, m.min_lod, m.max_lod,
-                                           tx.num_levels() - 1, &rec.tri_flags);
+                                           tx.num_levels() - 1, &rec.tri_flags, m.base_level, m.max_level);
           rec.color = to8(tex::trilinear_ref(tx, rec.lod, u, v));
           rec.texels = 8;
           break;
         case scene::Filter::Feline: {
-          const auto r = feline::filter_ref(tx, u, v, j, {m.feline_max_probes, m.max_aniso, m.lod_bias, m.min_lod, m.max_lod});
+          const auto r = feline::filter_ref(tx, u, v, j, {m.feline_max_probes, m.max_aniso, m.lod_bias, m.min_lod, m.max_lod,
+                                                           m.base_level, m.max_level});
           rec.color = to8(r.color);
           rec.lod = r.lod;
           rec.tri_flags = r.tri_flags;
@@ -177,7 +179,8 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
           break;
         }
         case scene::Filter::Ewa: {
-          ewa::Params ep{m.max_aniso, ewa::kDefaultMaxTexels, !m.clip.empty()};
+          ewa::Params ep{m.max_aniso, ewa::kDefaultMaxTexels, !m.clip.empty(), m.lod_bias, m.min_lod, m.max_lod,
+                          m.base_level, m.max_level};
           if (tv && m.relief->af_visibility) {  // the visible texels only (docs/blocks/afvis.md)
             const auto& maps = *reliefs[static_cast<size_t>(c.object)];
             const auto p = afvis::parallax_ref(tv->x, tv->y, tv->z, m.relief->scale);

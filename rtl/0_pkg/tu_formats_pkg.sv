@@ -267,7 +267,7 @@ package tu_formats_pkg;
   localparam int WsrcW = 2;
   localparam int WrapW = 3;
   // flag bits (bit indices) of the EWA filter and of the footprint unit
-  localparam int EwaFlagUnitDisc = 0;  // B2 horizon or point footprint (no axes): unit disc at level 0
+  localparam int EwaFlagUnitDisc = 0;  // B2 horizon or point footprint (no axes): unit disc at the sampler level
   localparam int EwaFlagAxisClamp = 1;  // log2 major at level L above min(log2 lim_L, EwaAxisMaxLog2): clamped
   localparam int EwaFlagLodSat = 2;  // integer lod above the texture's top level: clamped
   localparam int EwaFlagCapped = 3;  // the box exceeded max_texels: level raised
@@ -280,11 +280,11 @@ package tu_formats_pkg;
   localparam int EllFlagMagnify = 4;  // minor_c < 1 texel: lod = 0
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
-  localparam int MaterialW = 62;  // material fields of a pixel
+  localparam int MaterialW = 66;  // material fields of a pixel
   localparam int ReliefW = 94;  // material relief fields
-  localparam int TriW = 104;  // per-triangle footprint constants
+  localparam int TriW = 112;  // per-triangle footprint constants
   localparam int ProcW = 270;  // procedural material constants
-  localparam int FpixW = 357;  // pixel on its way to the filter
-  localparam int PixW = 451;  // pixel before the relief stage
+  localparam int FpixW = 361;  // pixel on its way to the filter
+  localparam int PixW = 455;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

@@ -151,15 +151,12 @@ PixelSetup setup(const In& in, const tex::Texture& t, const Config& cfg) {
   PixelSetup su;
   const int top = t.num_levels() - 1;
   const bool unit = (o.flags & efx::kHorizon) || o.lmaj == efx::kLogNegInf;
-  int level = 0;
+  // The sampler's level (base level and above, render_cmodel); a unit disc too.
+  int level = std::min(static_cast<int>(o.lod >> fmt::kEllLodF), top);
   if (unit) {
     su.flags |= kUnitDisc;
   } else {
-    level = static_cast<int>(o.lod >> fmt::kEllLodF);
-    if (level > top) {
-      level = top;
-      su.flags |= kLodSat;
-    }
+    if (static_cast<int>(o.lod >> fmt::kEllLodF) > top) su.flags |= kLodSat;
     // ae, ce < 2^62 (B2 block floating point; the ewa vector fields are u62): the difference
     // fits int64.
     const int64_t d = static_cast<int64_t>(o.ae) - static_cast<int64_t>(o.ce);

@@ -7,7 +7,8 @@
 // level. Q = xi^2 + eta^2 with xi, eta linear in (du, dv): Heckbert's incremental Q and the 2-D
 // weight table's (xi, eta) come from the same exact integers.
 //
-//  1. L = integer part of lod, clamped to the pyramid (flag kLodSat when clamped).
+//  1. L = integer part of lod (render_cmodel: the sampler rule tex::trilinear_lod on lmin, the
+//     material's bias, lod clamps and levels), clamped to the pyramid (flag kLodSat when clamped).
 //  2. Direction: d = ae - ce, b = be block-normalised (floor shifts) to EwaCordW-3 magnitude bits;
 //     CORDIC vectoring -> 2 phi = atan2(b, d) (binary angle, 2 pi = 2^EwaAngW); phi is the conic's
 //     larger-eigenvalue (minor-axis) direction; theta = phi + pi/2 reduced to [-pi/2, pi/2) (an

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "texture/trilinear_lod.hpp"
 #include "texunit/convert.hpp"
 
 namespace tu::ewa {
@@ -28,7 +29,8 @@ Axes axes_ref(const ellipse::Jacobian& j, double max_aniso) {
 Result filter_axes(const tex::Texture& t, double u, double v, double s1, double s2, double theta,
                    const Params& p) {
   const int max_level = t.num_levels() - 1;
-  int level = s2 > 1 ? static_cast<int>(std::clamp<int64_t>(floor_i64(std::log2(s2)), 0, max_level)) : 0;
+  int level = static_cast<int>(std::floor(tex::lod_rule_ref(s2 > 0 ? std::log2(s2) : -INFINITY, p.lod_bias, p.min_lod,
+                                                            p.max_lod, max_level, nullptr, p.base_level, p.max_level)));
   const double c = std::cos(theta), s = std::sin(theta);
   Result r;
   for (;; ++level) {

@@ -14,6 +14,7 @@
 #include "afvis/afvis.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "noise/noise_proc.hpp"
+#include "texture/trilinear_lod.hpp"
 #include "texunit/image.hpp"
 #include "texunit/scene.hpp"
 
@@ -115,6 +116,8 @@ inline CmodelOptions texture_path_only() {
 // log2(max anisotropy) as B2's laniso input (u(EllAnisoW).EllLogF, rounded, saturated); the RTL
 // render engine sets the same.
 uint32_t laniso_code(double max_aniso);
+// The material's sampler LOD state as codes (bias, min / max lod, base / max level).
+tex::LodParams lod_params(const scene::Material& m);
 
 // The RTL texture unit's engine for a material's filter (its filt_i code); std::invalid_argument
 // for a filter the RTL has no engine for (feline).

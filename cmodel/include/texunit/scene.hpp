@@ -78,6 +78,9 @@ struct Material {
   std::optional<Relief> relief;
   std::optional<Procedural> procedural;  // colour from noise; `texture` still fixes the uv grid
   std::optional<Specular> specular;  // absent: diffuse only (when the scene has a light)
+  // GL TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL: the levels every engine samples
+  // (tex::level_range; nearest and bilinear sample the base level).
+  int base_level = 0, max_level = 1000;
 };
 
 struct TextureSpec {
