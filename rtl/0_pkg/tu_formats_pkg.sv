@@ -130,6 +130,9 @@ package tu_formats_pkg;
   localparam int TexRamLog2Words = 20;  // simulation texel RAM of the texture-unit top: 2^N RGBA8 words
   localparam int PerspLatency = 8;  // per-pixel pipeline latency in cycles, II = 1
   localparam int PerspSetupLatency = 2;  // per-scanline set-up (tu_persp_setup) latency in cycles, II = 1
+  localparam int TexelDepthWF = 24;  // w in [0, 1]: unsigned, TexelDepthWF fraction bits, round half up, clamped
+  localparam int TexelDepthAccW = 55;  // N = m q2, D = m2 q(m): unsigned, PerspF frac, exact when unguarded
+  localparam int TexelDepthLatency = 10;  // per-pixel pipeline latency in cycles, II = 1
   localparam int ObjSplatWF = 16;  // splat weight: fraction bits (product of two PerspUvF fractions)
   localparam int ObjSplatWW = 17;  // splat weight code 0..2^ObjSplatWF: unsigned, exact
   localparam int ObjAccWW = 40;  // pixel weight sum: unsigned, ObjSplatWF frac (< 2^24 samples), saturating

@@ -33,6 +33,7 @@ namespace fs = std::filesystem;
 
 namespace tu::cosim {
 RtlBlock rtl_persp_direct();  // persp_rtl.cpp (same vectors as persp, not in the registry)
+RtlBlock rtl_persp_texel_depth();  // persp_rtl.cpp (tu_texel_depth on persp_texel_depth rows)
 }
 
 namespace tu::report {
@@ -487,12 +488,13 @@ const cosim::RtlBlock* rtl_or_null(const std::string& name) {
 }
 std::vector<Spec> registry_specs() {
   static const cosim::RtlBlock direct = cosim::rtl_persp_direct();
+  static const cosim::RtlBlock texel_depth = cosim::rtl_persp_texel_depth();  // tu_texel_depth on B1's seeds
   std::vector<Spec> v = {
       {"reciprocal", "faithful_25b", "reciprocal", rtl_or_null("reciprocal"), "tu_reciprocal", "1/M, absolute"},
       {"persp", "incremental", "persp", rtl_or_null("persp"), "tu_persp", "texels"},
       {"persp", "direct", "persp", &direct, "tu_persp_direct", "texels"},
       {"persp", "klane4", "persp_k4", rtl_or_null("persp_k4"), "tu_persp_klane", "texels (item = 4 pixels)"},
-      {"persp", "texel_depth", "persp_texel_depth", nullptr, "", "texels (C model only: no RTL)"},
+      {"persp", "texel_depth", "persp_texel_depth", &texel_depth, "tu_texel_depth", "texels"},
       {"persp_setup", "setup", "persp_setup", rtl_or_null("persp_setup"), "tu_persp_setup", "seed value (0: exact)"},
       {"ellipse", "analytic", "ellipse", rtl_or_null("ellipse"), "tu_ellipse", "LOD (mip levels)"},
       {"ellipse", "recurrence", "ellipse_rec", rtl_or_null("ellipse_rec"), "tu_ellipse_rec",
@@ -513,6 +515,7 @@ std::vector<Spec> registry_specs() {
     const bool known = b.name.rfind("clip_", 0) == 0 || b.name.rfind("weight_table", 0) == 0 ||
                        b.name.rfind("brdf_", 0) == 0 ||
                        b.name == "gauss_weight" ||
+                       b.name == "texel_depth" ||  // its RTL is row persp/texel_depth (on B1's seeds)
                        std::any_of(v.begin(), v.end(), [&](const Spec& x) { return x.block == b.name; });
     if (!known) v.push_back({b.name, b.name, b.name, rtl_or_null(b.name), "tu_" + b.name, b.err_metric});
   }

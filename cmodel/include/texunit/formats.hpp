@@ -150,6 +150,10 @@
   X(TexRamLog2Words, 20, "simulation texel RAM of the texture-unit top: 2^N RGBA8 words")      \
   X(PerspLatency, 8, "per-pixel pipeline latency in cycles, II = 1")                          \
   X(PerspSetupLatency, 2, "per-scanline set-up (tu_persp_setup) latency in cycles, II = 1")   \
+  /* Texel-depth variant of B1 (docs/blocks/persp.md "Texel-depth variant", rtl/persp/tu_texel_depth.sv) */ \
+  X(TexelDepthWF, 24, "w in [0, 1]: unsigned, TexelDepthWF fraction bits, round half up, clamped") \
+  X(TexelDepthAccW, kPerspQW - 1 + kPerspXyW, "N = m q2, D = m2 q(m): unsigned, PerspF frac, exact when unguarded") \
+  X(TexelDepthLatency, 10, "per-pixel pipeline latency in cycles, II = 1")                  \
   /* Object-space pipeline (docs/blocks/objspace.md): splat weights and pixel accumulators */ \
   X(ObjSplatWF, 2 * kPerspUvF, "splat weight: fraction bits (product of two PerspUvF fractions)") \
   X(ObjSplatWW, kObjSplatWF + 1, "splat weight code 0..2^ObjSplatWF: unsigned, exact")       \
