@@ -19,7 +19,10 @@ while [ $# -gt 0 ]; do
   esac
 done
 blocks=("$@")
-[ ${#blocks[@]} -gt 0 ] || mapfile -t blocks < <(awk '!/^#/ && NF {print $1}' testbench/icarus/blocks.txt)
+# Left out of the default list (the CI test), run by name: texel_depth's stiff set takes ~4.6 min
+# under Icarus on a loaded machine (22,115 vectors): `scripts/icarus_all.sh texel_depth`.
+ci_skip=" texel_depth "
+[ ${#blocks[@]} -gt 0 ] || mapfile -t blocks < <(awk -v skip="$ci_skip" '!/^#/ && NF && index(skip, " " $1 " ") == 0 {print $1}' testbench/icarus/blocks.txt)
 command -v iverilog >/dev/null || { echo "icarus_all.sh: skipped: iverilog not installed (apt-get install iverilog)"; exit 0; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "afvis/afvis.hpp"
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
@@ -34,20 +35,32 @@ ewa::fx::Weights weights_of(scene::WeightSource w) {
 // Relief (docs/blocks/relief.md §9): B1's u, v codes are shifted by the material's method
 // (relief::shift_texel_uv_fx, the step the RTL tu_relief_stage implements). The tangent-space
 // view is the shader's float input, quantised to the unit's s16.14 (as render_ref).
-void shift_relief_fx(const scene::Scene& s, const persp::RayCaster& rays, const scene::Relief& rel,
-                     const Cover& c, const relief::Maps& maps, const tex::Texture& tx, int x, int y,
-                     int64_t* u, int64_t* v, PixelRecord* rec) {
+// Returns the pixel's quantised view (nullopt: no view, no shift).
+std::optional<pom::View> shift_relief_fx(const scene::Scene& s, const persp::RayCaster& rays, const scene::Relief& rel,
+                                         const Cover& c, const relief::Maps& maps, const tex::Texture& tx, int x, int y,
+                                         int64_t* u, int64_t* v, PixelRecord* rec) {
   relief::TangentView tv;
-  if (!relief::pixel_view(rays, s, c.object, c.triangle, x, y, &tv)) return;  // no shift (as render_ref)
+  if (!relief::pixel_view(rays, s, c.object, c.triangle, x, y, &tv)) return std::nullopt;  // no shift (as render_ref)
   const int lw = std::countr_zero(static_cast<unsigned>(tx.levels[0].width));
   const int lh = std::countr_zero(static_cast<unsigned>(tx.levels[0].height));
-  const auto r = relief::shift_texel_uv_fx(maps, *u, *v, lw, lh, relief::quantise(tv, rel.scale),
-                                          rel.method, rel.layers);
+  const pom::View view = relief::quantise(tv, rel.scale);
+  const auto r = relief::shift_texel_uv_fx(maps, *u, *v, lw, lh, view, rel.method, rel.layers);
   *u = r.u;
   *v = r.v;
   rec->relief_n = static_cast<int>(r.n);
   rec->relief_steps = static_cast<int>(r.steps);
   rec->relief_flags = r.flags;
+  return view;
+}
+
+// AF with parallax visibility (docs/blocks/afvis.md): the EWA walk over the texels the eye sees.
+afvis::Relief afvis_relief(const relief::Maps& maps, const img::Gray8* trace_map, const tex::Texture& tx,
+                           const pom::View& view, int bias) {
+  const pom::Parallax p = pom::parallax(view);
+  const img::Gray8& cells = trace_map ? *trace_map : maps.depth;
+  return {&maps.depth, trace_map, afvis::min_depth(cells), p.pu, p.pv,
+          std::countr_zero(static_cast<unsigned>(tx.levels[0].width)),
+          std::countr_zero(static_cast<unsigned>(tx.levels[0].height)), bias};
 }
 }  // namespace
 
@@ -80,6 +93,10 @@ uint32_t laniso_code(double max_aniso) {
   return static_cast<uint32_t>(std::min(l, std::ldexp(1.0, fmt::kEllAnisoW) - 1));
 }
 
+tex::LodParams lod_params(const scene::Material& m) {
+  return tex::lod_params(m.lod_bias, m.min_lod, m.max_lod, m.base_level, m.max_level);
+}
+
 Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, const CmodelOptions& opt) {
   const int w = s.camera.width, h = s.camera.height;
   Frame f;
@@ -96,6 +113,11 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
     reliefs.push_back(opt.relief && s.materials.at(o.material).relief
                           ? std::optional(relief::make_maps(s, o.material))
                           : std::nullopt);
+  // Per object with af_visibility: the trace's cells (the depth map, or its min-depth pyramid level).
+  std::vector<std::optional<img::Gray8>> afv_cells(s.objects.size());
+  for (size_t o = 0; o < s.objects.size(); ++o)
+    if (reliefs[o] && opt.afvis != AfvisMode::Off && (opt.afvis == AfvisMode::On || s.materials.at(s.objects[o].material).relief->af_visibility))
+      afv_cells[o] = afvis::min_depth_pyramid(reliefs[o]->depth, opt.afvis_pyramid);
   const auto mats = object_materials(s);
   std::vector<uint64_t> tex_base;  // per object: its texture's trace base (texel-cache model)
   for (const auto& o : s.objects)
@@ -129,8 +151,9 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       in.u = px.u;
       in.v = px.v;
       PixelRecord rec;
+      std::optional<pom::View> view;
       if (const auto& maps = reliefs[static_cast<size_t>(c.object)]; maps && !px.flag)
-        shift_relief_fx(s, rays, *m.relief, c, *maps, tx, x, y, &in.u, &in.v, &rec);
+        view = shift_relief_fx(s, rays, *m.relief, c, *maps, tx, x, y, &in.u, &in.v, &rec);
       if (opt.uv_shift) opt.uv_shift(x, y, c.object, &in.u, &in.v);
       in.b2 = ellipse::fx::pixel(k, x, y, laniso_code(m.max_aniso), static_cast<uint32_t>(top),
                                  s.footprint == scene::Footprint::Recurrence);
@@ -160,18 +183,19 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       }
       std::optional<tex::TexelTrace> trace;
       if (opt.trace_texels) trace.emplace(&rec.texel_addrs, tex_base[static_cast<size_t>(c.object)]);
+      const tex::LodParams lp = lod_params(m);
       switch (filter.value_or(m.filter)) {
-        case scene::Filter::Nearest:
-          rec.color = tex::nearest(tx, 0, in.u, in.v);
+        case scene::Filter::Nearest:  // GL NEAREST / LINEAR: the base level
+          rec.color = tex::nearest(tx, tex::level_range(lp, top).base, in.u, in.v);
           rec.texels = 1;
           break;
         case scene::Filter::Bilinear:
-          rec.color = tex::bilinear(tx, 0, in.u, in.v);
+          rec.color = tex::bilinear(tx, tex::level_range(lp, top).base, in.u, in.v);
           rec.texels = 4;
           break;
         case scene::Filter::Trilinear: {
           // The GL rule on B2's log2 rho: the blend position between levels floor(lod) and + 1.
-          const auto tl = tex::trilinear_lod(in.b2.lrho, tex::lod_params(m.lod_bias, m.min_lod, m.max_lod), top);
+          const auto tl = tex::trilinear_lod(in.b2.lrho, lp, top);
           rec.lod = std::ldexp(double(tl.lod), -fmt::kTexLodF);
           rec.tri_flags = tl.flags;
           rec.color = tex::trilinear(tx, tl.lod, in.u, in.v);
@@ -179,7 +203,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           break;
         }
         case scene::Filter::Feline: {
-          const auto r = feline::fx::filter(in, tx, {m.feline_max_probes, tex::lod_params(m.lod_bias, m.min_lod, m.max_lod)});
+          const auto r = feline::fx::filter(in, tx, {m.feline_max_probes, lp});
           rec.color = r.color;
           rec.lod = std::ldexp(double(r.lod), -fmt::kTexLodF);
           rec.tri_flags = r.tri_flags;
@@ -188,8 +212,22 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           break;
         }
         case scene::Filter::Ewa: {
-          const auto r = ewa::fx::filter(in, tx, {weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels,
-                                                  m.clip.empty() ? nullptr : &clip::variant(m.clip)});
+          // The EWA's level: the sampler's rule on B2's clamped minor axis (tu_ellipse elod_o).
+          in.b2.lod = tex::trilinear_lod(in.b2.lmin, lp, top).lod;
+          const ewa::fx::Config ecfg{weights_of(opt.weights.value_or(m.weights)), ewa::kDefaultMaxTexels,
+                                     m.clip.empty() ? nullptr : &clip::variant(m.clip)};
+          ewa::fx::Out r;
+          if (const auto& cells = afv_cells[static_cast<size_t>(c.object)]; cells && view) {
+            const auto& maps = *reliefs[static_cast<size_t>(c.object)];
+            const auto a = afvis::filter(in, tx, {ecfg, opt.afvis_rule},
+                                         afvis_relief(maps, opt.afvis_pyramid > 0 ? &*cells : nullptr, tx, *view, opt.afvis_bias));
+            r = a.ewa;
+            rec.afv_traced = static_cast<int>(a.traced);
+            rec.afv_steps = static_cast<int>(a.steps);
+            rec.afv_visible = static_cast<int>(a.visible);
+          } else {
+            r = ewa::fx::filter(in, tx, ecfg);
+          }
           rec.color = r.color;
           rec.lod = r.level;
           rec.texels = static_cast<int>(r.texels_visited);

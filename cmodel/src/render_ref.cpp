@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -6,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "afvis/afvis_ref.hpp"
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_fx.hpp"
 #include "ewa/ewa_ref.hpp"
@@ -29,17 +31,19 @@ img::Rgba8 to8(const tex::RgbaF& c) { return {to8(c.r), to8(c.g), to8(c.b), to8(
 // Relief: (u, v) (level-0 texels) shifted by the 256-layer exact march in the tangent frame of
 // the covered triangle; the footprint (ellipse) stays that of the unshifted surface. Records N of
 // the material's method (the layer-count debug image).
-void shift_relief(const scene::Scene& s, const persp::RayCaster& rays, const scene::Relief& rel,
-                  const Cover& c, const relief::Maps& maps, const tex::Texture& tx, int x, int y,
-                  double* u, double* v, PixelRecord* rec) {
+// Returns the pixel's tangent-space view (nullopt: none, no shift).
+std::optional<relief::TangentView> shift_relief(const scene::Scene& s, const persp::RayCaster& rays, const scene::Relief& rel,
+                                                const Cover& c, const relief::Maps& maps, const tex::Texture& tx, int x, int y,
+                                                double* u, double* v, PixelRecord* rec) {
   relief::TangentView tv;
-  if (!relief::pixel_view(rays, s, c.object, c.triangle, x, y, &tv)) return;
+  if (!relief::pixel_view(rays, s, c.object, c.triangle, x, y, &tv)) return std::nullopt;
   const double W = tx.levels[0].width, H = tx.levels[0].height, one = std::ldexp(1.0, fmt::kPomUvF);
   rec->relief_n = static_cast<int>(relief::layers_at(maps, round_i64(*u / W * one), round_i64(*v / H * one),
                                                      relief::quantise(tv, rel.scale), rel.method, rel.layers));
   const auto r = relief::shift_uv_ref(maps, *u / W, *v / H, tv, rel.scale);
   *u = r.u * W;
   *v = r.v * H;
+  return tv;
 }
 }  // namespace
 
@@ -132,7 +136,8 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
       double u, v, q;
       persp::eval_ref(k, x, y, &u, &v, &q);
       PixelRecord rec;
-      if (const auto& maps = reliefs[static_cast<size_t>(c.object)]) shift_relief(s, rays, *m.relief, c, *maps, tx, x, y, &u, &v, &rec);
+      std::optional<relief::TangentView> tv;
+      if (const auto& maps = reliefs[static_cast<size_t>(c.object)]) tv = shift_relief(s, rays, *m.relief, c, *maps, tx, x, y, &u, &v, &rec);
       rec.x = x, rec.y = y, rec.object = c.object, rec.u = u, rec.v = v;
       const auto j = ellipse::analytic(k, x, y);
       const ellipse::FootprintParams fp{m.max_aniso, static_cast<double>(tx.num_levels() - 1)};
@@ -147,23 +152,25 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
         f.pixels.push_back(rec);
         continue;
       }
+      const tex::LevelRange lv = tex::level_range(m.base_level, m.max_level, tx.num_levels() - 1);
       switch (filter.value_or(m.filter)) {
-        case scene::Filter::Nearest:
-          rec.color = tx.fetch(0, floor_i64(u), floor_i64(v));
+        case scene::Filter::Nearest:  // GL NEAREST / LINEAR: the base level
+          rec.color = tx.fetch(lv.base, floor_i64(std::ldexp(u, -lv.base)), floor_i64(std::ldexp(v, -lv.base)));
           rec.texels = 1;
           break;
         case scene::Filter::Bilinear:
-          rec.color = to8(tex::bilinear_ref(tx, 0, u, v));
+          rec.color = to8(tex::bilinear_ref(tx, lv.base, u, v));
           rec.texels = 4;
           break;
         case scene::Filter::Trilinear:
           rec.lod = tex::trilinear_lod_ref(j.ux, j.vx, j.uy, j.vy, m.lod_bias, m.min_lod, m.max_lod,
-                                           tx.num_levels() - 1, &rec.tri_flags);
+                                           tx.num_levels() - 1, &rec.tri_flags, m.base_level, m.max_level);
           rec.color = to8(tex::trilinear_ref(tx, rec.lod, u, v));
           rec.texels = 8;
           break;
         case scene::Filter::Feline: {
-          const auto r = feline::filter_ref(tx, u, v, j, {m.feline_max_probes, m.max_aniso, m.lod_bias, m.min_lod, m.max_lod});
+          const auto r = feline::filter_ref(tx, u, v, j, {m.feline_max_probes, m.max_aniso, m.lod_bias, m.min_lod, m.max_lod,
+                                                           m.base_level, m.max_level});
           rec.color = to8(r.color);
           rec.lod = r.lod;
           rec.tri_flags = r.tri_flags;
@@ -172,7 +179,16 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
           break;
         }
         case scene::Filter::Ewa: {
-          const auto r = ewa::filter_ref(tx, u, v, j, {m.max_aniso, ewa::kDefaultMaxTexels, !m.clip.empty()});
+          ewa::Params ep{m.max_aniso, ewa::kDefaultMaxTexels, !m.clip.empty(), m.lod_bias, m.min_lod, m.max_lod,
+                          m.base_level, m.max_level};
+          if (tv && m.relief->af_visibility) {  // the visible texels only (docs/blocks/afvis.md)
+            const auto& maps = *reliefs[static_cast<size_t>(c.object)];
+            const auto p = afvis::parallax_ref(tv->x, tv->y, tv->z, m.relief->scale);
+            ep = afvis::with_visibility(ep, {&maps.depth, nullptr, afvis::min_depth(maps.depth), p.pu, p.pv,
+                                             std::countr_zero(static_cast<unsigned>(tx.levels[0].width)),
+                                             std::countr_zero(static_cast<unsigned>(tx.levels[0].height))});
+          }
+          const auto r = ewa::filter_ref(tx, u, v, j, ep);
           rec.color = to8(r.color);
           rec.lod = r.level;
           rec.texels = r.texels_visited;

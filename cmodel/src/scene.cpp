@@ -318,7 +318,10 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
   m.lod_bias = n.num("lod_bias", -16, 16, 0.0);
   m.min_lod = n.num("min_lod", 0, 12, 0.0);
   m.max_lod = n.num("max_lod", 0, 12, 12.0);
-  if (m.min_lod > m.max_lod) n.fail_at("max_lod", "below min_lod");
+  // min_lod > max_lod and base_level > max_level are allowed (GL allows them): min_lod wins, the
+  // base level alone is sampled (tex::trilinear_lod, tex::level_range).
+  m.base_level = n.integer("base_level", 0, 12, 0);
+  m.max_level = n.integer("max_level", 0, 1000, 1000);
   if (n.has("relief")) {
     Node r = n.obj("relief");
     Relief rel;
@@ -334,6 +337,7 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
                  : meth == "distance_map_refined" ? ReliefMethod::DistanceMapRefined : ReliefMethod::PomAdaptive;
     rel.layers = r.integer("layers", 1, 256, 32);
     rel.map_layers = r.integer("map_layers", 1, 255, 16);
+    if (r.has("af_visibility")) rel.af_visibility = r.boolean("af_visibility");
     r.finish();
     m.relief = rel;
   }

@@ -139,6 +139,9 @@ package tu_formats_pkg;
   localparam int TexRamLog2Words = 20;  // simulation texel RAM of the texture-unit top: 2^N RGBA8 words
   localparam int PerspLatency = 8;  // per-pixel pipeline latency in cycles, II = 1
   localparam int PerspSetupLatency = 2;  // per-scanline set-up (tu_persp_setup) latency in cycles, II = 1
+  localparam int TexelDepthWF = 24;  // w in [0, 1]: unsigned, TexelDepthWF fraction bits, round half up, clamped
+  localparam int TexelDepthAccW = 55;  // N = m q2, D = m2 q(m): unsigned, PerspF frac, exact when unguarded
+  localparam int TexelDepthLatency = 10;  // per-pixel pipeline latency in cycles, II = 1
   localparam int ObjSplatWF = 16;  // splat weight: fraction bits (product of two PerspUvF fractions)
   localparam int ObjSplatWW = 17;  // splat weight code 0..2^ObjSplatWF: unsigned, exact
   localparam int ObjAccWW = 40;  // pixel weight sum: unsigned, ObjSplatWF frac (< 2^24 samples), saturating
@@ -242,6 +245,12 @@ package tu_formats_pkg;
   localparam int FelTF = 16;  // probe distance t = d / sigma1 in [0, 1) and its step: unsigned, FelTF frac
   localparam int FelWsumW = 21;  // weight sum over <= FelNMax probes: unsigned, GaussSqF fraction bits (exact)
   localparam int FelAccW = 29;  // per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)
+  localparam int AfvStepMax = 64;  // visibility trace: at most this many depth cells entered per texel (flag)
+  localparam int AfvStepW = 7;  // trace step counter 0..AfvStepMax: unsigned integer
+  localparam int AfvPW = 22;  // |Pu|, |Pv| (pom::parallax, < 2^(PomUvF+5)): unsigned magnitude, PomUvF bits
+  localparam int AfvDistW = 23;  // n: ray length to the next cell boundary, |P| s units: unsigned, PomUvF bits
+  localparam int AfvCrossW = 45;  // crossing order e = n_u |Pv|, n_v |Pu|: unsigned, exact products
+  localparam int AfvTestW = 32;  // depth test (d0 - h) |P| vs 255 n: exact, signed, PomUvF bits
   // filter engine of a span (schema.hpp TU_ENGINE_CODES)
   typedef enum logic [1:0] {
     EngBilinear = 2'd0,  // bilinear at level 0 (tu_bilinear)
@@ -267,7 +276,7 @@ package tu_formats_pkg;
   localparam int WsrcW = 2;
   localparam int WrapW = 3;
   // flag bits (bit indices) of the EWA filter and of the footprint unit
-  localparam int EwaFlagUnitDisc = 0;  // B2 horizon or point footprint (no axes): unit disc at level 0
+  localparam int EwaFlagUnitDisc = 0;  // B2 horizon or point footprint (no axes): unit disc at the sampler level
   localparam int EwaFlagAxisClamp = 1;  // log2 major at level L above min(log2 lim_L, EwaAxisMaxLog2): clamped
   localparam int EwaFlagLodSat = 2;  // integer lod above the texture's top level: clamped
   localparam int EwaFlagCapped = 3;  // the box exceeded max_texels: level raised
@@ -280,11 +289,11 @@ package tu_formats_pkg;
   localparam int EllFlagMagnify = 4;  // minor_c < 1 texel: lod = 0
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
-  localparam int MaterialW = 62;  // material fields of a pixel
+  localparam int MaterialW = 66;  // material fields of a pixel
   localparam int ReliefW = 94;  // material relief fields
-  localparam int TriW = 104;  // per-triangle footprint constants
+  localparam int TriW = 112;  // per-triangle footprint constants
   localparam int ProcW = 338;  // procedural material constants
-  localparam int FpixW = 425;  // pixel on its way to the filter
-  localparam int PixW = 519;  // pixel before the relief stage
+  localparam int FpixW = 429;  // pixel on its way to the filter
+  localparam int PixW = 523;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

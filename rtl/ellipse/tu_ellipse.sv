@@ -8,7 +8,9 @@
 //   S4: f = det3 * R (R = 1/q mantissa from the core), log2|f| -> 2 log2 minor, clamp, LOD, flags
 // Trilinear's GL LOD (texture/trilinear_lod.hpp): Px' = nUx^2 + nVx^2, Py' = nUy^2 + nVy^2 from the
 // S0 products, log2 max(Px', Py') in S1 -> lrho (log2 rho); S4 adds the material's bias and clamps
-// to [min lod, max lod] and to the pyramid (tex::trilinear_lod) -> tlod, tflags.
+// to [min lod, max lod] and to its levels [base, top] (tex::trilinear_lod, tu_lod_rule) -> tlod,
+// tflags. The same rule on the clamped minor axis gives the EWA's level elod (render_cmodel).
+// lod_o is B2's own LOD (floor of the minor axis, [0, max_lod]).
 `include "tu_assert.svh"
 module tu_ellipse (
   input  logic                                   clk_i,
@@ -27,6 +29,8 @@ module tu_ellipse (
   input  logic [tu_formats_pkg::TexLodBiasW-1:0] lbias_i,   // trilinear: lod bias, min / max lod
   input  logic [tu_formats_pkg::EllLodW-1:0]     lminlod_i,
   input  logic [tu_formats_pkg::EllLodW-1:0]     lmaxlod_i,
+  input  logic [3:0]                             lbase_i,   // the material's levels (tex::level_range)
+  input  logic [3:0]                             ltop_i,
   output logic                                   out_valid_o,
   input  logic                                   out_ready_i,
   output logic [tu_formats_pkg::EllCoefW-1:0]    ae_o,
@@ -41,7 +45,8 @@ module tu_ellipse (
   output logic [4:0]                             flags_o,
   output logic [tu_formats_pkg::EllLogW-1:0]     lrho_o,    // GL log2 rho (s18.10)
   output logic [tu_formats_pkg::EllLodW-1:0]     tlod_o,    // trilinear lod (u12.8)
-  output logic [2:0]                             tflags_o   // tex::TriFlag
+  output logic [2:0]                             tflags_o,  // tex::TriFlag
+  output logic [tu_formats_pkg::EllLodW-1:0]     elod_o     // EWA level: the rule on lmin (u12.8)
 );
   localparam int NW  = tu_formats_pkg::EllNumW;
   localparam int NF  = tu_formats_pkg::EllNumF;
@@ -126,16 +131,21 @@ module tu_ellipse (
   logic [RhW-1:0]       pm_q1;
   logic [BW-1:0]        lb_q [4];
   logic [LDW-1:0]       ln_q [4], lx_q [4];
+  logic [3:0]           lbs_q [4], ltp_q [4];
   always_ff @(posedge clk_i) begin
     if (en) begin
       pm_q1  <= px0 > py0 ? px0 : py0;
       lb_q[0] <= lbias_i;
       ln_q[0] <= lminlod_i;
       lx_q[0] <= lmaxlod_i;
+      lbs_q[0] <= lbase_i;
+      ltp_q[0] <= ltop_i;
       for (int i = 1; i < 4; i++) begin
         lb_q[i] <= lb_q[i-1];
         ln_q[i] <= ln_q[i-1];
         lx_q[i] <= lx_q[i-1];
+        lbs_q[i] <= lbs_q[i-1];
+        ltp_q[i] <= ltp_q[i-1];
       end
       e_q1   <= e0;
       lqf_q1 <= lqf0;
@@ -299,10 +309,6 @@ module tu_ellipse (
   logic                 fz4;
   logic signed [31:0]   off4, lf4, fexp4, lmaj4, cap4, lmin4, lod4, top4;
   logic [4:0]           flags4;
-  logic signed [31:0]   lam4, lmin4s, lmax4s;
-  logic [2:0]           tflags4;
-  assign lmin4s = $signed(32'(ln_q[3]));
-  assign lmax4s = $signed(32'(lx_q[3]));
   always_comb begin
     p4  = $signed(dm_q[3]) * $signed({1'b0, r_core});
     ap4 = p4[PW-1] ? PW'(-p4) : PW'(p4);
@@ -345,19 +351,6 @@ module tu_ellipse (
       flags4[3] = 1'b1;
       lod4 = top4;
     end
-    // tex::trilinear_lod: bias, [min, max] lod, magnification at lambda <= 0, pyramid clamp
-    tflags4 = '0;
-    lam4 = (lr_q[2] >>> (tu_formats_pkg::EllLogF - tu_formats_pkg::TexLodF)) + 32'($signed(lb_q[3]));
-    // the clamp flag: min lod > 0 raised lambda, or max lod lowered it (as the C model)
-    tflags4[1] = (lam4 < lmin4s && lmin4s > 0) || lam4 > lmax4s;
-    if (lam4 < lmin4s || lam4 > lmax4s) lam4 = (lam4 < lmin4s || lmin4s > lmax4s) ? lmin4s : lmax4s;
-    if (lam4 <= 0) begin
-      tflags4[0] = 1'b1;
-      lam4 = 0;
-    end else if (lam4 >= top4) begin
-      tflags4[2] = 1'b1;
-      lam4 = top4;
-    end
     if (sz_q4) begin  // point footprint
       flags4 = 5'b10010;
       lmaj4 = LogMin;
@@ -365,12 +358,26 @@ module tu_ellipse (
       lod4 = 0;
     end
   end
+  // The sampler's rule (tex::trilinear_lod) on the values output (0 on the horizon, as the C model).
+  logic [LDW-1:0] tlod4, elod4;
+  logic [2:0]     tflags4, eflags4;
+  tu_lod_rule u_tri_rule (
+    .l_i(g_q[3] ? 32'sd0 : lr_q[2]), .bias_i(lb_q[3]), .minlod_i(ln_q[3]), .maxlod_i(lx_q[3]),
+    .base_i(lbs_q[3]), .top_i(ltp_q[3]), .lod_o(tlod4), .flags_o(tflags4)
+  );
+  tu_lod_rule u_ewa_rule (
+    .l_i(g_q[3] ? 32'sd0 : lmin4), .bias_i(lb_q[3]), .minlod_i(ln_q[3]), .maxlod_i(lx_q[3]),
+    .base_i(lbs_q[3]), .top_i(ltp_q[3]), .lod_o(elod4), .flags_o(eflags4)
+  );
   always_ff @(posedge clk_i) begin
     if (en) begin
+      tlod_o   <= tlod4;
+      tflags_o <= tflags4;
+      elod_o   <= elod4;
       if (g_q[3]) begin
         ae_o <= '0; be_o <= '0; ce_o <= '0; eexp_o <= '0; fm_o <= '0; fexp_o <= '0;
         lmaj_o <= '0; lmin_o <= '0; lod_o <= '0; flags_o <= 5'b00001;
-        lrho_o <= '0; tlod_o <= '0; tflags_o <= '0;
+        lrho_o <= '0;
       end else begin
         ae_o    <= ae_q4;
         be_o    <= be_q4;
@@ -383,15 +390,13 @@ module tu_ellipse (
         lod_o   <= tu_formats_pkg::EllLodW'(lod4);
         flags_o <= flags4;
         lrho_o  <= LW'(lr_q[2]);
-        tlod_o  <= LDW'(lam4);
-        tflags_o <= tflags4;
       end
     end
   end
 
   logic unused;
-  assign unused = ^{stage_valid, qn0[QW-MW-1:0], apn4[PW-tu_formats_pkg::EllFmW-1:0], pmn1[RhW-LMW-1:0]};
+  assign unused = ^{stage_valid, qn0[QW-MW-1:0], apn4[PW-tu_formats_pkg::EllFmW-1:0], pmn1[RhW-LMW-1:0], eflags4};
 
   // valid/ready protocol checks (rtl/common/tu_assert.svh)
-  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {ae_o, be_o, ce_o, eexp_o, fm_o, fexp_o, lmaj_o, lmin_o, lod_o, flags_o, lrho_o, tlod_o, tflags_o})
+  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {ae_o, be_o, ce_o, eexp_o, fm_o, fexp_o, lmaj_o, lmin_o, lod_o, flags_o, lrho_o, tlod_o, tflags_o, elod_o})
 endmodule

@@ -27,6 +27,8 @@ module tu_ellipse_rec (
   input  logic [tu_formats_pkg::TexLodBiasW-1:0] lbias_i,   // trilinear: lod bias, min / max lod
   input  logic [tu_formats_pkg::EllLodW-1:0]     lminlod_i,
   input  logic [tu_formats_pkg::EllLodW-1:0]     lmaxlod_i,
+  input  logic [3:0]                             lbase_i,   // the material's levels (tex::level_range)
+  input  logic [3:0]                             ltop_i,
   output logic                                   out_valid_o,
   input  logic                                   out_ready_i,
   output logic [tu_formats_pkg::EllCoefW-1:0]    ae_o,
@@ -41,7 +43,8 @@ module tu_ellipse_rec (
   output logic [4:0]                             flags_o,
   output logic [tu_formats_pkg::EllLogW-1:0]     lrho_o,
   output logic [tu_formats_pkg::EllLodW-1:0]     tlod_o,
-  output logic [2:0]                             tflags_o
+  output logic [2:0]                             tflags_o,
+  output logic [tu_formats_pkg::EllLodW-1:0]     elod_o     // EWA level (tu_ellipse)
 );
   localparam int NW  = tu_formats_pkg::EllNumW;
   localparam int NF  = tu_formats_pkg::EllNumF;
@@ -178,8 +181,11 @@ module tu_ellipse_rec (
   logic [tu_formats_pkg::EllMaxLodW-1:0]  ml_q [FL];
   logic [tu_formats_pkg::TexLodBiasW-1:0] lb_q [FL];
   logic [tu_formats_pkg::EllLodW-1:0]     ln_q [FL], lx_q [FL];
+  logic [3:0]                             lbs_q [FL], ltp_q [FL];
   always_ff @(posedge clk_i) begin
     if (fen) begin
+      lbs_q[0] <= lbase_i;
+      ltp_q[0] <= ltop_i;
       la_q[0] <= laniso_i;
       ml_q[0] <= maxlod_i;
       lb_q[0] <= lbias_i;
@@ -191,6 +197,8 @@ module tu_ellipse_rec (
         lb_q[i] <= lb_q[i-1];
         ln_q[i] <= ln_q[i-1];
         lx_q[i] <= lx_q[i-1];
+        lbs_q[i] <= lbs_q[i-1];
+        ltp_q[i] <= ltp_q[i-1];
       end
     end
   end
@@ -200,10 +208,10 @@ module tu_ellipse_rec (
     .clk_i, .rst_ni, .in_valid_i(f_out_valid), .in_ready_o(b_in_ready),
     .nux_i(bux), .nvx_i(bvx), .nuy_i(buy), .nvy_i(bvy), .q_i(bq), .dm_i(bdm), .dexp_i(bdexp),
     .laniso_i(la_q[FL-1]), .maxlod_i(ml_q[FL-1]), .lbias_i(lb_q[FL-1]), .lminlod_i(ln_q[FL-1]),
-    .lmaxlod_i(lx_q[FL-1]),
+    .lmaxlod_i(lx_q[FL-1]), .lbase_i(lbs_q[FL-1]), .ltop_i(ltp_q[FL-1]),
     .out_valid_o, .out_ready_i,
     .ae_o, .be_o, .ce_o, .eexp_o, .fm_o, .fexp_o, .lmaj_o, .lmin_o, .lod_o, .flags_o,
-    .lrho_o, .tlod_o, .tflags_o
+    .lrho_o, .tlod_o, .tflags_o, .elod_o
   );
 
   logic unused;

@@ -1,7 +1,7 @@
 // EWA per-pixel set-up (B5 steps 1-3 of ewa::fx::setup, plus the walk's start values), a
 // sequential FSM; bit-exact with cmodel/blocks/ewa/ewa_fx.cpp (docs/blocks/ewa.md "RTL").
 //   ACCEPT  1 clock   register the pixel
-//   PRE     1         level L0 = min(lod >> EllLodF, top) (unit disc: 0), d = Ae'-Ce', b = Be'
+//   PRE     1         level L0 = min(lod >> EllLodF, top) (the sampler's level, a unit disc too), d = Ae'-Ce', b = Be'
 //                     block-normalised, pre-rotation into the right half-plane
 //   VEC     I/U       CORDIC vectoring, U iterations per clock -> 2 phi; theta = phi + 1/4 turn
 //   ROT     I/U       CORDIC rotation -> c, s (rounded half up to EwaCsF bits)
@@ -320,7 +320,7 @@ module tu_ewa_setup #(
         fl_q <= '0;
         if (unit_q) begin
           fl_q[tu_formats_pkg::EwaFlagUnitDisc] <= 1'b1;
-          lev_q   <= '0;
+          lev_q   <= lodi_q > top_q ? top_q : lodi_q;
         end else if (lodi_q > top_q) begin
           fl_q[tu_formats_pkg::EwaFlagLodSat] <= 1'b1;
           lev_q   <= top_q;

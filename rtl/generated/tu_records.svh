@@ -15,6 +15,7 @@ typedef struct packed {
   logic [tu_formats_pkg::EwaCountW-1:0] cap;  // EWA texel cap
   logic [tu_formats_pkg::EngineW-1:0] filt;  // filter engine (Eng* codes)
   logic clip;  // EWA sub-texel border weights (the unit's EwaClipVariant)
+  logic [3:0] tlbase;  // colour texture: base level (tex::level_range), nearest and bilinear sample it
 } tu_material_t;
 // material relief fields
 typedef struct packed {
@@ -39,6 +40,8 @@ typedef struct packed {
   logic [tu_formats_pkg::TexLodBiasW-1:0] lbias;  // trilinear lod bias (s14.8)
   logic [tu_formats_pkg::EllLodW-1:0] lminlod;  // trilinear min lod
   logic [tu_formats_pkg::EllLodW-1:0] lmaxlod;  // trilinear max lod
+  logic [3:0] lbase;  // sampler levels: base (tex::level_range)
+  logic [3:0] ltop;  // sampler levels: top (tex::level_range)
 } tu_tri_t;
 // procedural material constants
 typedef struct packed {

@@ -1,5 +1,6 @@
-// Nearest-texel filter at level 0 (the nearest engine of tu_texture_unit), exactly
-// tex::nearest(t, 0, u, v): texel (floor(u), floor(v)) of level 0, wrapped like the texture; a
+// Nearest-texel filter at level L (the nearest engine of tu_texture_unit: the material's base
+// level), exactly tex::nearest(t, L, u, v): texel (floor(u / 2^L), floor(v / 2^L)) of level L,
+// wrapped like the texture; a
 // B1-guard pixel: texel (0, 0) of the 1x1 top level (the texture's mean, as render_cmodel).
 // One read (1-cycle latency): accepted at t, output valid at t + 3, accepts again the clock after
 // its output is taken (ewa::stream_cycles).
@@ -12,6 +13,7 @@ module tu_nearest (
   input  logic [tu_formats_pkg::PerspUvW-1:0] u_i,
   input  logic [tu_formats_pkg::PerspUvW-1:0] v_i,
   input  logic                                guard_i,
+  input  logic [3:0]                          level_i,  // L (TexUvF + L < 32)
   input  logic [tu_formats_pkg::TexAddrW-1:0] base_i,
   input  logic [3:0]                          lw_i,
   input  logic [3:0]                          lh_i,
@@ -49,10 +51,10 @@ module tu_nearest (
         x_q <= '0;
         y_q <= '0;
       end else begin
-        x_q <= $signed(u_i) >>> F;
-        y_q <= $signed(v_i) >>> F;
+        x_q <= $signed(u_i) >>> (F + 32'(level_i));
+        y_q <= $signed(v_i) >>> (F + 32'(level_i));
       end
-      lev_q   <= guard_i ? (lw_i > lh_i ? lw_i : lh_i) : 4'd0;
+      lev_q   <= guard_i ? (lw_i > lh_i ? lw_i : lh_i) : level_i;
       base_q  <= base_i;
       lw_q    <= lw_i;
       lh_q    <= lh_i;

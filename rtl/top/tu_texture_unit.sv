@@ -89,6 +89,8 @@ module tu_texture_unit #(
   input  logic [tu_formats_pkg::TexLodBiasW-1:0] lbias_i,
   input  logic [tu_formats_pkg::EllLodW-1:0]    lminlod_i,
   input  logic [tu_formats_pkg::EllLodW-1:0]    lmaxlod_i,
+  input  logic [3:0]                            lbase_i,  // material levels [base, top] (tex::level_range)
+  input  logic [3:0]                            ltop_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]   tbase_i,
   input  logic [3:0]                            tlw_i,
   input  logic [3:0]                            tlh_i,
@@ -177,6 +179,9 @@ module tu_texture_unit #(
     in_tri.lbias   = lbias_i;
     in_tri.lminlod = lminlod_i;
     in_tri.lmaxlod = lmaxlod_i;
+    in_tri.lbase   = lbase_i;
+    in_tri.ltop    = ltop_i;
+    in_mat.tlbase  = lbase_i;
     in_mat.tbase   = tbase_i;
     in_mat.tlw     = tlw_i;
     in_mat.tlh     = tlh_i;
@@ -272,7 +277,7 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::EllFmW-1:0]   b2_fm;
   logic [tu_formats_pkg::EllFexpW-1:0] b2_fexp;
   logic [tu_formats_pkg::EllLogW-1:0]  b2_lmaj, b2_lmin;
-  logic [tu_formats_pkg::EllLodW-1:0]  b2_lod, b2_tlod;  // EWA's lod; trilinear's (GL rule)
+  logic [tu_formats_pkg::EllLodW-1:0]  b2_lod, b2_tlod, b2_glod;  // EWA level, trilinear lod (the sampler rule); B2 lod
   logic [tu_formats_pkg::EllLogW-1:0]  b2_lrho;
   logic [2:0]                          b2_tflags;
   logic [4:0]                          b2_flags;
@@ -307,10 +312,11 @@ module tu_texture_unit #(
       .nux_i(ex_nux), .nvx_i(ex_nvx), .nuy_i(ex_nuy), .nvy_i(ex_nvy), .q_i(ex_q), .qg_i(ex_qg), .qh_i(ex_qh),
       .laniso_i(ex_tri.laniso), .maxlod_i(ex_tri.maxlod),
       .lbias_i(ex_tri.lbias), .lminlod_i(ex_tri.lminlod), .lmaxlod_i(ex_tri.lmaxlod),
+      .lbase_i(ex_tri.lbase), .ltop_i(ex_tri.ltop),
       .out_valid_o(b2_valid), .out_ready_i(pj_ready && b1_valid && sb_valid),
       .ae_o(b2_ae), .be_o(b2_be), .ce_o(b2_ce), .eexp_o(b2_eexp), .fm_o(b2_fm), .fexp_o(b2_fexp),
-      .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_lod), .flags_o(b2_flags),
-      .lrho_o(b2_lrho), .tlod_o(b2_tlod), .tflags_o(b2_tflags)
+      .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_glod), .flags_o(b2_flags),
+      .lrho_o(b2_lrho), .tlod_o(b2_tlod), .tflags_o(b2_tflags), .elod_o(b2_lod)
     );
     logic unused_det3;
     assign unused_det3 = ^{ex_tri.dm, ex_tri.dexp};  // det J is formed inside
@@ -320,16 +326,17 @@ module tu_texture_unit #(
       .nux_i(ex_nux), .nvx_i(ex_nvx), .nuy_i(ex_nuy), .nvy_i(ex_nvy), .q_i(ex_q),
       .dm_i(ex_tri.dm), .dexp_i(ex_tri.dexp), .laniso_i(ex_tri.laniso), .maxlod_i(ex_tri.maxlod),
       .lbias_i(ex_tri.lbias), .lminlod_i(ex_tri.lminlod), .lmaxlod_i(ex_tri.lmaxlod),
+      .lbase_i(ex_tri.lbase), .ltop_i(ex_tri.ltop),
       .out_valid_o(b2_valid), .out_ready_i(pj_ready && b1_valid && sb_valid),
       .ae_o(b2_ae), .be_o(b2_be), .ce_o(b2_ce), .eexp_o(b2_eexp), .fm_o(b2_fm), .fexp_o(b2_fexp),
-      .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_lod), .flags_o(b2_flags),
-      .lrho_o(b2_lrho), .tlod_o(b2_tlod), .tflags_o(b2_tflags)
+      .lmaj_o(b2_lmaj), .lmin_o(b2_lmin), .lod_o(b2_glod), .flags_o(b2_flags),
+      .lrho_o(b2_lrho), .tlod_o(b2_tlod), .tflags_o(b2_tflags), .elod_o(b2_lod)
     );
     logic unused_qgh;
     assign unused_qgh = ^{ex_qg, ex_qh};  // the recurrence's denominators
   end
   logic unused_b2;
-  assign unused_b2 = ^b2_tflags;  // reported by the C model's record only
+  assign unused_b2 = ^{b2_tflags, b2_glod};  // the C model's record only; the EWA takes elod (the sampler's rule)
   // Holds the sideband of every pixel inside B1/B2 (at most max(PerspLatency, EllB2Lat) + 1).
   tu_fifo #(.Width(PixW), .Depth(16)) u_side (
     .clk_i, .rst_ni, .in_valid_i(ex_valid && b1_in_ready && b2_in_ready), .in_ready_o(sb_in_ready),
@@ -519,7 +526,7 @@ module tu_texture_unit #(
   if (HasBilinear != 0) begin : g_bilinear
     tu_bilinear u_bil (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngBil), .in_ready_o(bil_in_ready),
-      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .level_i(4'd0), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
+      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .level_i(f_mat.tlbase), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
       .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i,
       .out_valid_o(bil_valid), .out_ready_i(p_ready && os_valid && cur_q == EngBil), .rgba_o(bil_rgba)
     );
@@ -529,6 +536,8 @@ module tu_texture_unit #(
     assign bil_req      = 1'b0;
     assign bil_addr     = '0;
     assign bil_rgba     = '0;
+    logic unused_bil;
+    assign unused_bil = ^f_mat.tlbase;  // the base level feeds tu_bilinear and tu_nearest only
   end
   if (HasTriFilter != 0) begin : g_trilinear
     tu_trilinear u_tri (
@@ -551,8 +560,8 @@ module tu_texture_unit #(
   if (HasNearest != 0) begin : g_nearest
     tu_nearest u_nst (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngNst), .in_ready_o(nst_in_ready),
-      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh), .wrap_i({f_mat.twrapv, f_mat.twrapu}),
-      .tex_req_o(nst_req), .tex_addr_o(nst_addr), .tex_data_i,
+      .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .level_i(f_mat.tlbase), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(nst_req), .tex_addr_o(nst_addr), .tex_data_i,
       .out_valid_o(nst_valid), .out_ready_i(p_ready && os_valid && cur_q == EngNst), .rgba_o(nst_rgba)
     );
   end else begin : g_no_nearest
@@ -561,6 +570,8 @@ module tu_texture_unit #(
     assign nst_req      = 1'b0;
     assign nst_addr     = '0;
     assign nst_rgba     = '0;
+    logic unused_nst;
+    assign unused_nst = ^f_mat.tlbase;
   end
   // Noise unit: a procedural pixel's colour from tu_noise_unit at (u, v) with lrho, no texels.
   if (HasNoise != 0) begin : g_noise

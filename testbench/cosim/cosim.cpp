@@ -13,6 +13,7 @@ std::vector<RtlBlock> rtl_gauss();  // gauss_rtl.cpp
 RtlBlock rtl_persp();       // persp_rtl.cpp
 RtlBlock rtl_persp_k4();    // persp_rtl.cpp
 RtlBlock rtl_persp_setup(); // persp_rtl.cpp
+RtlBlock rtl_texel_depth(); // persp_rtl.cpp
 RtlBlock rtl_pom_layers();  // pom_layers_rtl.cpp
 RtlBlock rtl_pom_march();   // pom_march_rtl.cpp
 RtlBlock rtl_iter_parallax();  // iter_parallax_rtl.cpp
@@ -27,7 +28,7 @@ std::vector<RtlBlock> rtl_brdf();  // brdf_rtl.cpp
 std::vector<RtlBlock> rtl_perlin();  // perlin_rtl.cpp (incl. the octave-serial variants)
 
 const RtlBlock& find_rtl(const std::string& name) {
-  static const std::vector<RtlBlock> rtl = {rtl_reciprocal(), rtl_persp(), rtl_persp_k4(), rtl_persp_setup(), rtl_pom_layers(),
+  static const std::vector<RtlBlock> rtl = {rtl_reciprocal(), rtl_persp(), rtl_persp_k4(), rtl_persp_setup(), rtl_texel_depth(), rtl_pom_layers(),
                                             rtl_pom_march(), rtl_iter_parallax(), rtl_ellipse(), rtl_ellipse_rec(), rtl_ewa(),
                                             rtl_ewa_border(), rtl_objspace_sample(), rtl_texel_addr()};
   for (const auto& r : rtl)

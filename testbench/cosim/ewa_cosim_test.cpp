@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <optional>
 
 #include "cosim_checks.hpp"
@@ -449,6 +450,58 @@ TEST(TextureUnitRtl, WrapModesSceneEqualsCModelCyclesPredicted) {
                   (unsigned long long)r.mismatches, border, (unsigned long long)r.cycles,
                   (unsigned long long)r.predicted_cycles);
     }
+}
+
+// Sampler LOD state (docs/blocks/texture.md "LOD state"): docs/scenes/lod_state.json, one floor
+// strip per material with non-default lod_bias / min_lod / max_lod / base_level / max_level and
+// the stiff states (min_lod > max_lod, bias +-16, base_level > max_level), through every engine
+// of the top: pixels = C model, cycles = ewa::stream_cycles; the states' documented levels.
+TEST(TextureUnitRtl, LodStateSceneEqualsCModelCyclesPredicted) {
+  auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/lod_state.json");
+  std::vector<std::optional<scene::Filter>> filters = {std::nullopt, scene::Filter::Ewa, scene::Filter::Trilinear,
+                                                       scene::Filter::Bilinear, scene::Filter::Nearest};
+  for (const auto& f : filters)
+    for (double stall : {0.0, 0.3}) {
+      if (f && stall > 0) continue;
+      cosim::RtlRenderOptions o;
+      o.filter = f;
+      o.stall_prob = stall;
+      const auto r = cosim::render_rtl(s, o);
+      EXPECT_TRUE(r.ok()) << r.first_mismatch;
+      EXPECT_GT(r.frame.pixels.size(), 2000u);
+      if (stall == 0) EXPECT_EQ(r.cycles, r.predicted_cycles);
+      std::printf("lod state, %s, stalls %.1f: %zu px, %llu mismatches, cycles %llu (predicted %llu)\n",
+                  f ? scene::to_string(*f) : "as authored", stall, r.frame.pixels.size(),
+                  (unsigned long long)r.mismatches, (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
+    }
+  // The documented levels of each state (C model = RTL above).
+  const auto c = render::render_cmodel(s, std::nullopt, render::texture_path_only());
+  std::map<std::string, std::pair<double, double>> range;  // material -> min, max lod
+  for (const auto& p : c.pixels) {
+    const std::string& m = s.objects[static_cast<size_t>(p.object)].material;
+    auto [it, fresh] = range.try_emplace(m, p.lod, p.lod);
+    it->second.first = std::min(it->second.first, p.lod), it->second.second = std::max(it->second.second, p.lod);
+  }
+  EXPECT_EQ(range.at("tri_stiff"), std::make_pair(2.5, 2.5));   // min_lod > max_lod: min_lod wins
+  EXPECT_EQ(range.at("ewa_stiff"), std::make_pair(5.0, 5.0));   // base 5 > max 2: level 5 alone
+  EXPECT_GE(range.at("tri_bias").first, 1.5);                   // base 1 + min_lod 0.5
+  EXPECT_LE(range.at("tri_bias").second, 4.5);                  // base 1 + max_lod 3.5 (< max_level 5)
+  EXPECT_GE(range.at("ewa_base").first, 2.0);                   // never below the base level
+  for (const auto& [m, r] : range) std::printf("  %s: lod %.3f .. %.3f\n", m.c_str(), r.first, r.second);
+  // The state changes the picture: with every field at its default, most pixels differ.
+  auto plain = s;
+  for (auto& [name, m] : plain.materials) m.lod_bias = 0, m.min_lod = 0, m.max_lod = 12, m.base_level = 0, m.max_level = 1000;
+  const auto d = render::render_cmodel(plain, std::nullopt, render::texture_path_only());
+  ASSERT_EQ(d.pixels.size(), c.pixels.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < c.pixels.size(); ++i) differ += !(c.pixels[i].color == d.pixels[i].color);
+  std::printf("  %zu of %zu px differ from the default state\n", differ, c.pixels.size());
+  EXPECT_GT(differ, c.pixels.size() / 2);
+  // The recurrence footprint unit applies the same rule.
+  s.footprint = scene::Footprint::Recurrence;
+  const auto rr = cosim::render_rtl(s, {});
+  EXPECT_TRUE(rr.ok()) << rr.first_mismatch;
+  EXPECT_EQ(rr.cycles, rr.predicted_cycles);
 }
 }  // namespace
 

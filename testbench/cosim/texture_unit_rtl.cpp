@@ -35,7 +35,7 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kWrap,
   kWsrc, kCap, kFilt, kClip, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
-  kRdm, kDlayers, kDbase,
+  kRdm, kDlayers, kDbase, kLbase, kLtop,
   kProc, kProcWords = (schema::kProcW + 63) / 64, kRowSize = kProc + kProcWords  // tu_proc_t, least significant first
 };
 
@@ -95,6 +95,8 @@ void drive(V& d, const Row& r) {
   d.lbias_i = static_cast<uint16_t>(r[kLbias]);
   d.lminlod_i = static_cast<uint16_t>(r[kLminlod]);
   d.lmaxlod_i = static_cast<uint16_t>(r[kLmaxlod]);
+  d.lbase_i = static_cast<uint8_t>(r[kLbase]);
+  d.ltop_i = static_cast<uint8_t>(r[kLtop]);
   d.tbase_i = static_cast<uint32_t>(r[kBase]);
   d.tlw_i = static_cast<uint8_t>(r[kLw]);
   d.tlh_i = static_cast<uint8_t>(r[kLh]);
@@ -160,6 +162,12 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (m.procedural && (!o.has_ewa || o.corridor_unit))
       throw std::invalid_argument(s.source + ": /materials/" + name +
                                   "/procedural: this unit has no noise unit (the full unit has); render it with --engine cmodel or ref");
+  // AF with parallax visibility (docs/blocks/afvis.md): C model only, no RTL visibility unit yet.
+  for (const auto& [name, m] : s.materials)
+    if (o.relief && m.relief && m.relief->af_visibility && o.filter.value_or(m.filter) == scene::Filter::Ewa)
+      throw std::invalid_argument(s.source + ": /materials/" + name +
+                                  "/relief/af_visibility: the RTL unit has no visibility unit yet (docs/blocks/afvis.md);"
+                                  " render it with --engine cmodel or ref, or with --no-relief");
   // The full unit shades (HasShading); a light needs it, and a model the materials name must be its.
   const bool shade_unit = o.has_ewa && !o.corridor_unit;  // the corridor plan has no lights
   if (!shade_unit && !s.lights.empty())
@@ -275,10 +283,13 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       r[kDexp] = code(dexp, fmt::kEllDetExpW);
       r[kLaniso] = render::laniso_code(m.max_aniso);
       r[kMaxlod] = static_cast<uint64_t>(top);
-      const tex::LodParams lp = tex::lod_params(m.lod_bias, m.min_lod, m.max_lod);
+      const tex::LodParams lp = render::lod_params(m);
       r[kLbias] = code(lp.bias, fmt::kTexLodBiasW);
       r[kLminlod] = lp.min_lod;
       r[kLmaxlod] = lp.max_lod;
+      const tex::LevelRange lv = tex::level_range(lp, top);
+      r[kLbase] = static_cast<uint64_t>(lv.base);
+      r[kLtop] = static_cast<uint64_t>(lv.top);
       r[kBase] = ob.base;
       r[kLw] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].width));
       r[kLh] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].height));
@@ -325,6 +336,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       for (int px = x; px <= x1; ++px, ++pix) {
         ewa::fx::In in;
         in.b2 = ellipse::fx::pixel(k, px, y, static_cast<uint32_t>(r[kLaniso]), static_cast<uint32_t>(top), rec);
+        in.b2.lod = tex::trilinear_lod(in.b2.lmin, lp, top).lod;  // the EWA's level (render_cmodel)
         const bool guard = persp::Unit::pixel(persp::Unit::direct(k, px, y)).flag;
         ewa::PixelCost pc;
         if (eng == ewa::Engine::Ewa && pix < expect.pixels.size()) {

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "ewa/ewa_fx.hpp"
+#include "ewa_walk_checks.hpp"
 #include "ewa/ewa_lanes.hpp"
 #include "gauss/clip.hpp"
 
@@ -16,18 +17,9 @@ namespace {
 using namespace tu;
 namespace efx = ewa::fx;
 
-const tex::Texture& bricks() {
-  static const tex::Texture t = tex::Texture::build("bricks", tex::bricks(256).color, tex::Wrap::Repeat);
-  return t;
-}
+const tex::Texture& bricks() { return test::bricks_texture(); }
 
-void expect_same(const efx::Out& a, const efx::Out& b) {
-  EXPECT_EQ(a.color, b.color);
-  EXPECT_EQ(a.level, b.level);
-  EXPECT_EQ(a.texels_visited, b.texels_visited);
-  EXPECT_EQ(a.texels_inside, b.texels_inside);
-  EXPECT_EQ(a.flags, b.flags);
-}
+void expect_same(const efx::Out& a, const efx::Out& b) { test::expect_same_walk(a, b); }
 
 TEST(EwaLanes, RandomPixelsEqualTheSequentialWalk) {
   std::mt19937_64 rng(23);

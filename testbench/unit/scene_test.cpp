@@ -84,6 +84,27 @@ TEST(Scene, FelineFilterAndProbeCap) {
   EXPECT_STREQ(to_string(Filter::Feline), "feline");
 }
 
+// Sampler LOD state: base_level 0..12, max_level 0..1000 (GL defaults 0, 1000); min_lod > max_lod
+// and base_level > max_level are accepted (documented behaviour: min_lod wins, the base level alone).
+TEST(Scene, LodStateFields) {
+  EXPECT_EQ(default_scene().materials.at("ground").base_level, 0);
+  EXPECT_EQ(default_scene().materials.at("ground").max_level, 1000);
+  const std::string from = "\"filter\": \"ewa\", \"weights\": \"formula\"";
+  const Scene s = parse(edited(from, from + ", \"base_level\": 3, \"max_level\": 1, \"min_lod\": 4, \"max_lod\": 2"),
+                        "s.json", ".");
+  const auto& m = s.materials.at("ground");
+  EXPECT_EQ(m.base_level, 3);
+  EXPECT_EQ(m.max_level, 1);
+  EXPECT_EQ(m.min_lod, 4);
+  EXPECT_EQ(m.max_lod, 2);
+  EXPECT_EQ(error_of(edited(from, from + ", \"base_level\": 13")),
+            "s.json: /materials/ground/base_level: value 13 is out of range [0, 12]");
+  EXPECT_EQ(error_of(edited(from, from + ", \"max_level\": -1")),
+            "s.json: /materials/ground/max_level: value -1 is out of range [0, 1000]");
+  EXPECT_EQ(error_of(edited(from, from + ", \"base_level\": 1.5")),
+            "s.json: /materials/ground/base_level: expected an integer");
+}
+
 // The B2 variant: "footprint" (default analytic), one of analytic | recurrence.
 TEST(Scene, FootprintVariant) {
   EXPECT_EQ(default_scene().footprint, Footprint::Analytic);

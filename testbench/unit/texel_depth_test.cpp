@@ -101,12 +101,33 @@ TEST(TexelDepth, WeightEndsClampAndGuard) {
   EXPECT_TRUE(persp::texel_depth::pixel(s, 3).flag);
 }
 
-TEST(TexelDepth, SchemeCostsOneMoreMultiplyStageThanB1) {
+TEST(TexelDepth, SchemeCostsTwoMoreStagesAndTwoMoreMultipliersThanB1) {
   const auto td = sched::schedule(persp::texel_depth_scheme()), b1 = sched::schedule(persp::scheme("persp"));
   std::printf("texel depth: latency %d, II %d, %d multipliers; B1 incremental: latency %d, II %d, %d multipliers\n",
               td.latency, td.ii, td.units_used.at("mul"), b1.latency, b1.ii, b1.units_used.at("mul"));
   EXPECT_EQ(td.ii, 1);
   EXPECT_EQ(td.latency, b1.latency + 2);  // w = N R rounded, then (T2 - T1) w
-  EXPECT_EQ(td.units_used.at("mul"), b1.units_used.at("mul") + 1);
+  // + N R and the span load m2 q1 of D (tu_texel_depth; used once per span, still a multiplier).
+  EXPECT_EQ(td.units_used.at("mul"), b1.units_used.at("mul") + 2);
+}
+// The declared formats hold every unguarded span (tu_texel_depth's widths): N = m q2 and
+// D = (m2 - m) q1 + m q2 below 2^TexelDepthAccW for the largest offsets and q codes; the
+// leading-one position of D fits the RTL's 6-bit exponent; dT w fits its product width.
+TEST(TexelDepth, DeclaredWidthsHoldTheWorstCase) {
+  const i128 q_max = (i128(1) << (fmt::kPerspQW - 1)) - 1, m_max = (i128(1) << fmt::kPerspXyW) - 1;
+  const i128 acc_max = m_max * q_max;  // N at m = m2, D at any m (a convex combination times m2)
+  EXPECT_LT(acc_max, i128(1) << fmt::kTexelDepthAccW);
+  EXPECT_GE(acc_max, i128(1) << (fmt::kTexelDepthAccW - 1));  // and no bit to spare
+  EXPECT_LE(fmt::kTexelDepthAccW - 1, 63);                    // msb position: 6 bits
+  // dT * w: |T2 - T1| <= 2^PerspUvW - 1 times w <= 2^WF fits the RTL's signed
+  // (PerspUvW + 1) + (WF + 1)-bit product.
+  const int wf = persp::texel_depth::kWF;
+  EXPECT_LT(((i128(1) << fmt::kPerspUvW) - 1) << wf, i128(1) << (fmt::kPerspUvW + 1 + wf + 1 - 1));
+  // A span at those limits: the widest D (m2 q, 55 bits) gives w = m / m2 within the reciprocal's
+  // faithful bound (2^-22 relative: at most 4 codes at w = 1/2).
+  persp::texel_depth::Span s;
+  s.q1 = s.q2 = static_cast<int64_t>(q_max);
+  s.m2 = static_cast<int>(m_max);
+  EXPECT_NEAR(static_cast<double>(persp::texel_depth::w_code(s, 2047)), std::ldexp(2047.0 / 4095.0, wf), 4.0);
 }
 }  // namespace

@@ -116,4 +116,78 @@ TEST(TrilinearLod, ScreenAxisSumsNotTheMinorAxis) {
   EXPECT_NEAR(tex::trilinear_lod(o2.lrho, tex::lod_params(0, 0, 12), 12).lod * kLsb, 2.0, 2 * kLsb);
 }
 
+// Base and max level (GL TEXTURE_BASE_LEVEL / MAX_LEVEL): every lrho code against the float rule
+// on the decoded value, with the level range inside the pyramid, above it and inverted.
+TEST(TrilinearLod, BaseAndMaxLevelExhaustiveOverLrhoCodes) {
+  struct P { double bias, lo, hi; int base, maxlev; };
+  for (const P p : {P{0, 0, 12, 2, 1000}, P{0.75, 0.5, 3, 1, 5}, P{-1, 0, 12, 3, 6}, P{16, 0, 12, 4, 4},
+                    P{-16, 0, 12, 12, 1000}, P{0, 0, 12, 7, 2}, P{0, 3, 1, 1, 7}}) {
+    const auto c = tex::lod_params(p.bias, p.lo, p.hi, p.base, p.maxlev);
+    const auto lv = tex::level_range(c, 8);
+    double worst = 0;
+    for (int32_t l = -(1 << (fmt::kEllLogW - 1)); l < (1 << (fmt::kEllLogW - 1)); ++l) {
+      const auto o = tex::trilinear_lod(l, c, 8);
+      ASSERT_GE(o.lod, uint32_t(lv.base) << fmt::kTexLodF) << l;  // never below the base level
+      ASSERT_LE(o.lod, uint32_t(lv.top) << fmt::kTexLodF) << l;   // nor above the top one
+      uint32_t rf;
+      const double ref = tex::lod_rule_ref(std::ldexp(double(l), -fmt::kEllLogF), p.bias, p.lo, p.hi, 8, &rf,
+                                           p.base, p.maxlev);
+      const double e = ref - o.lod * kLsb;
+      ASSERT_GE(e, -1e-9) << l;
+      ASSERT_LT(e, kLsb) << l;
+      worst = std::max(worst, e);
+      const double raw = std::ldexp(double(l), -fmt::kEllLogF) + p.bias - lv.base;
+      bool near = false;
+      for (double b : {p.lo, p.hi, 0.0, double(lv.top - lv.base)}) near = near || std::fabs(raw - b) <= kLsb;
+      if (!near) ASSERT_EQ(o.flags, rf) << l;
+    }
+    std::printf("bias %g [%g, %g] levels %d..%d -> [%d, %d]: max lambda_ref - lod = %.6f levels\n", p.bias, p.lo,
+                p.hi, p.base, p.maxlev, lv.base, lv.top, worst);
+  }
+}
+
+// The stiff sampler states, each with its documented behaviour.
+TEST(TrilinearLod, StiffSamplerStates) {
+  // min_lod > max_lod: min_lod wins for every footprint (flag kTriLodClamp where it moved lambda).
+  for (int32_t l : {fx::kLogNegInf, -5 << fmt::kEllLogF, 0, 2 << fmt::kEllLogF, (1 << (fmt::kEllLogW - 1)) - 1}) {
+    const auto o = tex::trilinear_lod(l, tex::lod_params(0, 3, 1), 8);
+    EXPECT_EQ(o.lod, 3u << fmt::kTexLodF) << l;
+    EXPECT_EQ(o.flags, tex::kTriLodClamp) << l;
+  }
+  // bias +16: every footprint wider than 2^-8 texels saturates at the top; -16: magnification
+  // below 2^16 texels per pixel.
+  EXPECT_EQ(tex::trilinear_lod(-7 << fmt::kEllLogF, tex::lod_params(16, 0, 12), 8).lod, 8u << fmt::kTexLodF);
+  EXPECT_EQ(tex::trilinear_lod(-7 << fmt::kEllLogF, tex::lod_params(16, 0, 12), 8).flags, tex::kTriLodSat);
+  EXPECT_EQ(tex::trilinear_lod(15 << fmt::kEllLogF, tex::lod_params(-16, 0, 12), 8).lod, 0u);
+  EXPECT_EQ(tex::trilinear_lod(15 << fmt::kEllLogF, tex::lod_params(-16, 0, 12), 8).flags, tex::kTriMagnify);
+  // base_level > max_level (GL: incomplete): the base level alone.
+  EXPECT_EQ(tex::level_range(5, 2, 8).base, 5);
+  EXPECT_EQ(tex::level_range(5, 2, 8).top, 5);
+  for (int32_t l : {fx::kLogNegInf, 0, 3 << fmt::kEllLogF, 9 << fmt::kEllLogF})
+    EXPECT_EQ(tex::trilinear_lod(l, tex::lod_params(0, 0, 12, 5, 2), 8).lod, 5u << fmt::kTexLodF) << l;
+  // base_level above the pyramid: its top level; max_level above it: the pyramid's top.
+  EXPECT_EQ(tex::level_range(12, 1000, 8).base, 8);
+  EXPECT_EQ(tex::level_range(12, 1000, 8).top, 8);
+  EXPECT_EQ(tex::level_range(0, 1000, 8).top, 8);
+  // Every range is inside the pyramid and ordered.
+  for (int top = 0; top <= 12; ++top)
+    for (int b = 0; b <= 15; ++b)
+      for (int m = 0; m <= 20; ++m) {
+        const auto r = tex::level_range(b, m, top);
+        ASSERT_LE(0, r.base);
+        ASSERT_LE(r.base, r.top);
+        ASSERT_LE(r.top, top);
+        ASSERT_EQ(r.base, std::min(b, top));
+        ASSERT_EQ(r.top, std::max(r.base, std::min(m, top)));
+      }
+  // Magnification samples the base level (lod = base), not level 0.
+  const auto mag = tex::trilinear_lod(fx::kLogNegInf, tex::lod_params(0, 0, 12, 3, 1000), 8);
+  EXPECT_EQ(mag.lod, 3u << fmt::kTexLodF);
+  EXPECT_EQ(mag.flags, tex::kTriMagnify);
+  // lambda is relative to the base level: log2 rho = 5, base 2 -> level 2 + 3 = 5.
+  EXPECT_EQ(tex::trilinear_lod(5 << fmt::kEllLogF, tex::lod_params(0, 0, 12, 2, 1000), 8).lod, 5u << fmt::kTexLodF);
+  // ... and min_lod / max_lod clamp lambda, not the level: base 2 + max_lod 1 -> level 3.
+  EXPECT_EQ(tex::trilinear_lod(7 << fmt::kEllLogF, tex::lod_params(0, 0, 1, 2, 1000), 8).lod, 3u << fmt::kTexLodF);
+}
+
 }  // namespace

@@ -7,12 +7,15 @@
 #include <iostream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "block.hpp"
 #include "cli_checks.hpp"
 #include "output.hpp"
 #include "complexity/complexity.hpp"
 #include "distmap/distance_map.hpp"
 #include "pom/relief_quality.hpp"
+#include "afvis/afvis_quality.hpp"
 #include "cosim.hpp"
 #include "merge.hpp"
 #include "plan.hpp"
@@ -186,6 +189,30 @@ int cmd_relief_quality(const tu::pom::QualityParams& p) {
   return 0;
 }
 
+// relief-quality --afvis SCENE (docs/blocks/afvis.md §4): plain EWA and each visibility rule against
+// the truth on the scene's relief pixels, per height map and camera height. The height PNGs go to a
+// private temporary directory, removed afterwards.
+int cmd_afvis_quality(const std::string& scene_arg, tu::afvis::QualityParams p, const std::string& plot_dir) {
+  const tu::scene::Scene s = scene_arg == "default" ? tu::scene::default_scene() : tu::scene::load(scene_arg);
+  bool relief = false;
+  for (const auto& [name, m] : s.materials) relief |= m.relief.has_value();
+  if (!relief) throw std::invalid_argument(scene_arg + ": no material has relief (relief-quality --afvis needs one)");
+  const fs::path dir = fs::temp_directory_path() / ("texunit_afvis_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  p.tmp_dir = dir.string();
+  std::vector<tu::afvis::QualityRow> rows;
+  try {
+    rows = tu::afvis::quality(s, p);
+  } catch (...) {
+    fs::remove_all(dir);
+    throw;
+  }
+  fs::remove_all(dir);
+  if (!plot_dir.empty()) tu::afvis::write_quality_plot(rows, plot_dir);
+  std::cout << tu::afvis::quality_markdown(rows);
+  return 0;
+}
+
 // Main job: every block with RTL co-simulated on its golden, stiff and random sets with 30% stalls
 // (one table), then the default scene rendered through the float reference with every filter.
 // Then the C-model and the RTL render engines (texture-unit top == C model on every pixel).
@@ -238,10 +265,18 @@ int cmd_demo(uint64_t count, const std::string& out_dir, int threads) {
 }
 
 // `texunit rtl-files`: the manifest's lists, one path a line.
-int cmd_rtl_files(const std::string& root, const std::string& top, const std::string& list) {
+int cmd_rtl_files(const std::string& root, const std::string& top, const std::string& list, const std::string& key) {
   if (top.empty() == list.empty()) {
     std::cerr << "texunit rtl-files: give a TOP or --list (not both)\n";
     return 2;
+  }
+  if (!key.empty()) {
+    if (top.empty()) {
+      std::cerr << "texunit rtl-files: --key needs a TOP\n";
+      return 2;
+    }
+    std::cout << tu::report::rtl_hash(root, top, key == "yosys" ? "scripts/yosys_area.sh" : "scripts/stdcell_flow.sh") << "\n";
+    return 0;
   }
   const auto m = tu::rtl::Manifest::load(root);
   std::vector<std::string> out;
@@ -340,6 +375,22 @@ int main(int argc, char** argv) {
   rqc->add_option("--dm-layers", rq.dm_layers, "distance-map layers (--compare)")->check(CLI::Range(1, tu::dm::kMaxLayers));
   rqc->add_option("--dm-step", rq.dm_step_deg, "refined map direction step in degrees (--compare)")
       ->check(tu::cli::finite_in(1.0, 45.0));
+  std::string afvis_scene;
+  tu::afvis::QualityParams afq;
+  rqc->add_option("--afvis", afvis_scene, "AF with parallax visibility on SCENE (JSON or 'default'): PSNR vs the truth, "
+                  "sharpness, texels and visibility steps per relief pixel for plain EWA and each visibility rule, "
+                  "per height map and camera height (docs/blocks/afvis.md)");
+  rqc->add_option("--afvis-maps", afq.maps, "--afvis height maps: bricks, fbm, gravel, bark, stone")
+      ->delimiter(',')->check(CLI::IsMember({"bricks", "fbm", "gravel", "bark", "stone"}));
+  rqc->add_option("--afvis-heights", afq.heights, "--afvis camera heights (multiples of the scene's)")
+      ->delimiter(',')->check(tu::cli::finite_in(0.1, 100.0));
+  rqc->add_option("--afvis-ss", afq.ss, "--afvis truth samples per pixel side")->check(CLI::Range(1, 64));
+  std::string afvis_plot;
+  rqc->add_option("--afvis-plot", afvis_plot, "--afvis: write afvis_gain_vs_clocks.{dat,gp,png} (gnuplot) into this directory")
+      ->check(CLI::ExistingDirectory);
+  rqc->add_option("--afvis-bias", afq.bias, "--afvis: the trace's bias in depth codes (default " +
+                  std::to_string(tu::afvis::kDefaultBias) + ")")->check(CLI::Range(0, 255));
+  rqc->add_option("--threads", afq.threads, "--afvis: threads for the C-model renders (0: every core)")->check(CLI::Range(0, 256));
 
   tu::report::Options ro;
   bool no_yosys = false;
@@ -376,6 +427,9 @@ int main(int argc, char** argv) {
   rtf->add_option("--list", rtl_list, "instead: every top, every file (packages first), the include dirs or the lint-only files")
       ->check(CLI::IsMember({"tops", "all", "include-dirs", "lint-only"}));
   rtf->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
+  std::string rtl_key;
+  rtf->add_option("--key", rtl_key, "instead: the top's cache key in docs/report/{yosys,stdcell}_cache.json (the hash of its files)")
+      ->check(CLI::IsMember({"yosys", "stdcell"}));
 
   std::vector<std::string> sc_tops;
   std::string sc_cache = "docs/report/stdcell_cache.json", sc_netlists = "build/stdcell";
@@ -430,9 +484,9 @@ int main(int argc, char** argv) {
     }
     if (*pln) return tu::plan::run(po);
     if (*stc) return tu::report::stdcell(sc_tops, root, sc_cache, sc_netlists, sc_force);
-    if (*rtf) return cmd_rtl_files(root, rtl_top, rtl_list);
+    if (*rtf) return cmd_rtl_files(root, rtl_top, rtl_list, rtl_key);
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
-    if (*rqc) return cmd_relief_quality(rq);
+    if (*rqc) return afvis_scene.empty() ? cmd_relief_quality(rq) : cmd_afvis_quality(afvis_scene, afq, afvis_plot);
     if (*dmc) return cmd_distance_map(dm_in, dm_out, dm_slices, dmp);
     if (*demo) return cmd_demo(*demo->get_option("--count") ? count : 100000, demo_out, threads);
   } catch (const fs::filesystem_error& e) {

@@ -12,6 +12,7 @@
 #include "objspace/objspace.hpp"
 #include "objspace/schemes.hpp"
 #include "plan.hpp"
+#include "plan_pipeline.hpp"
 #include "texunit/objspace_accum.hpp"
 #include "texunit/render.hpp"
 
@@ -33,13 +34,6 @@ CLI::App* add_objspace(CLI::App& app, ObjspaceArgs& a) {
 namespace {
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-// Steady-state clocks per pixel of one texture-unit engine (ewa::stream_cycles, the exact model).
-double engine_clocks(ewa::Engine e) {
-  ewa::PixelCost c;
-  c.engine = e;
-  return double(ewa::stream_cycles(std::vector<ewa::PixelCost>(2000, c)) -
-                ewa::stream_cycles(std::vector<ewa::PixelCost>(1000, c))) / 1000.0;
 }
 }  // namespace
 
@@ -69,7 +63,7 @@ int run_objspace(const ObjspaceArgs& a) {
   // (one sample per its steady-state interval) and as a scheme taking one sample per clock (the
   // per-sample datapath is II = 1), plus one normalising divide per covered pixel.
   const objspace::Options oo{a.spacing, a.max_samples};
-  const double tri_clk = engine_clocks(ewa::Engine::Trilinear);
+  const double tri_clk = plan::engine_clocks(ewa::Engine::Trilinear);
   objspace::Result ref_r;
   // The C model's sample stream as the accumulation model needs it (bank bits, guard).
   std::vector<sysmodel::AccumSample> stream;

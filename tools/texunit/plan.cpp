@@ -1,5 +1,6 @@
 // `texunit plan`: see plan.hpp and docs/reading-the-report.md.
 #include "plan.hpp"
+#include "plan_pipeline.hpp"
 
 #include "output.hpp"
 
@@ -139,6 +140,11 @@ std::optional<scene::WeightSource> engine_source(const TRow& r) {
   if (r.scheme == "weight_table_1d") return scene::WeightSource::Table1d;
   if (r.scheme == "weight_table_2d") return scene::WeightSource::Table2d;
   return std::nullopt;
+}
+
+// The plan's filter names (mat_filter) as scene filters.
+scene::Filter filter_named(const std::string& f) {
+  return f == "bilinear" ? scene::Filter::Bilinear : f == "trilinear" ? scene::Filter::Trilinear : scene::Filter::Ewa;
 }
 
 std::string fmt(const char* f, double x) {
@@ -400,14 +406,15 @@ std::string package(const Config& c, const std::string& origin) {
 
 uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::Filter(const scene::Material&)>& filter_of,
                            bool relief_stage, std::optional<scene::WeightSource> weights, bool ell_recurrence,
-                           int clip_variant, const std::vector<bool>& noise_objects, const std::vector<bool>& water_objects,
-                           int noise_slots) {
+                           int clip_variant, const std::vector<bool>& noise_objects, size_t* covered,
+                           const std::vector<bool>& water_objects, int noise_slots) {
   scene::Scene t = scene::without_relief(s);
   t.footprint = ell_recurrence ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
   for (auto& [name, m] : t.materials) m.filter = filter_of(m);
   render::CmodelOptions o = render::texture_path_only();
   o.weights = weights;
   const render::Frame fr = render::render_cmodel(t, std::nullopt, o);
+  if (covered) *covered = fr.pixels.size();
   const auto wl = sysmodel::scene_workload(t, fr);
   std::vector<int> top_level;  // per object: its texture's top mip level
   for (const auto& ob : t.objects)
@@ -548,6 +555,14 @@ int run(const Options& opt) {
   }
   const double filter_psnr = render::psnr_covered(planned_frame, ewa);
   const render::Frame* chosen_frame = filter == "ewa" ? &ewa : filter == "trilinear" ? &*tri : &bil;
+
+  // 2c. Pipeline per material (plan_pipeline.hpp): object space where it meets the budget for
+  //     fewer clocks than the material's screen-space filter, measured by rendering the material
+  //     alone through both. The texture-unit top has no object-space path: the choice is
+  //     reported; the package and the cycles below are the screen-space unit's.
+  std::vector<PipelineChoice> pipelines;
+  for (const auto& [name, f] : mat_filter)
+    pipelines.push_back(choose_pipeline(s, name, filter_named(f), std::count(noise.materials.begin(), noise.materials.end(), name) > 0));
 
   // 2b. Relief method per material (choose_relief). The planned unit keeps the engines of the
   //     authored methods (the scene must render on it as written); the choice is reported, with the
@@ -756,14 +771,13 @@ int run(const Options& opt) {
   //    unit with the plan's filter per material, and the full unit as authored.
   auto scene_cycles = [&](std::function<scene::Filter(const scene::Material&)> filter_of, bool relief_stage,
                           std::optional<scene::WeightSource> weights, bool rec, int noise_slots = 1) -> uint64_t {
-    return scene_stream_cycles(s, filter_of, relief_stage, weights, rec, clip_code, noise.objects, noise.water_objects,
+    return scene_stream_cycles(s, filter_of, relief_stage, weights, rec, clip_code, noise.objects, nullptr, noise.water_objects,
                                noise_slots);
   };
   auto authored = [](const scene::Material& m) { return m.filter; };
   auto planned_filter = [&](const scene::Material& m) {
     const auto it = mat_filter.find(m.name);  // a material without pixels: any engine the unit has
-    const std::string& f = it == mat_filter.end() ? filter : it->second;
-    return f == "bilinear" ? scene::Filter::Bilinear : f == "trilinear" ? scene::Filter::Trilinear : scene::Filter::Ewa;
+    return filter_named(it == mat_filter.end() ? filter : it->second);
   };
   const auto planned_weights = weights ? engine_source(*weights) : std::nullopt;
   // The shading stage (II = 1, fed one word per pixel) adds its latency once, at the end.
@@ -834,6 +848,18 @@ int run(const Options& opt) {
                             {"full", full.area_measured() ? json(double(full_cycles) / full.fmax_mhz()) : json(kNoArea)}}},
               {"cheapest_by", g_cost_basis},
               {"area_note", "cells are the sum of the blocks' Yosys cells (each block synthesised alone)"}};
+  json pipes = json::object();
+  for (const auto& pc : pipelines) {
+    json tries = json::array();
+    for (const auto& k : pc.tries)
+      tries.push_back({{"spacing", k.spacing}, {"rendered", k.rendered}, {"samples", k.samples}, {"holes", k.holes},
+                       {"overlaps", k.overlaps}, {"psnr_db", k.rendered ? json(k.psnr_db) : json(nullptr)},
+                       {"clocks_per_px", k.rendered ? json(k.clocks_per_px) : json(nullptr)}, {"error", k.error}});
+    pipes[pc.material] = {{"pipeline", pc.object_space ? "object-space" : "screen"}, {"screen_filter", pc.screen_filter},
+                          {"covered_pixels", pc.covered}, {"screen_clocks_per_px", pc.screen_clocks_per_px},
+                          {"object_space_clocks_per_sample", pc.sample_clocks}, {"object_space", tries}, {"why", pc.why}};
+  }
+  out["pipelines"] = pipes;
   // Everything is decided before anything is written, and every file is written or none.
   cli::Outputs outs;
   for (const auto& [path, cfg, what] : {std::tuple{opt.out_sv, planned_shaded, "specialised"}, {opt.out_full_sv, everything, "full"}}) {
@@ -854,6 +880,8 @@ int run(const Options& opt) {
   for (const auto& [name, f] : mat_filter) per_mat += (per_mat.empty() ? "" : ", ") + name + " " + f;
   std::printf("filters: %s; the plan's picture %s against the float EWA\n  (%s)\n", per_mat.c_str(),
               std::isinf(filter_psnr) ? "is" : (fmt("%.2f", filter_psnr) + " dB").c_str(), filter_why.c_str());
+  std::printf("pipeline per material (each material rendered alone, texture path; the top has no object-space path):\n");
+  for (const auto& pc : pipelines) std::printf("  %s\n", pc.why.c_str());
   std::string relief_engines;
   for (const auto& [on, name] : {std::pair{pom, "pom"}, {iterative, "iterative"}, {dist_map, "distance map"}})
     if (on) relief_engines += (relief_engines.empty() ? "" : " + ") + std::string(name);

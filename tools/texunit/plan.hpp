@@ -40,11 +40,12 @@ int run(const Options& opt);
 // material's filter: ewa::stream_cycles on the C-model render's per-pixel work (exact against
 // Verilator, TextureUnitRtl.CyclesMatchPrediction); clip_variant: the unit's EwaClipVariant (the
 // border pipeline's latency for materials with border weights); noise_objects[o]: object o's pixels
-// go to the noise unit (a procedural material; TextureUnitRtl.ProceduralSceneEqualsCModelCyclesPredicted).
+// go to the noise unit (a procedural material; TextureUnitRtl.ProceduralSceneEqualsCModelCyclesPredicted);
+// covered (if given): the render's covered pixels.
 uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::Filter(const scene::Material&)>& filter_of,
                              bool relief_stage, std::optional<scene::WeightSource> weights = std::nullopt,
                              bool ell_recurrence = false, int clip_variant = 0,
-                             const std::vector<bool>& noise_objects = {}, const std::vector<bool>& water_objects = {},
-                             int noise_slots = 1);
+                             const std::vector<bool>& noise_objects = {}, size_t* covered = nullptr,
+                             const std::vector<bool>& water_objects = {}, int noise_slots = 1);
 
 }  // namespace tu::plan

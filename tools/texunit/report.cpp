@@ -33,6 +33,7 @@ namespace fs = std::filesystem;
 
 namespace tu::cosim {
 RtlBlock rtl_persp_direct();  // persp_rtl.cpp (same vectors as persp, not in the registry)
+RtlBlock rtl_persp_texel_depth();  // persp_rtl.cpp (tu_texel_depth on persp_texel_depth rows)
 }
 
 namespace tu::report {
@@ -123,29 +124,61 @@ std::vector<std::string> rtl_files(const std::string& root, const std::string& t
 }
 
 namespace {
-// A package (`*_pkg.sv`) enters a top's key with every line but its localparams, and with only
-// the localparams the top's other files name (`pkg::Name`): a constant added for another block
-// does not make every cached synthesis stale, a changed width of this one does.
+// A package (`*_pkg.sv`) enters a top's key with its lines outside localparams and typedefs, and
+// with only the localparams and typedef blocks the top's other files name (`pkg::Name`, for a
+// typedef its type or one of its enum members): a constant or enum added for another block does
+// not make every cached synthesis stale, a changed width of this one does.
+bool names(const std::string& users, const std::string& id) {
+  const std::string name = "::" + id;
+  for (auto at = users.find(name); at != std::string::npos; at = users.find(name, at + 1)) {
+    const char next = at + name.size() < users.size() ? users[at + name.size()] : ' ';
+    if (!std::isalnum(static_cast<unsigned char>(next)) && next != '_') return true;
+  }
+  return false;
+}
+// The identifier ending just before position `end` (exclusive) of `line`.
+std::string word_before(const std::string& line, size_t end) {
+  const auto last = line.find_last_not_of(" \t", end - 1);
+  if (last == std::string::npos) return "";
+  size_t first = last + 1;
+  while (first > 0 && (std::isalnum(static_cast<unsigned char>(line[first - 1])) || line[first - 1] == '_')) --first;
+  return line.substr(first, last + 1 - first);
+}
 std::string package_part(const std::string& pkg, const std::string& users) {
   std::istringstream in(pkg);
   std::string line, out;
   while (std::getline(in, line)) {
     const auto lp = line.find("localparam");
     const auto eq = line.find('=');
+    if (line.find("typedef") != std::string::npos) {
+      // A typedef block up to `} name;`: kept if its type or any member (`Member = ...`) is named.
+      std::string block = line + "\n";
+      std::vector<std::string> ids;
+      auto member = [&](const std::string& l) {
+        const auto e = l.find('=');
+        if (e != std::string::npos) ids.push_back(word_before(l, e));
+      };
+      member(line);
+      const bool braced = line.find('{') != std::string::npos;
+      while (braced && line.find('}') == std::string::npos && std::getline(in, line)) {
+        block += line + "\n";
+        member(line);
+      }
+      const auto close = line.find('}');
+      const auto semi = line.find(';', close == std::string::npos ? 0 : close);
+      if (semi != std::string::npos) ids.push_back(word_before(line, semi));
+      for (const auto& id : ids)
+        if (!id.empty() && names(users, id)) {
+          out += block;
+          break;
+        }
+      continue;
+    }
     if (lp == std::string::npos || eq == std::string::npos || eq < lp) {
       out += line + "\n";
       continue;
     }
-    auto end = line.find_last_not_of(" \t", eq - 1);
-    auto begin = line.find_last_of(" \t", end);
-    const std::string name = "::" + line.substr(begin + 1, end - begin);
-    for (auto at = users.find(name); at != std::string::npos; at = users.find(name, at + 1)) {
-      const char next = at + name.size() < users.size() ? users[at + name.size()] : ' ';
-      if (!std::isalnum(static_cast<unsigned char>(next)) && next != '_') {
-        out += line + "\n";
-        break;
-      }
-    }
+    if (names(users, word_before(line, eq))) out += line + "\n";
   }
   return out;
 }
@@ -455,12 +488,13 @@ const cosim::RtlBlock* rtl_or_null(const std::string& name) {
 }
 std::vector<Spec> registry_specs() {
   static const cosim::RtlBlock direct = cosim::rtl_persp_direct();
+  static const cosim::RtlBlock texel_depth = cosim::rtl_persp_texel_depth();  // tu_texel_depth on B1's seeds
   std::vector<Spec> v = {
       {"reciprocal", "faithful_25b", "reciprocal", rtl_or_null("reciprocal"), "tu_reciprocal", "1/M, absolute"},
       {"persp", "incremental", "persp", rtl_or_null("persp"), "tu_persp", "texels"},
       {"persp", "direct", "persp", &direct, "tu_persp_direct", "texels"},
       {"persp", "klane4", "persp_k4", rtl_or_null("persp_k4"), "tu_persp_klane", "texels (item = 4 pixels)"},
-      {"persp", "texel_depth", "persp_texel_depth", nullptr, "", "texels (C model only: no RTL)"},
+      {"persp", "texel_depth", "persp_texel_depth", &texel_depth, "tu_texel_depth", "texels"},
       {"persp_setup", "setup", "persp_setup", rtl_or_null("persp_setup"), "tu_persp_setup", "seed value (0: exact)"},
       {"ellipse", "analytic", "ellipse", rtl_or_null("ellipse"), "tu_ellipse", "LOD (mip levels)"},
       {"ellipse", "recurrence", "ellipse_rec", rtl_or_null("ellipse_rec"), "tu_ellipse_rec",
@@ -481,6 +515,7 @@ std::vector<Spec> registry_specs() {
     const bool known = b.name.rfind("clip_", 0) == 0 || b.name.rfind("weight_table", 0) == 0 ||
                        b.name.rfind("brdf_", 0) == 0 ||
                        b.name == "gauss_weight" ||
+                       b.name == "texel_depth" ||  // its RTL is row persp/texel_depth (on B1's seeds)
                        std::any_of(v.begin(), v.end(), [&](const Spec& x) { return x.block == b.name; });
     if (!known) v.push_back({b.name, b.name, b.name, rtl_or_null(b.name), "tu_" + b.name, b.err_metric});
   }

@@ -16,7 +16,8 @@ std::vector<Block> make_pom_unit_blocks();  // pom_unit_block.cpp
 Block make_persp();       // persp_block.cpp
 Block make_persp_k4();    // persp_block.cpp
 Block make_persp_setup(); // persp_block.cpp
-Block make_persp_texel_depth();  // persp_block.cpp (no RTL)
+Block make_persp_texel_depth();  // persp_block.cpp (C model from B1's seeds)
+Block make_texel_depth();  // persp_block.cpp (RTL tu_texel_depth)
 Block make_ellipse();     // ellipse_block.cpp
 Block make_ellipse_rec(); // ellipse_block.cpp
 Block make_ewa();         // ewa_block.cpp
@@ -39,6 +40,7 @@ const std::vector<Block>& all() {
     b.push_back(make_persp_k4());
     b.push_back(make_persp_setup());
     b.push_back(make_persp_texel_depth());
+    b.push_back(make_texel_depth());
     b.push_back(make_ellipse());
     b.push_back(make_ellipse_rec());
     b.push_back(make_ewa());

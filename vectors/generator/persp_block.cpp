@@ -11,6 +11,7 @@
 #include <random>
 
 #include "block.hpp"
+#include "persp_block.hpp"
 #include "persp/persp.hpp"
 #include "persp/schemes.hpp"
 #include "persp/texel_depth.hpp"
@@ -173,11 +174,11 @@ Row ref_at(const Row& in, int64_t off) {
              vec::f64_bits(static_cast<double>(e.pv / e.q))};
 }
 
-// Error of one pixel (offset `off` from the row's n) against the exact rational reference.
-ErrPoint pixel_error(const Row& in, const Row& out, const Row& ref, int64_t off) {
+// Error of one output pixel (u, v, flag) against the reference (uref, vref); `guarded`: the
+// pixel must be flagged and saturated (its reference is +inf).
+ErrPoint uv_error(const Row& out, const Row& ref, bool guarded) {
   ErrPoint e;
   const double ur = vec::bits_f64(ref[0]), vr = vec::bits_f64(ref[1]);
-  const bool guarded = eval_row(in, off).guarded;
   const uint64_t sat = Uv::from_raw(Uv::kMaxRaw).bits();
   if (guarded) {  // must be flagged and saturated
     const bool ok = out[2] == 1 && out[0] == sat && out[1] == sat && std::isinf(ur);
@@ -201,6 +202,10 @@ ErrPoint pixel_error(const Row& in, const Row& out, const Row& ref, int64_t off)
   e.abs = std::max(std::fabs(u - ur), std::fabs(v - vr));
   e.ulp = std::ldexp(e.abs, fmt::kPerspUvF);
   return e;
+}
+// Error of one pixel (offset `off` from the row's n) against the exact rational reference.
+ErrPoint pixel_error(const Row& in, const Row& out, const Row& ref, int64_t off) {
+  return uv_error(out, ref, eval_row(in, off).guarded);
 }
 }  // namespace
 
@@ -233,7 +238,7 @@ Block make_persp() {
 }
 
 
-// ---------------- texel-depth variant (persp/texel_depth.hpp, no RTL) ----------------
+// ---------------- texel-depth variant (persp/texel_depth.hpp) from B1's seeds ----------------
 // One vector = one pixel of a span, as block persp, plus the span's last offset m2: the variant
 // needs both ends (T1, T2, q1, q2 from the same quantised seeds and increments as B1). Error: the
 // same as B1's, against the same exact rational; a span with a guarded end is flagged throughout.
@@ -269,20 +274,78 @@ Block make_persp_texel_depth() {
     const persp::Pixel p = persp::texel_depth::pixel(td_span(in), static_cast<int>(in[6]));
     return Row{Uv::from_raw(p.u).bits(), Uv::from_raw(p.v).bits(), p.flag ? 1u : 0u};
   };
-  b.ref = [](const Row& in) { return ref_at(in, 0); };
-  b.error = [](const Row& in, const Row& out, const Row& ref) {
-    if (td_span(in).guard) {  // must be flagged and saturated
-      ErrPoint e;
-      const uint64_t sat = Uv::from_raw(Uv::kMaxRaw).bits();
-      const bool ok = out[2] == 1 && out[0] == sat && out[1] == sat;
-      e.valid = !ok;
-      e.abs = e.ulp = ok ? 0 : INFINITY;
-      return e;
-    }
-    return pixel_error(in, out, ref, 0);
-  };
+  // A span with a guarded end is flagged throughout (its reference: +inf).
+  b.ref = [](const Row& in) { return td_span(in).guard ? Row{vec::f64_bits(INFINITY), vec::f64_bits(INFINITY)} : ref_at(in, 0); };
+  b.error = [](const Row& in, const Row& out, const Row& ref) { return uv_error(out, ref, td_span(in).guard); };
   b.starts_run = [](const Row& in) { return in[6] == 0; };
   b.latency_cycles = sched::schedule(persp::texel_depth_scheme()).latency;
+  b.ii_cycles = 1;
+  b.err_metric = "max_texel_err";
+  return b;
+}
+
+// ---------------- texel-depth per-pixel datapath (rtl/persp/tu_texel_depth.sv) ----------------
+// One vector = one pixel m of a span with the span's record, as the RTL receives it: q1, q2
+// (B1's exact q at x0, x1), T1 = (t1u, t1v), T2 = (t2u, t2v) (B1's outputs at the ends), m2.
+// The rows are persp_texel_depth's (B1's sets), each turned into its span record by
+// texel_depth::setup, so the two blocks hold the same pixels in the same order.
+//   ref: the exact perspective interpolation of the end codes, T1 + (T2 - T1) w with
+//        w = m q2 / (m2 q1 + m (q2 - q1)) (long double): the datapath's own error (w's and the
+//        final rounding); persp_texel_depth's ref, the exact map, adds B1's end roundings.
+namespace {
+persp::texel_depth::Span td_record(const Row& in) {
+  const int64_t t1[2] = {static_cast<int64_t>(vec::sext(in[2], fmt::kPerspUvW)), static_cast<int64_t>(vec::sext(in[3], fmt::kPerspUvW))};
+  const int64_t t2[2] = {static_cast<int64_t>(vec::sext(in[4], fmt::kPerspUvW)), static_cast<int64_t>(vec::sext(in[5], fmt::kPerspUvW))};
+  return persp::texel_depth::record(static_cast<int64_t>(vec::sext(in[0], kQW)), static_cast<int64_t>(vec::sext(in[1], kQW)),
+                                    t1, t2, static_cast<int>(in[6]));
+}
+}  // namespace
+
+Row texel_depth_record_row(const Row& in) {
+  const auto s = td_span(in);
+  return {Q::from_raw(s.q1).bits(),        Q::from_raw(s.q2).bits(),        Uv::from_raw(s.t1[0]).bits(),
+          Uv::from_raw(s.t1[1]).bits(),    Uv::from_raw(s.t2[0]).bits(),    Uv::from_raw(s.t2[1]).bits(),
+          static_cast<uint64_t>(s.m2), in[6]};
+}
+
+Block make_texel_depth() {
+  const Block td = make_persp_texel_depth();
+  Block b;
+  b.name = "texel_depth";
+  b.description = "texel depth per pixel from the span record (q1, q2, T1, T2, m2): w = m q2 / (m2 q1 + m (q2 - q1)), "
+                  "T = T1 + (T2 - T1) w; 1 reciprocal + 3 multiplies per pixel, II = 1";
+  auto fmt_s = [](char sg, int w, int f) { return sg + std::to_string(w) + "." + std::to_string(f); };
+  const std::string qf = fmt_s('s', kQW, fmt::kPerspF), uvf = fmt_s('s', fmt::kPerspUvW, fmt::kPerspUvF),
+                    nf = fmt_s('u', kN, 0);
+  b.fields = {field("q1", vec::Role::In, qf),   field("q2", vec::Role::In, qf),   field("t1u", vec::Role::In, uvf),
+              field("t1v", vec::Role::In, uvf), field("t2u", vec::Role::In, uvf), field("t2v", vec::Role::In, uvf),
+              field("m2", vec::Role::In, nf),   field("m", vec::Role::In, nf)};
+  b.fields.insert(b.fields.end(), td.fields.begin() + 8, td.fields.end());  // u, v, flag, uref, vref
+  b.sets = td.sets;
+  b.inputs = [td](const std::string& set, uint64_t count, uint64_t seed) {
+    std::vector<Row> rows;
+    for (const Row& r : td.inputs(set, count, seed)) rows.push_back(texel_depth_record_row(r));
+    return rows;
+  };
+  b.model = [](const Row& in) {
+    const persp::Pixel p = persp::texel_depth::pixel(td_record(in), static_cast<int>(in[7]));
+    return Row{Uv::from_raw(p.u).bits(), Uv::from_raw(p.v).bits(), p.flag ? 1u : 0u};
+  };
+  b.ref = [](const Row& in) {
+    const auto s = td_record(in);
+    if (s.guard) return Row{vec::f64_bits(INFINITY), vec::f64_bits(INFINITY)};
+    const long double m = static_cast<long double>(in[7]), m2 = s.m2;
+    const long double w = s.m2 == 0 ? 0.0L : m * s.q2 / (m2 * s.q1 + m * (s.q2 - s.q1));
+    auto t = [&](int c) {
+      const long double t1 = std::ldexp(static_cast<long double>(s.t1[c]), -fmt::kPerspUvF);
+      const long double t2 = std::ldexp(static_cast<long double>(s.t2[c]), -fmt::kPerspUvF);
+      return vec::f64_bits(static_cast<double>(t1 + (t2 - t1) * w));
+    };
+    return Row{t(0), t(1)};
+  };
+  b.error = [](const Row& in, const Row& out, const Row& ref) { return uv_error(out, ref, td_record(in).guard); };
+  b.starts_run = [](const Row& in) { return in[7] == 0; };  // m = 0: a span's first pixel (loads N, D)
+  b.latency_cycles = fmt::kTexelDepthLatency;
   b.ii_cycles = 1;
   b.err_metric = "max_texel_err";
   return b;

@@ -7,9 +7,8 @@
 namespace tu::ewa {
 
 PixelCost pixel_cost(const fx::In& in, int level, uint32_t flags, uint64_t box, int top_level) {
-  // First level tried: the unit disc starts at 0, otherwise the integer lod clamped to the top.
-  int l0 = 0;
-  if (!(flags & fx::kUnitDisc)) l0 = std::min(static_cast<int>(in.b2.lod >> fmt::kEllLodF), top_level);
+  // First level tried: the integer lod (the sampler's level, a unit disc too) clamped to the top.
+  const int l0 = std::min(static_cast<int>(in.b2.lod >> fmt::kEllLodF), top_level);
   return {level - l0 + 1, box, (flags & fx::kNoWeight) != 0};
 }
 

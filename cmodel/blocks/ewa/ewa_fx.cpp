@@ -151,15 +151,12 @@ PixelSetup setup(const In& in, const tex::Texture& t, const Config& cfg) {
   PixelSetup su;
   const int top = t.num_levels() - 1;
   const bool unit = (o.flags & efx::kHorizon) || o.lmaj == efx::kLogNegInf;
-  int level = 0;
+  // The sampler's level (base level and above, render_cmodel); a unit disc too.
+  int level = std::min(static_cast<int>(o.lod >> fmt::kEllLodF), top);
   if (unit) {
     su.flags |= kUnitDisc;
   } else {
-    level = static_cast<int>(o.lod >> fmt::kEllLodF);
-    if (level > top) {
-      level = top;
-      su.flags |= kLodSat;
-    }
+    if (static_cast<int>(o.lod >> fmt::kEllLodF) > top) su.flags |= kLodSat;
     // ae, ce < 2^62 (B2 block floating point; the ewa vector fields are u62): the difference
     // fits int64.
     const int64_t d = static_cast<int64_t>(o.ae) - static_cast<int64_t>(o.ce);
@@ -426,8 +423,10 @@ double theta_ref_b2(const ellipse::fx::Out& o) {
 }
 
 Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels, bool clip) {
+  return filter_ref_b2(in, t, Params{16, static_cast<int>(max_texels), clip});
+}
+Result filter_ref_b2(const In& in, const tex::Texture& t, const Params& p) {
   const auto& o = in.b2;
-  const Params p{16, static_cast<int>(max_texels), clip};
   const double u = std::ldexp(double(in.u), -fmt::kTexUvF), v = std::ldexp(double(in.v), -fmt::kTexUvF);
   if ((o.flags & ellipse::fx::kHorizon) || o.lmaj == ellipse::fx::kLogNegInf)
     return filter_axes(t, u, v, 1, 1, 0, p);

@@ -7,7 +7,8 @@
 // level. Q = xi^2 + eta^2 with xi, eta linear in (du, dv): Heckbert's incremental Q and the 2-D
 // weight table's (xi, eta) come from the same exact integers.
 //
-//  1. L = integer part of lod, clamped to the pyramid (flag kLodSat when clamped).
+//  1. L = integer part of lod (render_cmodel: the sampler rule tex::trilinear_lod on lmin, the
+//     material's bias, lod clamps and levels), clamped to the pyramid (flag kLodSat when clamped).
 //  2. Direction: d = ae - ce, b = be block-normalised (floor shifts) to EwaCordW-3 magnitude bits;
 //     CORDIC vectoring -> 2 phi = atan2(b, d) (binary angle, 2 pi = 2^EwaAngW); phi is the conic's
 //     larger-eigenvalue (minor-axis) direction; theta = phi + pi/2 reduced to [-pi/2, pi/2) (an
@@ -164,6 +165,8 @@ ellipse::fx::Local footprint_local(double major, double aniso, double theta, dou
 // double; horizon / point footprints -> unit disc (ewa_ref.hpp filter_axes).
 // clip: the float border weights (ewa::Params::clip).
 Result filter_ref_b2(const In& in, const tex::Texture& t, uint32_t max_texels, bool clip = false);
+// The same with every float parameter (max_aniso is not used: B2's axes are already clamped).
+Result filter_ref_b2(const In& in, const tex::Texture& t, const Params& p);
 // The major-axis angle of B2's conic codes in double (radians; 0 for a circle).
 double theta_ref_b2(const ellipse::fx::Out& o);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "texture/trilinear_lod.hpp"
 #include "texunit/convert.hpp"
 
 namespace tu::ewa {
@@ -28,7 +29,8 @@ Axes axes_ref(const ellipse::Jacobian& j, double max_aniso) {
 Result filter_axes(const tex::Texture& t, double u, double v, double s1, double s2, double theta,
                    const Params& p) {
   const int max_level = t.num_levels() - 1;
-  int level = s2 > 1 ? static_cast<int>(std::clamp<int64_t>(floor_i64(std::log2(s2)), 0, max_level)) : 0;
+  int level = static_cast<int>(std::floor(tex::lod_rule_ref(s2 > 0 ? std::log2(s2) : -INFINITY, p.lod_bias, p.min_lod,
+                                                            p.max_lod, max_level, nullptr, p.base_level, p.max_level)));
   const double c = std::cos(theta), s = std::sin(theta);
   Result r;
   for (;; ++level) {
@@ -55,7 +57,11 @@ Result filter_axes(const tex::Texture& t, double u, double v, double s1, double 
       continue;
     }
     double acc[4] = {0, 0, 0, 0}, wsum = 0;
+    std::vector<int64_t> xs;
+    std::vector<double> ws;
+    std::vector<char> keep;
     for (int64_t y = y0; y <= y1; ++y) {
+      xs.clear(), ws.clear();
       for (int64_t x = x0; x <= x1; ++x) {
         const double du = x - cu, dv = y - cv;
         const double pu = (du * c + dv * s) / a, pv = (-du * s + dv * c) / b;
@@ -63,12 +69,25 @@ Result filter_axes(const tex::Texture& t, double u, double v, double s1, double 
         ++r.texels_visited;
         if (w == 0) continue;
         ++r.texels_inside;
-        const tex::Rgba8 px = t.fetch(level, x, y);
+        xs.push_back(x), ws.push_back(w);
+      }
+      keep.assign(xs.size(), 1);
+      if (p.row_mask) p.row_mask(level, y, xs, &keep);
+      for (size_t k = 0; k < xs.size(); ++k) {
+        if (!keep[k]) continue;
+        const tex::Rgba8 px = t.fetch(level, xs[k], y);
+        const double w = ws[k];
         acc[0] += w * px.r, acc[1] += w * px.g, acc[2] += w * px.b, acc[3] += w * px.a;
         wsum += w;
       }
     }
     r.level = level;
+    if (wsum == 0) {  // only with row_mask (a, b >= 1: the nearest texel is inside)
+      r.no_weight = true;
+      const tex::Rgba8 px = t.fetch(level, floor_i64(cu + 0.5), floor_i64(cv + 0.5));
+      r.color = {double(px.r), double(px.g), double(px.b), double(px.a)};
+      return r;
+    }
     r.color = {acc[0] / wsum, acc[1] / wsum, acc[2] / wsum, acc[3] / wsum};
     return r;
   }

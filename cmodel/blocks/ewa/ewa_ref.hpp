@@ -11,6 +11,9 @@
 // instead of an unbounded walk).
 #pragma once
 
+#include <functional>
+#include <vector>
+
 #include "ellipse/ellipse_ref.hpp"
 #include "texture/texture.hpp"
 
@@ -25,6 +28,14 @@ struct Params {
   // Sub-texel border weights (seed 003 §2, docs/blocks/ewa.md "Border weights"): the box grows by
   // 1/2 texel per side, texels with |d| <= 1/2 get w' Phi(d / 0.2) (exact), d = border_distance().
   bool clip = false;
+  // The sampler's level choice (tex::lod_rule_ref on log2 of the clamped minor axis): material
+  // lod_bias, min_lod, max_lod, base_level, max_level. The texel cap may still raise the level.
+  double lod_bias = 0, min_lod = 0, max_lod = 12;
+  int base_level = 0, max_level = 1000;
+  // Optional visibility per walk row (afvis, docs/blocks/afvis.md): given the level, the row y and
+  // the x of its texels with weight > 0 (walk order), clears keep[k] for the texels left out of the
+  // sums. None kept at all: the level's texel nearest the centre (Result::no_weight).
+  std::function<void(int level, int64_t y, const std::vector<int64_t>& xs, std::vector<char>* keep)> row_mask = {};
 };
 
 struct Result {
@@ -33,6 +44,7 @@ struct Result {
   int texels_visited = 0;  // bounding-box texels walked
   int texels_inside = 0;   // texels with Q < 1 (weighted)
   bool capped = false;     // the texel cap raised the level
+  bool no_weight = false;  // row_mask left no texel: the nearest texel at the level
 };
 
 // The footprint's semi-axes s1 >= s2 (singular values of J; s2 grown to s1 / max_aniso) and the

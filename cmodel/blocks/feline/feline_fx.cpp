@@ -144,7 +144,7 @@ Result filter_ref_b2(const ewa::fx::In& in, const tex::Texture& t, const Params&
   if ((o.flags & efx::kHorizon) || o.lmaj == efx::kLogNegInf || o.lmin == efx::kLogNegInf) {
     Result r;
     r.lod = tex::lod_rule_ref(efx::log_value(o.lrho), p.lod_bias, p.min_lod, p.max_lod,
-                              t.num_levels() - 1, &r.tri_flags);
+                              t.num_levels() - 1, &r.tri_flags, p.base_level, p.max_level);
     r.color = tex::trilinear_ref(t, r.lod, u, v);
     r.texels = r.lod >= t.num_levels() - 1 ? 4 : 8;
     return r;

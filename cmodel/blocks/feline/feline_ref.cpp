@@ -31,7 +31,7 @@ Result filter_axes(const tex::Texture& t, double u, double v, double s1, double 
   r.probes = probe_count(s1, s2, p.max_probes);
   const double minor = std::max(s2, s1 / p.max_probes);
   r.lod = tex::lod_rule_ref(minor > 0 ? std::log2(minor) : -INFINITY, p.lod_bias, p.min_lod, p.max_lod,
-                            top, &r.tri_flags);
+                            top, &r.tri_flags, p.base_level, p.max_level);
   // The line of the clamped minor axis: the end probes' discs (radius minor) touch the ellipse's ends.
   const double c = std::cos(theta), s = std::sin(theta), half = std::max(0.0, s1 - minor);
   double wsum = 0;

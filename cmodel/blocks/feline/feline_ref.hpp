@@ -38,6 +38,7 @@ struct Params {
   int max_probes = kDefaultMaxProbes;  // Nmax, 1 .. FelNMax
   double max_aniso = 16;               // the anisotropy clamp of the footprint
   double lod_bias = 0, min_lod = 0, max_lod = 12;  // the GL rule (material fields)
+  int base_level = 0, max_level = 1000;             // the levels sampled (tex::level_range)
 };
 
 struct Result {

@@ -75,9 +75,25 @@ Graph build_setup() {
   return g;
 }
 
+// Texel-depth variant (tu_texel_depth): S1 accumulators N (m == 0 ? 0 : N + q2) and
+// D (m == 0 ? m2 q1 : D + (q2 - q1)), the load product m2 q1 registered with its select; the
+// reciprocal of D; w = N R rounded; T = T1 + (T2 - T1) w rounded, for u and v.
+Graph build_texel_depth() {
+  Graph t;
+  t.name = "texel_depth";
+  t.description = "texel depth: N, D accumulators (D loads m2 q1), reciprocal of D, w = N R, T1 + (T2 - T1) w";
+  const int n = t.add("acc_n", "add", 1);
+  const int d = t.add("acc_d_select", "add", 0, {t.add("mul_m2_q1", "mul", 1)});
+  const int r = add_reciprocal(t, d);
+  const int w = t.add("round_w", "shift", 1, {t.add("mul_n_r", "mul", 1, {r, n})});
+  for (const char* c : {"u", "v"})
+    t.add(std::string("add_t1_round_") + c, "add", 1, {t.add(std::string("mul_dt_w_") + c, "mul", 1, {w})});
+  return t;
+}
+
 std::vector<Graph> build() {
   return {build_persp("persp", false, 1), build_persp("persp_direct", true, 1),
-          build_persp("persp_k4", false, 4), build_setup()};
+          build_persp("persp_k4", false, 4), build_setup(), build_texel_depth()};
 }
 }  // namespace
 
@@ -88,19 +104,6 @@ const std::vector<sched::Graph>& schemes() {
 
 const sched::Graph& scheme(const std::string& name) { return sched::find(schemes(), name); }
 
-const sched::Graph& texel_depth_scheme() {
-  static const Graph g = [] {
-    Graph t;
-    t.name = "persp_texel_depth";
-    t.description = "texel depth: N, D accumulators, reciprocal of D, w = N R, T1 + (T2 - T1) w (3 multiplies)";
-    const int n = t.add("acc_n", "add", 1), d = t.add("acc_d", "add", 1);
-    const int r = add_reciprocal(t, d);
-    const int w = t.add("round_w", "shift", 1, {t.add("mul_n_r", "mul", 1, {r, n})});
-    for (const char* c : {"u", "v"})
-      t.add(std::string("add_t1_round_") + c, "add", 1, {t.add(std::string("mul_dt_w_") + c, "mul", 1, {w})});
-    return t;
-  }();
-  return g;
-}
+const sched::Graph& texel_depth_scheme() { return scheme("texel_depth"); }
 
 }  // namespace tu::persp

@@ -17,15 +17,21 @@ Unit::Acc at(const Unit::Acc& s0, P a, P d, Q g, int m) {
 }
 }  // namespace
 
-Span setup(const Unit::Acc& s0, P a, P d, Q g, int m2) {
+Span record(int64_t q1, int64_t q2, const int64_t t1[2], const int64_t t2[2], int m2) {
   Span s;
   s.m2 = m2;
+  s.t1[0] = t1[0], s.t1[1] = t1[1], s.t2[0] = t2[0], s.t2[1] = t2[1];
+  s.q1 = q1, s.q2 = q2;
+  s.guard = q1 < kGuard || q2 < kGuard;
+  return s;
+}
+
+Span setup(const Unit::Acc& s0, P a, P d, Q g, int m2) {
   const Unit::Acc s1 = at(s0, a, d, g, m2);
   const Pixel p1 = Unit::pixel(s0), p2 = Unit::pixel(s1);
-  s.t1[0] = p1.u, s.t1[1] = p1.v, s.t2[0] = p2.u, s.t2[1] = p2.v;
-  s.q1 = static_cast<int64_t>(s0.q.raw()), s.q2 = static_cast<int64_t>(s1.q.raw());
-  s.guard = p1.flag || p2.flag;
-  return s;
+  const int64_t t1[2] = {p1.u, p1.v}, t2[2] = {p2.u, p2.v};
+  // record()'s guard is B1's flag at the ends (B1 flags exactly q < 2^-PerspGuardLog2).
+  return record(static_cast<int64_t>(s0.q.raw()), static_cast<int64_t>(s1.q.raw()), t1, t2, m2);
 }
 
 uint64_t w_code(const Span& s, int m) {

@@ -19,7 +19,9 @@
 // Error: the two end roundings of B1 (2^-9 each) carried by (1 - w), w, plus the w rounding times
 // |T2 - T1| and the final rounding: measured against the exact rational in testbench/unit/
 // texel_depth_test.cpp and the report row persp/texel_depth (vectors: block persp_texel_depth).
-// kWF is the C model's own width (no RTL: the variant's datapath is B1's plus one multiply stage).
+// RTL: rtl/persp/tu_texel_depth.sv, the per-pixel datapath from the span record (block
+// texel_depth; formats TexelDepth* in formats.hpp: N, D are TexelDepthAccW-bit unsigned
+// accumulators, exact when unguarded; w is u1.TexelDepthWF).
 #pragma once
 
 #include <cstdint>
@@ -28,7 +30,7 @@
 
 namespace tu::persp::texel_depth {
 
-inline constexpr int kWF = 24;  // w: unsigned, kWF fraction bits, 0..1
+inline constexpr int kWF = fmt::kTexelDepthWF;  // w: unsigned, kWF fraction bits, 0..1
 
 struct Span {
   int64_t t1[2] = {}, t2[2] = {};  // u, v at x0 and x1: B1's Uv codes
@@ -38,6 +40,9 @@ struct Span {
 };
 // From B1's span seeds (q, p_u, p_v at x0) and increments (A, D, G) and the span's last offset m2.
 Span setup(const Unit::Acc& at_x0, Unit::P a, Unit::P d, Unit::Q g, int m2);
+// The span record as the RTL receives it (q1, q2 raw codes, T1, T2 Uv codes, m2); the guard is
+// derived from q1, q2 (B1's rule: an end with q < 2^-PerspGuardLog2, incl. q <= 0).
+Span record(int64_t q1, int64_t q2, const int64_t t1[2], const int64_t t2[2], int m2);
 // Pixel at offset m in [0, m2] from x0.
 Pixel pixel(const Span& s, int m);
 // w code of pixel m (u1.kWF), exposed for the test of the clamp and the ends.

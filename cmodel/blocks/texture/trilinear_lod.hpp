@@ -2,10 +2,14 @@
 // operation"), as LINEAR_MIPMAP_LINEAR with LINEAR magnification uses it.
 //
 //   rho^2  = max(Ux^2 + Vx^2, Uy^2 + Vy^2)      level-0 texels per pixel step, no square root
-//   lambda = log2 rho + bias, clamped to [min_lod, max_lod]
-//   lambda <= 0: magnification (level 0 bilinear, flag kTriMagnify)
-//   otherwise the pair floor(lambda), + 1 blended by frac(lambda); lambda >= top: the top level
-//   alone (flag kTriLodSat). No anisotropy clamp (the EWA keeps its own rule).
+//   lambda = log2 rho - base + bias, clamped to [min_lod, max_lod] (min_lod wins if above max_lod)
+//   lambda <= 0: magnification (level base, flag kTriMagnify)
+//   otherwise level base + lambda: the pair floor, + 1 blended by the fraction; base + lambda >=
+//   top: the top level alone (flag kTriLodSat). No anisotropy clamp.
+// Levels (GL TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL, tex::level_range): base = min(base_level,
+// pyramid top), top = clamp(max_level, base, pyramid top); rho is measured at level 0, so
+// log2 rho - base is GL's log2 rho of the base level. The same step on the EWA's clamped minor
+// axis (B2 lmin) chooses the EWA's level, on Feline's its probes' level.
 // Derivatives are analytic per pixel (B2's numerators of the exact Jacobian), where a GPU takes
 // them as differences over 2x2 quads.
 //
@@ -20,6 +24,7 @@
 // only loss, max 2.93e-3 < 2^-8 on every lrho code (TrilinearLod.ExhaustiveOverLrhoCodes).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "texunit/formats.hpp"
@@ -36,12 +41,26 @@ struct LodParams {  // TexLodF-bit codes
   int32_t bias = 0;
   uint32_t min_lod = 0;
   uint32_t max_lod = ((1u << fmt::kEllLodW) - 1);
+  uint32_t base_level = 0;   // integer levels (material base_level, max_level; GL's 1000 default)
+  uint32_t max_level = 1000;
 };
 // Material values (levels) to codes (bias rounded half up; |bias| <= 16, lods in [0, 15.99]).
-LodParams lod_params(double bias, double min_lod, double max_lod);
+LodParams lod_params(double bias, double min_lod, double max_lod, int base_level = 0, int max_level = 1000);
+
+// The levels a material samples on a pyramid whose top level is `top`: base = min(base_level, top),
+// top = clamp(max_level, base, top). base_level > max_level (GL: an incomplete texture) samples
+// the base level alone; base_level above the pyramid, its top level.
+struct LevelRange {
+  int base = 0, top = 0;
+};
+LevelRange level_range(int base_level, int max_level, int top);
+inline LevelRange level_range(const LodParams& p, int top) {
+  return level_range(static_cast<int>(std::min<uint32_t>(p.base_level, 1000)),
+                     static_cast<int>(std::min<uint32_t>(p.max_level, 1000)), top);
+}
 
 struct TriLod {
-  uint32_t lod = 0;  // u(EllLodW).TexLodF, in [0, top << TexLodF]
+  uint32_t lod = 0;  // u(EllLodW).TexLodF, in [base << TexLodF, top << TexLodF] (level_range)
   uint32_t flags = 0;
 };
 TriLod trilinear_lod(int32_t lrho, const LodParams& p, int top);
@@ -49,9 +68,10 @@ TriLod trilinear_lod(int32_t lrho, const LodParams& p, int top);
 // The rule from log2 rho on (bias, clamps, magnification, pyramid): the float reference of the
 // step tex::trilinear_lod; -inf gives magnification. Flags as above.
 double lod_rule_ref(double log2_rho, double bias, double min_lod, double max_lod, int top,
-                    uint32_t* flags = nullptr);
+                    uint32_t* flags = nullptr, int base_level = 0, int max_level = 1000);
 // Float reference on the Jacobian (texels per pixel); flags as above.
 double trilinear_lod_ref(double ux, double vx, double uy, double vy, double bias, double min_lod,
-                         double max_lod, int top, uint32_t* flags = nullptr);
+                         double max_lod, int top, uint32_t* flags = nullptr, int base_level = 0,
+                         int max_level = 1000);
 
 }  // namespace tu::tex

@@ -162,6 +162,10 @@
   X(TexRamLog2Words, 20, "simulation texel RAM of the texture-unit top: 2^N RGBA8 words")      \
   X(PerspLatency, 8, "per-pixel pipeline latency in cycles, II = 1")                          \
   X(PerspSetupLatency, 2, "per-scanline set-up (tu_persp_setup) latency in cycles, II = 1")   \
+  /* Texel-depth variant of B1 (docs/blocks/persp.md "Texel-depth variant", rtl/persp/tu_texel_depth.sv) */ \
+  X(TexelDepthWF, 24, "w in [0, 1]: unsigned, TexelDepthWF fraction bits, round half up, clamped") \
+  X(TexelDepthAccW, kPerspQW - 1 + kPerspXyW, "N = m q2, D = m2 q(m): unsigned, PerspF frac, exact when unguarded") \
+  X(TexelDepthLatency, 10, "per-pixel pipeline latency in cycles, II = 1")                  \
   /* Object-space pipeline (docs/blocks/objspace.md): splat weights and pixel accumulators */ \
   X(ObjSplatWF, 2 * kPerspUvF, "splat weight: fraction bits (product of two PerspUvF fractions)") \
   X(ObjSplatWW, kObjSplatWF + 1, "splat weight code 0..2^ObjSplatWF: unsigned, exact")       \
@@ -271,7 +275,14 @@
   X(FelStepW, 32, "half step (D / (N-1)) (c, s) between probes: signed, FelSigF fraction bits")   \
   X(FelTF, 16, "probe distance t = d / sigma1 in [0, 1) and its step: unsigned, FelTF frac")   \
   X(FelWsumW, 21, "weight sum over <= FelNMax probes: unsigned, GaussSqF fraction bits (exact)") \
-  X(FelAccW, 29, "per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)")
+  X(FelAccW, 29, "per-channel weighted sum: unsigned, GaussSqF fraction bits (exact)")         \
+  /* AF with parallax visibility (docs/blocks/afvis.md): the per-texel trace, in PomUvF codes */ \
+  X(AfvStepMax, 64, "visibility trace: at most this many depth cells entered per texel (flag)") \
+  X(AfvStepW, 7, "trace step counter 0..AfvStepMax: unsigned integer")                         \
+  X(AfvPW, 22, "|Pu|, |Pv| (pom::parallax, < 2^(PomUvF+5)): unsigned magnitude, PomUvF bits")  \
+  X(AfvDistW, 23, "n: ray length to the next cell boundary, |P| s units: unsigned, PomUvF bits") \
+  X(AfvCrossW, 45, "crossing order e = n_u |Pv|, n_v |Pu|: unsigned, exact products")          \
+  X(AfvTestW, 32, "depth test (d0 - h) |P| vs 255 n: exact, signed, PomUvF bits")
 
 namespace tu::fmt {
 #define TU_X_DECLARE(name, value, desc) inline constexpr int k##name = (value);

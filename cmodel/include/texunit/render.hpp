@@ -11,8 +11,10 @@
 
 #include "brdf/brdf_common.hpp"
 #include "ellipse/ellipse_ref.hpp"
+#include "afvis/afvis.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "noise/noise_proc.hpp"
+#include "texture/trilinear_lod.hpp"
 #include "texunit/image.hpp"
 #include "texunit/scene.hpp"
 
@@ -39,6 +41,8 @@ struct PixelRecord {
   // CmodelOptions::trace_texels: the filter's texel reads in order (tex::TexelTrace word
   // addresses; texture i of the scene's textures at i << 32).
   std::vector<uint64_t> texel_addrs;
+  // AF with parallax visibility (C-model engine): texels traced, depth reads, texels kept.
+  int afv_traced = 0, afv_steps = 0, afv_visible = 0;
 };
 
 struct Frame {
@@ -72,6 +76,7 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter = {}
 // reference) B1 persp::Unit on the quantised coefficients, B2 ellipse::fx::analytic, then the
 // fixed nearest / bilinear / trilinear (the GL LOD rule on B2's lrho, tex::trilinear_lod, with the
 // material's bias and min / max lod) or EWA fx with the material's weight source and a 1024-texel cap.
+enum class AfvisMode { Scene, On, Off };
 struct CmodelOptions {
   // Per-pixel uv-shift step between B1 and the filter (relief mapping hooks in here): pixel,
   // object, and the B1 u, v codes (s(PerspUvW).TexUvF) to modify in place.
@@ -93,6 +98,13 @@ struct CmodelOptions {
   std::optional<brdf::Model> shade_model;
   // Record every pixel's texel reads (PixelRecord::texel_addrs; the texel-cache model).
   bool trace_texels = false;
+  // AF with parallax visibility (docs/blocks/afvis.md) on EWA relief pixels: Scene = the
+  // material's af_visibility flag, On / Off = every relief material / none (comparisons); the rule
+  // and the min-depth pyramid level the trace runs on (0: the depth map itself).
+  AfvisMode afvis = AfvisMode::Scene;
+  afvis::Rule afvis_rule = afvis::Rule::Row;
+  int afvis_pyramid = 0;
+  int afvis_bias = afvis::kDefaultBias;  // the trace's bias (depth codes)
 };
 // The options of the texture path alone (relief off), for comparisons with the RTL top.
 inline CmodelOptions texture_path_only() {
@@ -104,6 +116,8 @@ inline CmodelOptions texture_path_only() {
 // log2(max anisotropy) as B2's laniso input (u(EllAnisoW).EllLogF, rounded, saturated); the RTL
 // render engine sets the same.
 uint32_t laniso_code(double max_aniso);
+// The material's sampler LOD state as codes (bias, min / max lod, base / max level).
+tex::LodParams lod_params(const scene::Material& m);
 
 // The RTL texture unit's engine for a material's filter (its filt_i code); std::invalid_argument
 // for a filter the RTL has no engine for (feline).

@@ -34,6 +34,7 @@ struct Relief {
   ReliefMethod method = ReliefMethod::PomAdaptive;
   int layers = 16;             // PomFixed: N; PomAdaptive: Nmax (Nmin = 4); Iterative, DistanceMap*: cap
   int map_layers = 16;         // DistanceMap*: the distance map's layers D
+  bool af_visibility = false;  // EWA keeps only the footprint texels visible over the relief (afvis)
 };
 
 // A procedural colour source (docs/scene-format.md "procedural"; docs/blocks/noise.md §5): the
@@ -77,6 +78,9 @@ struct Material {
   std::optional<Relief> relief;
   std::optional<Procedural> procedural;  // colour from noise; `texture` still fixes the uv grid
   std::optional<Specular> specular;  // absent: diffuse only (when the scene has a light)
+  // GL TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL: the levels every engine samples
+  // (tex::level_range; nearest and bilinear sample the base level).
+  int base_level = 0, max_level = 1000;
 };
 
 struct TextureSpec {

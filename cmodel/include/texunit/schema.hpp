@@ -37,7 +37,7 @@
 // ---- flag bits: X(Name, bit, description) ----
 // EWA filter output (ewa::fx::Flag, tu_ewa flags_o; SV tu_formats_pkg::EwaFlagUnitDisc ...).
 #define TU_EWA_FLAG_BITS(X)                                                               \
-  X(UnitDisc, 0, "B2 horizon or point footprint (no axes): unit disc at level 0")         \
+  X(UnitDisc, 0, "B2 horizon or point footprint (no axes): unit disc at the sampler level")         \
   X(AxisClamp, 1, "log2 major at level L above min(log2 lim_L, EwaAxisMaxLog2): clamped") \
   X(LodSat, 2, "integer lod above the texture's top level: clamped")                      \
   X(Capped, 3, "the box exceeded max_texels: level raised")                               \
@@ -64,7 +64,8 @@
   X(wsrc, kWsrcW, "EWA weight source (Wsrc* codes)")                   \
   X(cap, kEwaCountW, "EWA texel cap")                                  \
   X(filt, kEngineW, "filter engine (Eng* codes)")                     \
-  X(clip, 1, "EWA sub-texel border weights (the unit's EwaClipVariant)")
+  X(clip, 1, "EWA sub-texel border weights (the unit's EwaClipVariant)") \
+  X(tlbase, 4, "colour texture: base level (tex::level_range), nearest and bilinear sample it")
 // Material relief fields, used up by the relief stage.
 #define TU_REC_RELIEF(X)                             \
   X(rel, 1, "POM relief on")                         \
@@ -86,7 +87,9 @@
   X(maxlod, kEllMaxLodW, "max lod")          \
   X(lbias, kTexLodBiasW, "trilinear lod bias (s14.8)") \
   X(lminlod, kEllLodW, "trilinear min lod")  \
-  X(lmaxlod, kEllLodW, "trilinear max lod")
+  X(lmaxlod, kEllLodW, "trilinear max lod") \
+  X(lbase, 4, "sampler levels: base (tex::level_range)") \
+  X(ltop, 4, "sampler levels: top (tex::level_range)")
 // Procedural material constants (noise::ProcCodes, docs/blocks/noise.md §5) for tu_noise_unit.
 #define TU_REC_PROC(X)                                                       \
   X(on, 1, "procedural colour: the noise unit, not a filter engine")         \
