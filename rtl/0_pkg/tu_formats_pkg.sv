@@ -47,6 +47,15 @@ package tu_formats_pkg;
   localparam int NoiseGainF = 8;  // smoke opacity gain: fraction bits
   localparam int NoiseGainW = 16;  // smoke opacity gain code: unsigned (gain < 256)
   localparam int NoiseUnitLatency = 9;  // tu_noise_unit pipelined: coords, cores, sum, value
+  localparam int WaterAmpF = 8;  // water height amplitude a (cells): fraction bits
+  localparam int WaterAmpW = 13;  // water amplitude code: unsigned (a < 32)
+  localparam int WaterStepCode = 8;  // finite-difference step 2^-8 cells = 2^WaterStepCode codes of s32.16
+  localparam int WaterSlopeF = 19;  // slope g = -a dP/dx: fraction bits (exact product of the amplitude and the sum difference)
+  localparam int WaterSlopeW = 31;  // slope g: signed, saturated to |g| < 2^(WaterSlopeW-1-WaterSlopeF) (guard)
+  localparam int WaterLightW = 18;  // unit light component: signed, NoiseTF fraction bits
+  localparam int WaterQuoW = 17;  // shade quotient n.L / |n|: unsigned, NoiseTF fraction bits (< 2)
+  localparam int WaterPasses = 3;  // octave sums per water pixel: P(x, y), P(x + h, y), P(x, y + h)
+  localparam int NoiseWaterLatency = 59;  // tu_noise_unit water, from the last pass: front, slopes, |n|^2 and n.L, isqrt, divide, colour
   localparam int ClipInW = 13;  // clip distance d: signed, ClipInF fraction bits; domain [-0.5, 0.5], clamped
   localparam int ClipInF = 12;
   localparam int ClipAW = 12;  // a = min(|d|, 0.5): unsigned, ClipInF fraction bits
@@ -283,8 +292,8 @@ package tu_formats_pkg;
   localparam int MaterialW = 66;  // material fields of a pixel
   localparam int ReliefW = 94;  // material relief fields
   localparam int TriW = 112;  // per-triangle footprint constants
-  localparam int ProcW = 270;  // procedural material constants
-  localparam int FpixW = 361;  // pixel on its way to the filter
-  localparam int PixW = 455;  // pixel before the relief stage
+  localparam int ProcW = 338;  // procedural material constants
+  localparam int FpixW = 429;  // pixel on its way to the filter
+  localparam int PixW = 523;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

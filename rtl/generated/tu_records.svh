@@ -60,6 +60,11 @@ typedef struct packed {
   logic [tu_formats_pkg::NoiseGainW-1:0] gain;  // smoke gain, NoiseGainF bits
   logic [23:0] c0;  // colour at value 0, {b, g, r}
   logic [23:0] c1;  // colour at value 1, {b, g, r}
+  logic water;  // water: Lambert of the finite-difference normal (three sums)
+  logic [tu_formats_pkg::WaterAmpW-1:0] amp;  // water amplitude a, WaterAmpF bits
+  logic [tu_formats_pkg::WaterLightW-1:0] lx;  // water unit light x (along u), s.NoiseTF
+  logic [tu_formats_pkg::WaterLightW-1:0] ly;  // water unit light y, s.NoiseTF
+  logic [tu_formats_pkg::WaterLightW-1:0] lz;  // water unit light z (the normal), s.NoiseTF
 } tu_proc_t;
 // pixel on its way to the filter
 typedef struct packed {

@@ -51,6 +51,11 @@ module tu_texture_unit #(
   parameter int HasNoise   = {31'b0, tu_unit_cfg_pkg::HasNoise},
   parameter int NoiseDims  = tu_unit_cfg_pkg::NoiseDims,
   parameter int NoiseCores = tu_unit_cfg_pkg::NoiseCores,
+  // 1: the noise unit's water back-end (three octave sums, normal, Lambert; tu_noise_unit)
+  parameter int HasWater   = {31'b0, tu_unit_cfg_pkg::HasWater},
+  // noise scheme: 0 pipelined (NoiseCores cores, one octave sum per clock), 1 octave-serial (one
+  // core, NoiseCores clocks per sum)
+  parameter int NoiseScheme = tu_unit_cfg_pkg::NoiseScheme,
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -570,12 +575,13 @@ module tu_texture_unit #(
   end
   // Noise unit: a procedural pixel's colour from tu_noise_unit at (u, v) with lrho, no texels.
   if (HasNoise != 0) begin : g_noise
-    localparam int NzCntW = $clog2(tu_formats_pkg::NoiseUnitLatency + 2);
+    localparam int NzCntW = $clog2(tu_formats_pkg::NoiseWaterLatency + 2);
     logic [NzCntW-1:0] nz_inflight_q;
     logic              nz_fire_in, nz_fire_out;
     assign nz_fire_in  = fq_valid && f_noise && fq_ready;
     assign nz_fire_out = nz_valid && p_ready;
-    tu_noise_unit #(.Dims(NoiseDims), .Octaves(NoiseCores), .SideW(OsW)) u_noise (
+    tu_noise_unit #(.Dims(NoiseDims), .Octaves(NoiseCores), .SideW(OsW), .HasWater(HasWater),
+                    .Serial(NoiseScheme)) u_noise (
       .clk_i, .rst_ni, .in_valid_i(fq_valid && f_noise && inflight_q == '0), .in_ready_o(nz_in_ready),
       .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .lrho_i(f_lrho), .proc_i(f_pix.proc),
       .side_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rr}),

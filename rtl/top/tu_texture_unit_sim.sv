@@ -18,6 +18,8 @@ module tu_texture_unit_sim #(
   parameter int HasNoise      = {31'b0, tu_unit_cfg_pkg::HasNoise},
   parameter int NoiseDims     = tu_unit_cfg_pkg::NoiseDims,
   parameter int NoiseCores    = tu_unit_cfg_pkg::NoiseCores,
+  parameter int HasWater      = {31'b0, tu_unit_cfg_pkg::HasWater},
+  parameter int NoiseScheme   = tu_unit_cfg_pkg::NoiseScheme,
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words,
   // the depth RAM also holds the distance maps (the default scene's wall: 1,114,112 words)
   parameter int DepthWords = 2 * Words
@@ -109,7 +111,8 @@ module tu_texture_unit_sim #(
                     .HasPom(HasPom), .HasIterParallax(HasIterParallax), .HasDistanceMap(HasDistanceMap),
                     .EllRecurrence(EllRecurrence),
                     .HasEwaClip(HasEwaClip), .EwaClipVariant(EwaClipVariant),
-                    .HasNoise(HasNoise), .NoiseDims(NoiseDims), .NoiseCores(NoiseCores)) u_tu (
+                    .HasNoise(HasNoise), .NoiseDims(NoiseDims), .NoiseCores(NoiseCores), .HasWater(HasWater),
+                    .NoiseScheme(NoiseScheme)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,

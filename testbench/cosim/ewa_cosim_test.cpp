@@ -539,6 +539,25 @@ TEST(TextureUnitRtl, ShadedSphereEqualsCModelCyclesPredicted) {
   EXPECT_THROW(cosim::render_rtl(s, bil), std::invalid_argument);
 }
 
+namespace {
+// A scene through the Verilated unit: RTL = C model on every pixel, without and with 30 % stalls,
+// clocks without stalls = the prediction; returns the clocks.
+uint64_t expect_rtl_equals_cmodel(const scene::Scene& s, const char* what, size_t min_pixels) {
+  const auto r = cosim::render_rtl(s, {});
+  EXPECT_TRUE(r.ok()) << what << ": " << r.first_mismatch;
+  EXPECT_GT(r.frame.pixels.size(), min_pixels) << what;
+  EXPECT_EQ(r.cycles, r.predicted_cycles) << what;
+  std::printf("%s: %zu px, cycles measured %llu predicted %llu\n", what, r.frame.pixels.size(),
+              (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
+  cosim::RtlRenderOptions o;
+  o.stall_prob = 0.3;
+  const auto q = cosim::render_rtl(s, o);
+  EXPECT_TRUE(q.ok()) << what << " with stalls: " << q.first_mismatch;
+  EXPECT_EQ(q.mismatches, 0u) << q.first_mismatch;
+  return r.cycles;
+}
+}  // namespace
+
 // The noise unit in the top (docs/blocks/noise.md §5 "In the RTL unit"): docs/scenes/procedural.json
 // at 64 x 48 (fbm ground, smoke wall), then with time, fewer octaves and no footprint limit, then
 // with the wall textured (engine turns between the noise unit and EWA): RTL = C model on every
@@ -553,24 +572,49 @@ TEST(TextureUnitRtl, ProceduralSceneEqualsCModelCyclesPredicted) {
   timed.materials.at("marble").procedural->footprint_limit = false;
   auto mixed = s;
   mixed.materials.at("smoke").procedural.reset();
-  for (const auto* sc : {&s, &timed, &mixed}) {
-    const auto r = cosim::render_rtl(*sc, {});
-    EXPECT_TRUE(r.ok()) << r.first_mismatch;
-    EXPECT_GT(r.frame.pixels.size(), 1000u);
-    EXPECT_EQ(r.cycles, r.predicted_cycles);
-    std::printf("procedural: %zu px, cycles measured %llu predicted %llu\n", r.frame.pixels.size(),
-                (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
-    cosim::RtlRenderOptions o;
-    o.stall_prob = 0.3;
-    const auto q = cosim::render_rtl(*sc, o);
-    EXPECT_TRUE(q.ok()) << q.first_mismatch;
-    EXPECT_EQ(q.mismatches, 0u) << q.first_mismatch;
-  }
-  // Water's normal is not in the RTL; the bilinear-only unit has no noise unit.
-  const auto water = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/water.json");
-  EXPECT_THROW(cosim::render_rtl(water, {}), std::invalid_argument);
+  for (const auto* sc : {&s, &timed, &mixed}) expect_rtl_equals_cmodel(*sc, "procedural", 1000);
+  // The bilinear-only unit has no noise unit.
   cosim::RtlRenderOptions bil;
   bil.has_ewa = false;
   bil.filter = scene::Filter::Bilinear;
   EXPECT_THROW(cosim::render_rtl(s, bil), std::invalid_argument);
+}
+
+// Water in the noise unit (docs/blocks/noise.md §5 "Water on the RTL"): docs/scenes/water.json at
+// 48 x 36 (three octave sums per pixel, normal, square root, divide), at the amplitude's largest
+// code without the footprint limit (steepest normals), and docs/scenes/procedural.json with its
+// smoke wall as water (turns between fbm and water pixels in the noise unit): RTL = C model on
+// every pixel with 30 % stalls, cycles = ewa::texture_unit_cycles without.
+TEST(TextureUnitRtl, WaterEqualsCModelCyclesPredicted) {
+  auto water = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/water.json");
+  water.camera.width = 48;
+  water.camera.height = 36;
+  auto steep = water;
+  steep.materials.at("water").procedural->amplitude = 31.99;
+  steep.materials.at("water").procedural->footprint_limit = false;
+  auto mixed = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/procedural.json");
+  mixed.camera.width = 48;
+  mixed.camera.height = 36;
+  mixed.materials.at("smoke").procedural->kind = scene::ProceduralKind::Water;
+  expect_rtl_equals_cmodel(water, "water", 500);
+  expect_rtl_equals_cmodel(steep, "water, a = 31.99, all octaves", 500);
+  expect_rtl_equals_cmodel(mixed, "fbm ground, water wall", 500);
+}
+
+// The octave-serial noise unit (NoiseScheme = 1: one core, NoiseOctaves clocks per octave sum, the
+// recurrence-ellipse model Vtu_texture_unit_sim_rec carries it): docs/scenes/procedural.json at
+// 40 x 30 with the smoke wall as water, fbm, smoke and water pixels, the same bits as the C model
+// (the pipelined unit's) on every pixel with 30 % stalls, cycles = ewa::stream_cycles with
+// noise_slots = 4 (II 4 per sum, 12 per water pixel) without.
+TEST(TextureUnitRtl, OctaveSerialNoiseUnitEqualsCModelCyclesPredicted) {
+  auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/procedural.json");
+  s.camera.width = 40;
+  s.camera.height = 30;
+  s.footprint = scene::Footprint::Recurrence;
+  auto water = s;
+  water.materials.at("smoke").procedural->kind = scene::ProceduralKind::Water;
+  const uint64_t fbm_smoke = expect_rtl_equals_cmodel(s, "octave-serial: fbm, smoke", 300);
+  const uint64_t fbm_water = expect_rtl_equals_cmodel(water, "octave-serial: fbm, water", 300);
+  // A water pixel takes three octave sums (12 clocks), a smoke pixel one (4).
+  EXPECT_GT(fbm_water, fbm_smoke);
 }

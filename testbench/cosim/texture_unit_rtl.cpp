@@ -36,22 +36,23 @@ enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kWrap,
   kWsrc, kCap, kFilt, kClip, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
   kRdm, kDlayers, kDbase, kLbase, kLtop,
-  kProc, kRowSize = kProc + 5  // tu_proc_t: five 64-bit words, least significant first
+  kProc, kProcWords = (schema::kProcW + 63) / 64, kRowSize = kProc + kProcWords  // tu_proc_t, least significant first
 };
 
 // A procedural material's tu_proc_t bits (schema.hpp TU_REC_PROC: first field most significant).
-std::array<uint64_t, 5> pack_proc(const noise::ProcCodes& c) {
+std::array<uint64_t, kProcWords> pack_proc(const noise::ProcCodes& c) {
   using namespace schema;
   auto rgb = [](const std::array<uint8_t, 3>& k) { return uint64_t(k[0]) | uint64_t(k[1]) << 8 | uint64_t(k[2]) << 16; };
   const uint64_t value[] = {1, c.smoke, c.limit, static_cast<uint64_t>(c.octaves), c.freq,
                             code(c.lfreq, fmt::kEllLogW), code(c.sx, fmt::kNoiseCoordW), code(c.sy, fmt::kNoiseCoordW),
                             code(c.z, fmt::kNoiseCoordW), c.norm, code(c.mean_abs, fmt::kNoiseValW), c.thr, c.gain,
-                            rgb(c.c0), rgb(c.c1)};
+                            rgb(c.c0), rgb(c.c1), c.water, c.amp, code(c.light[0], fmt::kWaterLightW),
+                            code(c.light[1], fmt::kWaterLightW), code(c.light[2], fmt::kWaterLightW)};
 #define TU_X_W(field, width, desc) (width),
   constexpr int width[] = {TU_REC_PROC(TU_X_W)};
 #undef TU_X_W
   static_assert(std::size(width) == sizeof value / sizeof value[0], "one value per field");
-  std::array<uint64_t, 5> w{};
+  std::array<uint64_t, kProcWords> w{};
   int bit = 0;
   for (size_t f = std::size(width); f-- > 0;)  // the last field is least significant
     for (int b = 0; b < width[f]; ++b, ++bit)
@@ -156,14 +157,11 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   }
   if (o.relief && !o.has_ewa)
     throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
-  // The noise unit (HasNoise) is in the full unit: fbm and smoke; water's normal is not in its RTL.
+  // The noise unit (HasNoise, with HasWater) is in the full unit: fbm, smoke and water.
   for (const auto& [name, m] : s.materials)
-    if (m.procedural && (!o.has_ewa || o.corridor_unit || m.procedural->kind == scene::ProceduralKind::Water))
-      throw std::invalid_argument(s.source + ": /materials/" + name + "/procedural: " +
-                                  (m.procedural->kind == scene::ProceduralKind::Water
-                                       ? "water is not in the RTL noise unit yet (docs/blocks/noise.md §6)"
-                                       : "this unit has no noise unit (the full unit has)") +
-                                  "; render it with --engine cmodel or ref");
+    if (m.procedural && (!o.has_ewa || o.corridor_unit))
+      throw std::invalid_argument(s.source + ": /materials/" + name +
+                                  "/procedural: this unit has no noise unit (the full unit has); render it with --engine cmodel or ref");
   // AF with parallax visibility (docs/blocks/afvis.md): C model only, no RTL visibility unit yet.
   for (const auto& [name, m] : s.materials)
     if (o.relief && m.relief && m.relief->af_visibility && o.filter.value_or(m.filter) == scene::Filter::Ewa)
@@ -191,6 +189,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   if (ep.clip_variant < 0) throw std::invalid_argument("render_rtl: clip variant " + o.clip_variant + " has no RTL");
   // B2 variant: the unit with EllRecurrence = 1 (full unit only).
   const bool rec = s.footprint == scene::Footprint::Recurrence;
+  // The recurrence-ellipse model has the octave-serial noise unit (NoiseScheme = 1, the full
+  // unit's NoiseCores = NoiseOctaves octaves per sum, one clock each).
+  if (rec) ep.noise_slots = fmt::kNoiseOctaves;
   if (rec && !o.has_ewa)
     throw std::invalid_argument(s.source + ": /footprint: recurrence, but the bilinear-only unit has the analytic ellipse");
   render::CmodelOptions copt;
@@ -346,6 +347,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         pc.guard = guard;
         pc.clip = r[kClip] != 0;
         pc.noise = ob.proc.has_value();
+        pc.water = ob.proc && ob.proc->water;
         // Trilinear: one bilinear pass for a guard pixel or a lod (GL rule) at the top level.
         const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;
         pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(tlod >> fmt::kTexLodF), top);

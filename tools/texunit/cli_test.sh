@@ -55,18 +55,14 @@ case $case in
     ;;
   render_procedural)
     # Procedural materials: an animation (one PNG per frame, the smoke moves), the PSNR against the
-    # reference, and the RTL engine's refusal of water (exit 2, nothing written; fbm and smoke
-    # render on the RTL: TextureUnitRtl.ProceduralSceneEqualsCModelCyclesPredicted).
+    # reference (fbm, smoke and water render on the RTL: TextureUnitRtl.ProceduralSceneEqualsCModelCyclesPredicted,
+    # TextureUnitRtl.WaterEqualsCModelCyclesPredicted).
     "$tu" render docs/scenes/procedural.json --engine cmodel --frames 3 --dt 0.5 --out "$tmp/a" 2>/dev/null >/dev/null
     for i in 0000 0001 0002; do [ -s "$tmp/a/cmodel_$i.png" ] || fail "frame $i missing"; done
     ! cmp -s "$tmp/a/cmodel_0000.png" "$tmp/a/cmodel_0001.png" || fail "frames 0 and 1 are equal"
     "$tu" render docs/scenes/procedural.json --engine cmodel --vs ref --out "$tmp/b" 2>/dev/null >"$tmp/b.txt"
     grep -q "PSNR cmodel vs ref: .* dB over 2\?[0-9]* covered pixels; ground .* dB smoke .* dB" "$tmp/b.txt" || fail "$(cat "$tmp/b.txt")"
     [ -s "$tmp/b/heat_cmodel_vs_ref.png" ] || fail "heat map missing"
-    rc=0; "$tu" render docs/scenes/water.json --engine rtl --out "$tmp/c" 2>"$tmp/err" >/dev/null || rc=$?
-    [ "$rc" = 2 ] || fail "rtl engine: exit $rc"
-    grep -q "/materials/water/procedural: water is not in the RTL noise unit" "$tmp/err" || fail "message: $(cat "$tmp/err")"
-    [ ! -e "$tmp/c" ] || fail "partial output written"
     ;;
   plan_default)
     "$tu" plan default --json --out "$tmp/cfg.sv" >"$tmp/p.json"
@@ -124,7 +120,7 @@ case $case in
     # The package lints (-Wall) as the RTL top would read it.
     cat >"$tmp/tu_cfg_user.sv" <<'SV'
 module tu_cfg_user (
-  output logic [12:0] has_o,
+  output logic [13:0] has_o,
   output logic [2:0]  wsrc_o,
   output logic [31:0] sizes_o,
   output logic [4:0]  wrap_o
@@ -132,11 +128,12 @@ module tu_cfg_user (
   assign wrap_o = tu_unit_cfg_pkg::WrapModes;
   assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasTriFilter, tu_unit_cfg_pkg::HasNearest, tu_unit_cfg_pkg::HasRelief,
                   tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax, tu_unit_cfg_pkg::HasShading, tu_unit_cfg_pkg::EllRecurrence,
-                  tu_unit_cfg_pkg::HasEwaClip, tu_unit_cfg_pkg::HasNoise, tu_unit_cfg_pkg::HasDistanceMap};
+                  tu_unit_cfg_pkg::HasEwaClip, tu_unit_cfg_pkg::HasNoise, tu_unit_cfg_pkg::HasDistanceMap,
+                  tu_unit_cfg_pkg::HasWater};
   assign wsrc_o = tu_unit_cfg_pkg::WeightSources;
   assign sizes_o = tu_unit_cfg_pkg::PomMaxLayers + tu_unit_cfg_pkg::WtabLog2N + tu_unit_cfg_pkg::Wtab2dLog2N +
                    tu_unit_cfg_pkg::PerspLanes + tu_unit_cfg_pkg::ShadeModel + tu_unit_cfg_pkg::EwaClipVariant +
-                   tu_unit_cfg_pkg::NoiseDims + tu_unit_cfg_pkg::NoiseCores;
+                   tu_unit_cfg_pkg::NoiseDims + tu_unit_cfg_pkg::NoiseCores + tu_unit_cfg_pkg::NoiseScheme;
 endmodule
 SV
     verilator --lint-only -Wall "$tmp/tu_unit_cfg_pkg.sv" "$tmp/tu_cfg_user.sv" || fail "package does not lint"
@@ -155,6 +152,24 @@ SV
     [ "$(val "$tmp/p.json" "all((float(v) if v != 'identical' else 1e9) >= d['budget']['min_psnr_db'] for kk, v in d['noise']['psnr_db_by_octaves'].items() if int(kk) == $k)")" = True ] || fail "octaves"
     grep -q "localparam bit HasNoise = 1'b1;" "$tmp/cfg.sv" || fail "HasNoise"
     grep -q "localparam int NoiseCores = $k;" "$tmp/cfg.sv" || fail "NoiseCores"
+    # No cycle budget: the pipelined scheme; a budget the octave-serial unit meets picks it (one
+    # core), one clock less keeps the pipelined unit.
+    [ "$(val "$tmp/p.json" "d['noise']['scheme']['picked']")" = pipelined ] || fail "scheme $(cat "$tmp/p.json")"
+    grep -q "localparam int NoiseScheme = 0;" "$tmp/cfg.sv" || fail "NoiseScheme 0"
+    # (the budget runs on a 48 x 36 copy of the scene: seconds)
+    python3 -c "import json; d=json.load(open('docs/scenes/procedural.json')); d['camera'].update(width=48, height=36); json.dump(d, open('$tmp/small.json', 'w'))"
+    "$tu" plan "$tmp/small.json" --json >"$tmp/ps.json"
+    read -r pipe serial < <(val "$tmp/ps.json" "'%d %d' % (d['noise']['scheme']['pipelined_cycles'], d['noise']['scheme']['octave_serial_cycles'])")
+    [ "$serial" -gt "$pipe" ] || fail "octave-serial $serial <= pipelined $pipe clocks"
+    for budget in "$serial" "$((serial - 1))"; do
+      "$tu" plan "$tmp/small.json" --max-cycles "$budget" --json --out "$tmp/cfg_b.sv" >"$tmp/pb.json"
+      want=pipelined; code=0
+      [ "$budget" = "$serial" ] && want=octave_serial && code=1
+      [ "$(val "$tmp/pb.json" "d['noise']['scheme']['picked']")" = "$want" ] || fail "budget $budget: $(cat "$tmp/pb.json")"
+      grep -q "localparam int NoiseScheme = $code;" "$tmp/cfg_b.sv" || fail "NoiseScheme at $budget"
+    done
+    rc=0; "$tu" plan "$tmp/small.json" --max-cycles -5 >/dev/null 2>"$tmp/err" || rc=$?
+    [ "$rc" != 0 ] || fail "accepted a negative cycle budget"
     ;;
   plan_corridor)
     "$tu" plan docs/scenes/corridor.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"

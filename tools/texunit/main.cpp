@@ -448,6 +448,9 @@ int main(int argc, char** argv) {
   pln->add_option("--out", po.out_sv, "write the RTL configuration package (tu_unit_cfg_pkg) here");
   pln->add_option("--out-full", po.out_full_sv, "write the full unit's configuration package here");
   pln->add_flag("--json", po.json, "print the plan as JSON");
+  pln->add_option("--max-cycles", po.max_cycles,
+                  "the frame's cycle budget: the octave-serial noise unit when it meets it (0: none, the pipelined unit)")
+      ->check(CLI::NonNegativeNumber);
 
   tu::cli::RenderArgs render_args;
   auto* rnd = tu::cli::add_render(app, render_args);

@@ -314,6 +314,7 @@ struct NoisePlan {
   std::vector<std::string> materials;
   json psnr_by_octaves = json::object();
   std::vector<bool> objects;  // per object: procedural
+  std::vector<bool> water_objects;  // per object: water (the noise unit's three-pass pixels)
 };
 NoisePlan plan_noise(const scene::Scene& s) {
   NoisePlan p;
@@ -325,7 +326,11 @@ NoisePlan plan_noise(const scene::Scene& s) {
       if (m.procedural->speed != 0) p.dims = 3;
       p.water = p.water || m.procedural->kind == scene::ProceduralKind::Water;
     }
-  for (const auto& o : s.objects) p.objects.push_back(s.materials.at(o.material).procedural.has_value());
+  for (const auto& o : s.objects) {
+    const auto& pr = s.materials.at(o.material).procedural;
+    p.objects.push_back(pr.has_value());
+    p.water_objects.push_back(pr && pr->kind == scene::ProceduralKind::Water);
+  }
   if (p.materials.empty()) return p;
   p.on = true;
   const auto procedural = [&](int object) { return p.objects.at(static_cast<size_t>(object)); };
@@ -355,6 +360,8 @@ struct Config {
   int clip_variant = 0;   // their clip volume: ewa::kRtlClipVariants code
   bool noise = false;  // noise unit (tu_noise_unit) for procedural materials
   int noise_dims = 3, noise_cores = tu::fmt::kNoiseOctaves;
+  bool water = true;  // the noise unit's water back-end (tu_noise_unit HasWater)
+  int noise_scheme = 0;  // 0 pipelined, 1 octave-serial (tu_noise_unit Serial)
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -389,6 +396,8 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam bit HasNoise = 1'b" << c.noise << ";  // noise unit (tu_noise_unit): procedural materials\n"
      << "  localparam int NoiseDims = " << c.noise_dims << ";  // 2: no material with time, 3: with\n"
      << "  localparam int NoiseCores = " << c.noise_cores << ";  // octave cores: the largest octave count\n"
+     << "  localparam bit HasWater = 1'b" << c.water << ";  // water back-end of the noise unit (normal, Lambert)\n"
+     << "  localparam int NoiseScheme = " << c.noise_scheme << ";  // 0 pipelined (NoiseCores cores), 1 octave-serial (one core)\n"
      << "endpackage\n";
   return sv.str();
 }
@@ -397,7 +406,8 @@ std::string package(const Config& c, const std::string& origin) {
 
 uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::Filter(const scene::Material&)>& filter_of,
                            bool relief_stage, std::optional<scene::WeightSource> weights, bool ell_recurrence,
-                           int clip_variant, const std::vector<bool>& noise_objects, size_t* covered) {
+                           int clip_variant, const std::vector<bool>& noise_objects, size_t* covered,
+                           const std::vector<bool>& water_objects, int noise_slots) {
   scene::Scene t = scene::without_relief(s);
   t.footprint = ell_recurrence ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
   for (auto& [name, m] : t.materials) m.filter = filter_of(m);
@@ -422,10 +432,12 @@ uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::F
       c.one_level = ewa::trilinear_one_level(rec.texels == 1, static_cast<int>(std::floor(rec.lod)), top_level[obj]);
     }
     c.noise = obj < noise_objects.size() && noise_objects[obj];
+    c.water = obj < water_objects.size() && water_objects[obj];
     costs.push_back(c);
   }
   ewa::EngineParams ep;
   ep.clip_variant = clip_variant;
+  ep.noise_slots = noise_slots;
   // Noise-unit pixels (II 1) can outrun the relief stage's pass-through, which only the
   // cycle-by-cycle model of the whole unit counts (= the RTL, render --engine rtl).
   if (relief_stage && !ell_recurrence && std::find(noise_objects.begin(), noise_objects.end(), true) != noise_objects.end())
@@ -730,7 +742,8 @@ int run(const Options& opt) {
                         : clip && ewa::rtl_clip_code(clip->variant) >= 0 ? ewa::rtl_clip_code(clip->variant) : 0;
   const Config planned{has_tri, has_ewa, uses("bilinear"), uses("trilinear"), false, relief, pom, iterative, max_layers, weight_bit(weights),
                        log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1,
-                       ell_rec && has_tri, false, shading::kUnitModel, !clip_named.empty(), clip_code};
+                       ell_rec && has_tri, false, shading::kUnitModel, /*distance_map, set below*/ false,
+                       /*wrap_modes, set below*/ 31, !clip_named.empty(), clip_code};
   // The full unit: everything in, relief up to the scene format's 256 layers.
   Config planned_shaded = planned;
   planned_shaded.shading = shade;
@@ -746,6 +759,7 @@ int run(const Options& opt) {
     if (planned_shaded.wrap_modes >> k & 1) wrap_names.push_back(scene::kWrapNames[k]);
   planned_shaded.noise = noise.on;
   if (noise.on) planned_shaded.noise_dims = noise.dims, planned_shaded.noise_cores = noise.cores;
+  planned_shaded.water = noise.water;
   if (brdf_row) planned_shaded.shade_model = shading::model_of(brdf_row->variant);
   // The full unit: F_MSH (the thesis's model) when the scene does not need another.
   const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n,
@@ -757,8 +771,9 @@ int run(const Options& opt) {
   //    TextureUnitRtl.CyclesMatchPrediction / MixedFiltersPerSpan): the specialised and the full
   //    unit with the plan's filter per material, and the full unit as authored.
   auto scene_cycles = [&](std::function<scene::Filter(const scene::Material&)> filter_of, bool relief_stage,
-                          std::optional<scene::WeightSource> weights, bool rec) -> uint64_t {
-    return scene_stream_cycles(s, filter_of, relief_stage, weights, rec, clip_code, noise.objects);
+                          std::optional<scene::WeightSource> weights, bool rec, int noise_slots = 1) -> uint64_t {
+    return scene_stream_cycles(s, filter_of, relief_stage, weights, rec, clip_code, noise.objects, nullptr, noise.water_objects,
+                               noise_slots);
   };
   auto authored = [](const scene::Material& m) { return m.filter; };
   auto planned_filter = [&](const scene::Material& m) {
@@ -769,7 +784,26 @@ int run(const Options& opt) {
   // The shading stage (II = 1, fed one word per pixel) adds its latency once, at the end.
   const uint64_t spec_shade = shade ? static_cast<uint64_t>(brdf::shade::latency(planned_shaded.shade_model)) : 0;
   const uint64_t full_shade = static_cast<uint64_t>(brdf::shade::latency(everything.shade_model));
-  const uint64_t spec_cycles = scene_cycles(planned_filter, relief, planned_weights, planned.ell_recurrence) + spec_shade;
+  uint64_t spec_cycles = scene_cycles(planned_filter, relief, planned_weights, planned.ell_recurrence) + spec_shade;
+  // The noise scheme: the octave-serial unit (one core instead of NoiseCores, the same back-end:
+  // the smaller by construction) when the frame's clocks with it meet the budget's max_cycles,
+  // else the pipelined one (also without a cycle budget).
+  json scheme_json = nullptr;
+  if (noise.on) {
+    const uint64_t serial = scene_cycles(planned_filter, relief, planned_weights, planned.ell_recurrence, noise.cores) + spec_shade;
+    const bool pick_serial = opt.max_cycles > 0 && double(serial) <= opt.max_cycles && noise.cores > 1;
+    planned_shaded.noise_scheme = pick_serial ? 1 : 0;
+    scheme_json = {{"picked", pick_serial ? "octave_serial" : "pipelined"},
+                   {"max_cycles", opt.max_cycles > 0 ? json(opt.max_cycles) : json("none (plan --max-cycles)")},
+                   {"pipelined_cycles", spec_cycles},
+                   {"octave_serial_cycles", serial},
+                   {"cores", {{"pipelined", noise.cores}, {"octave_serial", 1}}},
+                   {"why", opt.max_cycles <= 0 ? "no cycle budget: the fastest"
+                           : pick_serial ? "the octave-serial unit meets max_cycles with one core"
+                           : double(spec_cycles) <= opt.max_cycles ? "only the pipelined unit meets max_cycles"
+                                                                        : "no scheme meets max_cycles: the fastest"}};
+    if (pick_serial) spec_cycles = serial;
+  }
   const uint64_t full_cycles = scene_cycles(planned_filter, true, planned_weights, false) + full_shade;  // the same picture
   const uint64_t authored_cycles = scene_cycles(authored, true, std::nullopt, false) + full_shade;
 
@@ -790,11 +824,13 @@ int run(const Options& opt) {
                                 : json(false)},
               {"wrap_modes", wrap_names},
               {"noise", noise.on ? json({{"materials", noise.materials}, {"dims", noise.dims}, {"octave_cores", noise.cores},
-                                         {"scheme", "pipelined (one pixel per clock; the top has no octave-serial noise unit)"},
+                                         {"scheme", scheme_json},
                                          {"latency_cycles", tu::fmt::kNoiseUnitLatency},
+                                         {"water", noise.water ? json({{"latency_cycles", tu::fmt::kNoiseWaterLatency},
+                                                                       {"clocks_per_pixel", tu::fmt::kWaterPasses}})
+                                                               : json(false)},
                                          {"psnr_db_by_octaves", noise.psnr_by_octaves},
-                                         {"psnr_source", "C-model render, octaves capped at K, vs the float reference, procedural pixels"},
-                                         {"rtl_has_every_kind", !noise.water}})
+                                         {"psnr_source", "C-model render, octaves capped at K, vs the float reference, procedural pixels"}})
                                  : json(false)},
               {"persp", persp->name()},
               {"weights", weights ? json(weights->name()) : json(nullptr)},
@@ -858,9 +894,12 @@ int run(const Options& opt) {
   std::printf("persp: %s, max %.4g texel\n", persp->name().c_str(), persp->max_abs);
   std::printf("shading: %s\n", shade ? (brdf_row->name() + ", " + shade_why).c_str() : shade_why.c_str());
   if (noise.on)
-    std::printf("noise unit: %d-D, %d octave cores (pipelined, latency %d), the fewest meeting %g dB on the procedural "
-                "pixels: %s%s\n", noise.dims, noise.cores, tu::fmt::kNoiseUnitLatency, s.budget.min_psnr_db,
-                noise.psnr_by_octaves.dump().c_str(), noise.water ? "; water is not in the RTL noise unit" : "");
+    std::printf("noise unit: %d-D, %d octaves (latency %d), the fewest meeting %g dB on the procedural "
+                "pixels: %s%s\n  scheme %s (%s): %s clocks pipelined, %s octave-serial\n", noise.dims, noise.cores,
+                tu::fmt::kNoiseUnitLatency, s.budget.min_psnr_db, noise.psnr_by_octaves.dump().c_str(),
+                noise.water ? "; with the water back-end (3 octave sums per water pixel)" : "",
+                scheme_json["picked"].get<std::string>().c_str(), scheme_json["why"].get<std::string>().c_str(),
+                scheme_json["pipelined_cycles"].dump().c_str(), scheme_json["octave_serial_cycles"].dump().c_str());
   else
     std::printf("noise unit: none (no procedural material)\n");
   if (weights) std::printf("weights: %s, %.2f dB (%s); clip volume: %s, %.2f dB (C-model EWA render with border "

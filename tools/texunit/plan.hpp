@@ -24,6 +24,9 @@ struct Options {
   std::string out_sv;                            // SystemVerilog package; empty: none
   std::string out_full_sv;                       // the same for the full unit (area comparison)
   bool json = false;
+  // The frame's cycle budget on the planned unit (0: none): the noise scheme (octave-serial when
+  // it meets the budget, docs/blocks/noise.md §5 "Plan").
+  double max_cycles = 0;
 };
 
 // Thrown when no variant meets the budget; the message names the budget field.
@@ -42,6 +45,7 @@ int run(const Options& opt);
 uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::Filter(const scene::Material&)>& filter_of,
                              bool relief_stage, std::optional<scene::WeightSource> weights = std::nullopt,
                              bool ell_recurrence = false, int clip_variant = 0,
-                             const std::vector<bool>& noise_objects = {}, size_t* covered = nullptr);
+                             const std::vector<bool>& noise_objects = {}, size_t* covered = nullptr,
+                             const std::vector<bool>& water_objects = {}, int noise_slots = 1);
 
 }  // namespace tu::plan

@@ -42,15 +42,17 @@ int walk_cycles(const PixelCost& c, const EngineParams& p) {
 
 StreamModel::Times StreamModel::add(const PixelCost& c, uint64_t avail) {
   // An engine switch waits for the other engine's last output.
-  const bool other = last_noise_ != c.noise || (!c.noise && last_engine_ != c.engine);
+  const bool other = last_noise_ != c.noise || (c.noise ? last_water_ != c.water : last_engine_ != c.engine);
   const uint64_t drained = any_ && other ? last_out_ + 1 : 0;
   const uint64_t ready = std::max(drained, avail);
   uint64_t a = 0;
   if (c.noise) {
-    a = std::max(noise_free_, ready);
-    last_out_ = a + static_cast<uint64_t>(fmt::kNoiseUnitLatency);
+    const int issues = (c.water ? fmt::kWaterPasses : 1) * p_.noise_slots;
+    a = std::max(noise_free_, ready) + static_cast<uint64_t>(issues - 1);  // the last issue (the pixel's acceptance)
+    last_out_ = a + static_cast<uint64_t>(c.water ? fmt::kNoiseWaterLatency : fmt::kNoiseUnitLatency);
     noise_free_ = a + 1;
     any_ = last_noise_ = true;
+    last_water_ = c.water;
     return {a, last_out_};
   }
   last_noise_ = false;

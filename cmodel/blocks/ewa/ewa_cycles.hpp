@@ -27,6 +27,7 @@ struct EngineParams {
   int sqrt_step = 4;
   int root_w = 16;  // radicand root bits (tu_ewa_setup RootW)
   int clip_variant = 0;  // tu_ewa ClipVariant (kRtlClipVariants index): the border pipeline's latency
+  int noise_slots = 1;   // tu_noise_unit issue clocks per octave sum: 1 pipelined, NoiseCores octave-serial
 };
 
 // The clip-volume variants tu_ewa_border has (its ClipVariant codes 0, 1, 2), by C-model name
@@ -50,6 +51,7 @@ struct PixelCost {
   bool one_level = false;  // trilinear: one bilinear pass (B1 guard, or the lod at the top level)
   bool clip = false;       // EWA with sub-texel border weights (the grown box is in `box`)
   bool noise = false;      // procedural: the noise unit (tu_noise_unit), not `engine`
+  bool water = false;      // noise: a water pixel (WaterPasses octave sums, NoiseWaterLatency)
 };
 
 // Per-pixel counts of the C model's result.
@@ -65,9 +67,12 @@ int walk_cycles(const PixelCost& c, const EngineParams& p = {});  // hand-over t
 // Pixels for the bilinear engine: accepted at a, output at a + 6, accepts again at a + 7; for the
 // trilinear engine: output at a + 15 (one pass: a + 8), accepts again the clock after; for the
 // nearest engine: output at a + 3, accepts again at a + 4; for the noise unit (pipelined): output at
-// a + NoiseUnitLatency, accepts again at a + 1. The engines (the noise unit one of them)
-// take turns, so the first pixel after a switch is accepted the cycle after the other engine's
-// last output (tu_texture_unit).
+// a + NoiseUnitLatency, accepts again at a + 1; a water pixel issues its WaterPasses octave sums
+// on the clocks f, f + 1, f + 2 (accepted at a = f + 2), output at a + NoiseWaterLatency, the
+// next pass at a + 1. The octave-serial noise unit issues each sum's octaves on noise_slots
+// clocks: a pixel is accepted at f + passes noise_slots - 1. The engines (the noise unit one of them, its water pixels a kind of their
+// own) take turns, so the first pixel after a switch is accepted the cycle after the other
+// engine's last output (tu_texture_unit, tu_noise_unit).
 uint64_t stream_cycles(const std::vector<PixelCost>& px, uint64_t first_arrival = 0,
                        const EngineParams& p = {});
 
@@ -85,7 +90,7 @@ class StreamModel {
  private:
   EngineParams p_;
   uint64_t setup_free_ = 0, walker_free_ = 0, bil_free_ = 0, tri_free_ = 0, nst_free_ = 0, noise_free_ = 0, last_out_ = 0;
-  bool any_ = false, last_noise_ = false;
+  bool any_ = false, last_noise_ = false, last_water_ = false;
   Engine last_engine_ = Engine::Ewa;
 };
 

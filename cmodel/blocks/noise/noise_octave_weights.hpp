@@ -25,7 +25,7 @@
 namespace tu::noise {
 
 // Formats of the procedural path (docs/blocks/noise.md §5): the ones the RTL noise unit
-// (rtl/noise/tu_noise_unit.sv) shares are in formats.hpp; water's stay here (C model only).
+// (rtl/noise/tu_noise_unit.sv) shares are in formats.hpp (water's too); named here for the C model.
 namespace pfmt {
 inline constexpr int kNoiseFreqF = fmt::kNoiseFreqF;  // frequency f / W, lattice cells per texel: fraction bits
 inline constexpr int kNoiseFreqW = fmt::kNoiseFreqW;  // frequency code: unsigned (f / W < 256)
@@ -34,8 +34,8 @@ inline constexpr int kNoiseWeightW = fmt::kNoiseWeightW;  // octave weight in [0
 static_assert(kNoiseWeightW == kNoiseLodF + 1, "a weight holds exactly 1");
 inline constexpr int kNoiseGainF = fmt::kNoiseGainF;  // smoke opacity gain: fraction bits
 inline constexpr int kNoiseGainW = fmt::kNoiseGainW;  // smoke opacity gain code: unsigned (gain < 256)
-inline constexpr int kWaterAmpF = 8;    // water height amplitude a: fraction bits
-inline constexpr int kWaterAmpW = 13;   // water amplitude code: unsigned (a < 32; |n|^2 stays < 2^55)
+inline constexpr int kWaterAmpF = fmt::kWaterAmpF;  // water height amplitude a: fraction bits
+inline constexpr int kWaterAmpW = fmt::kWaterAmpW;  // water amplitude code: unsigned (a < 32)
 }  // namespace pfmt
 
 using OctaveWeights = std::array<uint32_t, fmt::kNoiseOctaves>;  // u(NoiseWeightW).NoiseLodF

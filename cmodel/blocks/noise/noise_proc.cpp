@@ -92,7 +92,7 @@ int64_t weighted_sum(const ProcCodes& c, int64_t x, int64_t y, const OctaveWeigh
   return acc;
 }
 
-// floor(sqrt(n)) exactly, n < 2^62.
+// floor(sqrt(n)) exactly, n < 2^62 (the RTL: tu_isqrt_pipe).
 int64_t isqrt(int64_t n) {
   auto r = static_cast<int64_t>(std::sqrt(static_cast<double>(n)));
   while (r > 0 && r * r > n) --r;
@@ -100,16 +100,23 @@ int64_t isqrt(int64_t n) {
   return r;
 }
 
-// Water: Lambert of the normal (-a dP/dx, -a dP/dy, 1), dP by forward differences over
-// kWaterStep cells (codes: 2^-8 cells = 2^8 ULP of s32.16).
-uint32_t water_shade(const ProcCodes& c, int64_t x, int64_t y, const OctaveWeights& w) {
+// Water's slopes -a dP/dx, -a dP/dy (kWaterF fraction bits, before the saturation), dP by forward
+// differences over 2^-8 cells (codes: 2^kWaterStepCode ULP of s32.16).
+std::array<int64_t, 2> water_slopes(const ProcCodes& c, int64_t x, int64_t y, const OctaveWeights& w) {
   const int64_t p0 = weighted_sum(c, x, y, w);
   const int64_t dx = weighted_sum(c, wrap32(x + (int64_t(1) << kWaterStepCode)), y, w) - p0;
   const int64_t dy = weighted_sum(c, x, wrap32(y + (int64_t(1) << kWaterStepCode)), w) - p0;
   // Slopes dP/dx = d 2^(kWaterStepLog2 - kAccF); g = -a slope with kWaterF fraction bits.
   constexpr int kShift = fmt::kNoiseTF - kWaterStepCode;  // 2^-8 cells: the step in the slope
   static_assert(kAccF - kShift + pfmt::kWaterAmpF == kWaterF, "g carries kWaterF fraction bits");
-  const int64_t gx = -int64_t(c.amp) * dx, gy = -int64_t(c.amp) * dy;
+  return {-int64_t(c.amp) * dx, -int64_t(c.amp) * dy};
+}
+
+// Water: Lambert of the normal (-a dP/dx, -a dP/dy, 1).
+uint32_t water_shade(const ProcCodes& c, int64_t x, int64_t y, const OctaveWeights& w) {
+  const auto g = water_slopes(c, x, y, w);
+  auto slope = [](int64_t v) { return std::clamp(v, -kWaterSlopeMax, kWaterSlopeMax); };
+  const int64_t gx = slope(g[0]), gy = slope(g[1]);
   const int64_t one = int64_t(1) << kWaterF;
   const int64_t len = isqrt(gx * gx + gy * gy + one * one);  // kWaterF fraction bits, floor
   const int64_t dot = gx * c.light[0] + gy * c.light[1] + one * c.light[2];  // kWaterF + NoiseTF bits
@@ -117,6 +124,11 @@ uint32_t water_shade(const ProcCodes& c, int64_t x, int64_t y, const OctaveWeigh
   return clamp_unit((dot + len / 2) / len);  // NoiseTF bits, round half up
 }
 }  // namespace
+
+std::array<int64_t, 2> water_slopes_fx(const ProcCodes& c, int64_t u, int64_t v, int32_t lrho) {
+  return water_slopes(c, coord_code(u, c.freq, c.sx), coord_code(v, c.freq, c.sy),
+                      octave_weights_fx(lrho, c.lfreq, c.octaves, c.limit));
+}
 
 uint32_t proc_value_fx(const ProcCodes& c, int64_t u, int64_t v, int32_t lrho) {
   const int64_t x = coord_code(u, c.freq, c.sx), y = coord_code(v, c.freq, c.sy);

@@ -24,9 +24,10 @@
 //   value    u17.16: acc C_K + 1/2 (fbm) or 2 acc C_K (smoke), round half up, clamp (guard);
 //            C_K = norm_code(dims, K), u0.18, = NoiseNorm2/3 at K = NoiseOctaves;
 //   opacity  (turb - thr) gain: thr u17.16, gain u16.8, round half up, clamp to [0, 1];
-//   water    slopes from exact sums: g = -a dP s(.)kWaterF (a u8.8), |n|^2 exact in int64, |n| =
-//            floor(isqrt) kWaterF bits, n.L with L u.16 (normalised by the host), value =
-//            round_half_up(n.L / |n|), clamp (0 when n.L <= 0)
+//   water    slopes from exact sums: g = -a dP s(WaterSlopeW).kWaterF (a u5.8), saturated to
+//            +-kWaterSlopeMax (guard), |n|^2 exact (< 2^62), |n| = floor(isqrt) kWaterF bits, n.L
+//            with L s.16 (normalised by the host), value = floor((n.L + floor(|n|/2)) / |n|) (round
+//            half up), clamp to 1 (0 when n.L <= 0)
 //   colour   (c0 2^16 + value (c1 - c0) + 2^15) >> 16 per channel (8 bits, exact floor).
 // With every weight 1 the fbm value equals fbm_fx's sum normalised with C_K (bit for bit).
 // Error against proc_ref: the noise core's bound per octave (docs/blocks/noise.md §3) plus the
@@ -47,9 +48,13 @@ namespace tu::noise {
 inline constexpr double kMeanAbs2 = 0.2074, kMeanAbs3 = 0.2206;
 
 // Water's finite-difference step 2^-8 cells = 2^kWaterStepCode codes of s32.16, and the slope
-// format: g = -a dP carries kAccF - (NoiseTF - kWaterStepCode) + WaterAmpF fraction bits.
-inline constexpr int kWaterStepCode = 8;
-inline constexpr int kWaterF = 19 - (16 - kWaterStepCode) + 8;
+// format: g = -a dP carries kAccF - (NoiseTF - kWaterStepCode) + WaterAmpF fraction bits
+// (formats.hpp WaterStepCode, WaterSlopeF: shared with the RTL noise unit).
+inline constexpr int kWaterStepCode = fmt::kWaterStepCode;
+inline constexpr int kWaterF = fmt::kWaterSlopeF;
+// The slope's saturation (guard): |g| <= kWaterSlopeMax, i.e. |a dP/dx| < 2^11, far above what the
+// noise reaches (|dP/dx| <= K max|grad noise|, a < 32); it keeps |n|^2 < 2^62 (the RTL's root width).
+inline constexpr int64_t kWaterSlopeMax = (int64_t(1) << (fmt::kWaterSlopeW - 1)) - 1;
 
 struct ProcParams {  // the float description (the scene's material, in noise units)
   bool smoke = false;
@@ -96,6 +101,9 @@ inline constexpr int32_t kNoFootprint = int32_t(1) << 24;
 // The value u17.16 in [0, 1] at B1's (u, v) codes with B2's lrho (s18.10).
 uint32_t proc_value_fx(const ProcCodes& c, int64_t u, int64_t v, int32_t lrho);
 img::Rgba8 proc_color_fx(const ProcCodes& c, uint32_t value);
+// Water's slopes (-a dP/dx, -a dP/dy) at B1's (u, v) with lrho, kWaterF fraction bits, before
+// the saturation to +-kWaterSlopeMax (NoiseProc.WaterSlopesStayFarBelowTheSaturation).
+std::array<int64_t, 2> water_slopes_fx(const ProcCodes& c, int64_t u, int64_t v, int32_t lrho);
 
 // Float reference: u, v in level-0 texels, lrho = log2 rho in texels (GL rule).
 double proc_value_ref(const ProcParams& p, double u, double v, double lrho);

@@ -62,6 +62,18 @@
   X(NoiseGainF, 8, "smoke opacity gain: fraction bits")                                         \
   X(NoiseGainW, 16, "smoke opacity gain code: unsigned (gain < 256)")                           \
   X(NoiseUnitLatency, kNoiseCoreLatency + 3, "tu_noise_unit pipelined: coords, cores, sum, value") \
+  /* Water in the noise unit: three octave sums per pixel, normal, Lambert (docs/blocks/noise.md §5) */ \
+  X(WaterAmpF, 8, "water height amplitude a (cells): fraction bits")                            \
+  X(WaterAmpW, 13, "water amplitude code: unsigned (a < 32)")                                   \
+  X(WaterStepCode, 8, "finite-difference step 2^-8 cells = 2^WaterStepCode codes of s32.16")    \
+  X(WaterSlopeF, kNoiseTF + kNoiseOctaves - 1 - (kNoiseTF - kWaterStepCode) + kWaterAmpF,        \
+    "slope g = -a dP/dx: fraction bits (exact product of the amplitude and the sum difference)") \
+  X(WaterSlopeW, 31, "slope g: signed, saturated to |g| < 2^(WaterSlopeW-1-WaterSlopeF) (guard)") \
+  X(WaterLightW, kNoiseTF + 2, "unit light component: signed, NoiseTF fraction bits")          \
+  X(WaterQuoW, kNoiseTF + 1, "shade quotient n.L / |n|: unsigned, NoiseTF fraction bits (< 2)") \
+  X(WaterPasses, 3, "octave sums per water pixel: P(x, y), P(x + h, y), P(x, y + h)")          \
+  X(NoiseWaterLatency, kNoiseUnitLatency - 1 + 2 + kWaterSlopeW + kWaterQuoW + 1,                 \
+    "tu_noise_unit water, from the last pass: front, slopes, |n|^2 and n.L, isqrt, divide, colour") \
   /* Gaussian pixel model: clip volume, weight, weight tables (docs/blocks/gaussian.md) */      \
   X(ClipInW, 13, "clip distance d: signed, ClipInF fraction bits; domain [-0.5, 0.5], clamped")  \
   X(ClipInF, 12, "")                                                                            \

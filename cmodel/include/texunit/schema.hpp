@@ -106,7 +106,12 @@
   X(thr, kNoiseOutW, "smoke threshold, u17.16")                              \
   X(gain, kNoiseGainW, "smoke gain, NoiseGainF bits")                        \
   X(c0, 24, "colour at value 0, {b, g, r}")                                  \
-  X(c1, 24, "colour at value 1, {b, g, r}")
+  X(c1, 24, "colour at value 1, {b, g, r}")                                  \
+  X(water, 1, "water: Lambert of the finite-difference normal (three sums)") \
+  X(amp, kWaterAmpW, "water amplitude a, WaterAmpF bits")                   \
+  X(lx, kWaterLightW, "water unit light x (along u), s.NoiseTF")            \
+  X(ly, kWaterLightW, "water unit light y, s.NoiseTF")                      \
+  X(lz, kWaterLightW, "water unit light z (the normal), s.NoiseTF")
 // A pixel on its way to the filter: position, B1 span set-up overflow, material.
 #define TU_REC_FPIX(X)                       \
   X(x, kPerspXyW, "pixel x")                 \

@@ -28,4 +28,6 @@ package tu_unit_cfg_pkg;
   localparam bit HasNoise = 1'b0;  // noise unit (tu_noise_unit): procedural materials
   localparam int NoiseDims = 3;  // 2: no material with time, 3: with
   localparam int NoiseCores = 4;  // octave cores: the largest octave count
+  localparam bit HasWater = 1'b0;  // water back-end of the noise unit (normal, Lambert)
+  localparam int NoiseScheme = 0;  // 0 pipelined (NoiseCores cores), 1 octave-serial (one core)
 endpackage
