@@ -368,6 +368,33 @@ TEST(TextureUnitRtl, BorderWeightsEqualCModelWithCyclesPredicted) {
   }
 }
 
+// The other clip volumes of the border weights (EwaClipVariant 1 = mm_p3 Horner, 2 = mm_p3 Estrin,
+// ewa::kRtlClipVariants): every pixel == render_cmodel with 30 % stalls, stall-free cycles =
+// ewa::texture_unit_cycles with their longer border pipelines. Their units are verilated only with
+// -DTU_COSIM_CLIP_VARIANTS=ON (scripts/cosim_clip_variants.sh); without, render_rtl refuses them
+// by name instead of running the mm_p1 unit.
+TEST(TextureUnitRtl, ClipVariantsEqualCModel) {
+  for (const char* v : {"mm_p3", "mm_p3_estrin"}) {
+    cosim::RtlRenderOptions o;
+    o.clip_variant = v;
+    const auto s = scene::with_clip(small_scene(), v);
+#if TU_COSIM_CLIP_VARIANTS
+    const auto q = render_checked(s, o);
+    std::printf("border weights (%s, EwaClipVariant %d, border latency %d): %zu px, %llu cycles = predicted %llu\n", v,
+                ewa::rtl_clip_code(v), ewa::border_latency(ewa::rtl_clip_code(v)), q.frame.pixels.size(),
+                (unsigned long long)q.cycles, (unsigned long long)q.predicted_cycles);
+#else
+    try {
+      cosim::render_rtl(s, o);
+      ADD_FAILURE() << v << " ran on the mm_p1 unit";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("clip volume " + std::string(v) + " (EwaClipVariant"), std::string::npos)
+          << e.what();
+    }
+#endif
+  }
+}
+
 // docs/scenes/corridor.json on its planned unit (`texunit plan docs/scenes/corridor.json`: EWA with
 // the 1-D weight table on every material, iterative parallax, no POM march;
 // Vtu_texture_unit_sim_corridor): every pixel ==

@@ -11,6 +11,10 @@
 #include "Vtu_texture_unit_sim_bil.h"
 #include "Vtu_texture_unit_sim_corridor.h"
 #include "Vtu_texture_unit_sim_rec.h"
+#if TU_COSIM_CLIP_VARIANTS
+#include "Vtu_texture_unit_sim_clip1.h"
+#include "Vtu_texture_unit_sim_clip2.h"
+#endif
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "harness.hpp"
@@ -406,6 +410,22 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     Harness<Vtu_texture_unit_sim_rec> hs(drive<Vtu_texture_unit_sim_rec>, sample<Vtu_texture_unit_sim_rec>,
                                          [&](Vtu_texture_unit_sim_rec& d, const std::function<void()>& t) { init(d, t); });
     rr = hs.run(spans, ro, fanout);
+  } else if (o.has_ewa && ep.clip_variant != 0) {
+#if TU_COSIM_CLIP_VARIANTS
+    if (ep.clip_variant == 1) {
+      Harness<Vtu_texture_unit_sim_clip1> hs(drive<Vtu_texture_unit_sim_clip1>, sample<Vtu_texture_unit_sim_clip1>,
+                                             [&](Vtu_texture_unit_sim_clip1& d, const std::function<void()>& t) { init(d, t); });
+      rr = hs.run(spans, ro, fanout);
+    } else {
+      Harness<Vtu_texture_unit_sim_clip2> hs(drive<Vtu_texture_unit_sim_clip2>, sample<Vtu_texture_unit_sim_clip2>,
+                                             [&](Vtu_texture_unit_sim_clip2& d, const std::function<void()>& t) { init(d, t); });
+      rr = hs.run(spans, ro, fanout);
+    }
+#else
+    throw std::invalid_argument("render_rtl: the unit with clip volume " + o.clip_variant +
+                                " (EwaClipVariant " + std::to_string(ep.clip_variant) +
+                                ") is verilated only with -DTU_COSIM_CLIP_VARIANTS=ON (scripts/cosim_clip_variants.sh)");
+#endif
   } else if (o.has_ewa) {
     Harness<Vtu_texture_unit_sim> hs(drive<Vtu_texture_unit_sim>, sample<Vtu_texture_unit_sim>,
                                      [&](Vtu_texture_unit_sim& d, const std::function<void()>& t) { init(d, t); });
