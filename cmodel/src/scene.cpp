@@ -1,6 +1,7 @@
 #include "texunit/scene.hpp"
 
 #include "gauss/clip.hpp"
+#include "texture/texel_format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -248,6 +249,10 @@ TextureSpec parse_texture(Node n, const std::string& name, const std::string& ba
     return static_cast<tex::Wrap>(std::find(modes.begin(), modes.end(), m) - modes.begin());
   };
   const tex::Wrap both = wrap_of("wrap", tex::Wrap::Repeat);
+  const std::vector<std::string> formats(std::begin(tex::kTexelFormatNames), std::end(tex::kTexelFormatNames));
+  const std::string fm = n.str("format", std::string("rgba8"), formats);
+  t.format = static_cast<int>(std::find(formats.begin(), formats.end(), fm) - formats.begin());
+  t.srgb = n.has("srgb") ? n.boolean("srgb") : false;
   t.addressing.u = wrap_of("wrap_u", both);
   t.addressing.v = wrap_of("wrap_v", both);
   if (n.has("border")) {
@@ -587,10 +592,11 @@ tex::Texture build_texture(const Scene& s, const std::string& name) {
   const TextureSpec& t = it->second;
   const std::string where = s.source + ": /textures/" + name;
   try {
+    const auto f = static_cast<tex::TexelFormat>(t.format);  // converted on load (texel_format.hpp)
     if (t.builtin == "checkerboard")
-      return tex::Texture::build(where, tex::checkerboard(t.size, t.cells), t.addressing);
-    if (t.builtin == "bricks") return tex::Texture::build(where, tex::bricks(t.size).color, t.addressing);
-    return tex::Texture::build(where + " (" + t.png + ")", img::read_png_rgba(t.png), t.addressing);
+      return tex::build_stored(where, tex::checkerboard(t.size, t.cells), t.addressing, f, t.srgb);
+    if (t.builtin == "bricks") return tex::build_stored(where, tex::bricks(t.size).color, t.addressing, f, t.srgb);
+    return tex::build_stored(where + " (" + t.png + ")", img::read_png_rgba(t.png), t.addressing, f, t.srgb);
   } catch (const std::invalid_argument& e) {
     throw SceneError(e.what());
   } catch (const std::runtime_error& e) {

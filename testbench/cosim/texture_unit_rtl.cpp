@@ -159,6 +159,12 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       throw std::invalid_argument(s.source + ": /materials/" + name +
                                   "/relief/method: the corridor unit's relief stage has the iterative engine only");
   }
+  // Stored formats other than rgba8 need the texel decode stage the RTL does not have yet.
+  for (const auto& [name, t] : s.textures)
+    if (t.format != 0 || t.srgb)
+      throw std::invalid_argument(s.source + ": /textures/" + name + (t.srgb ? "/srgb" : "/format") +
+                                  ": the RTL unit reads rgba8 texels only (no texel decode stage yet); render it "
+                                  "with --engine cmodel or ref");
   if (o.relief && !o.has_ewa)
     throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
   // The noise unit (HasNoise, with HasWater) is in the full unit: fbm, smoke and water.

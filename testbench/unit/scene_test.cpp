@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "texture/texel_format.hpp"
 #include "texunit/scene.hpp"
 
 namespace {
@@ -103,6 +104,31 @@ TEST(Scene, LodStateFields) {
             "s.json: /materials/ground/max_level: value -1 is out of range [0, 1000]");
   EXPECT_EQ(error_of(edited(from, from + ", \"base_level\": 1.5")),
             "s.json: /materials/ground/base_level: expected an integer");
+}
+
+// Texture storage format and sRGB: converted on load (texture/texel_format.hpp).
+TEST(Scene, TextureFormatAndSrgb) {
+  EXPECT_EQ(default_scene().textures.at("checker").format, 0);
+  const std::string from = "\"checker\": {\"builtin\": \"checkerboard\", \"size\": 256, \"cells\": 8, \"wrap\": \"repeat\"";
+  const Scene s = parse(edited(from, from + ", \"format\": \"rgb565\", \"srgb\": true"), "s.json", ".");
+  EXPECT_EQ(s.textures.at("checker").format, static_cast<int>(tu::tex::TexelFormat::Rgb565));
+  EXPECT_TRUE(s.textures.at("checker").srgb);
+  const auto t = build_texture(s, "checker");
+  const auto plain = build_texture(default_scene(), "checker");
+  const auto& lin = tu::tex::srgb_decode_table();
+  ASSERT_EQ(t.levels.size(), plain.levels.size());
+  for (size_t k = 0; k < t.levels[0].px.size(); ++k) {  // every base texel: the rgb565 code, decoded to linear
+    const auto& p = plain.levels[0].px[k];
+    const auto& q = t.levels[0].px[k];
+    const auto d = tu::tex::decode_texel(tu::tex::TexelFormat::Rgb565, tu::tex::encode_texel(tu::tex::TexelFormat::Rgb565, p));
+    EXPECT_EQ(q.r, lin[d.r]);
+    EXPECT_EQ(q.g, lin[d.g]);
+    EXPECT_EQ(q.b, lin[d.b]);
+    EXPECT_EQ(q.a, 255);
+  }
+  EXPECT_EQ(error_of(edited(from, from + ", \"format\": \"bc1\"")),
+            "s.json: /textures/checker/format: 'bc1' is not one of: rgba8, rgb565, rgba5551, rgba4444, l8, la8, a8");
+  EXPECT_EQ(error_of(edited(from, from + ", \"srgb\": 1")), "s.json: /textures/checker/srgb: expected true or false");
 }
 
 // The B2 variant: "footprint" (default analytic), one of analytic | recurrence.
