@@ -6,6 +6,7 @@
 #include <array>
 #include <map>
 #include <stdexcept>
+#include <type_traits>
 
 #include "Vtu_texture_unit_sim.h"
 #include "Vtu_texture_unit_sim_bil.h"
@@ -406,26 +407,23 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     d.ram_we_i = 0;
     d.ram_sel_i = 0;
   };
+  // Every Verilated variant of the unit (parameters differ, ports equal) runs through one harness.
+  auto run_unit = [&](auto model) {
+    using V = typename decltype(model)::type;
+    Harness<V> hs(drive<V>, sample<V>, [&](V& d, const std::function<void()>& t) { init(d, t); });
+    rr = hs.run(spans, ro, fanout);
+  };
   if (o.corridor_unit) {
     if (!o.has_ewa) throw std::invalid_argument("render_rtl: the corridor unit has EWA (has_ewa must be set)");
-    Harness<Vtu_texture_unit_sim_corridor> hs(
-        drive<Vtu_texture_unit_sim_corridor>, sample<Vtu_texture_unit_sim_corridor>,
-        [&](Vtu_texture_unit_sim_corridor& d, const std::function<void()>& t) { init(d, t); });
-    rr = hs.run(spans, ro, fanout);
+    run_unit(std::type_identity<Vtu_texture_unit_sim_corridor>{});
   } else if (rec) {
-    Harness<Vtu_texture_unit_sim_rec> hs(drive<Vtu_texture_unit_sim_rec>, sample<Vtu_texture_unit_sim_rec>,
-                                         [&](Vtu_texture_unit_sim_rec& d, const std::function<void()>& t) { init(d, t); });
-    rr = hs.run(spans, ro, fanout);
+    run_unit(std::type_identity<Vtu_texture_unit_sim_rec>{});
   } else if (o.has_ewa && ep.clip_variant != 0) {
 #if TU_COSIM_CLIP_VARIANTS
     if (ep.clip_variant == 1) {
-      Harness<Vtu_texture_unit_sim_clip1> hs(drive<Vtu_texture_unit_sim_clip1>, sample<Vtu_texture_unit_sim_clip1>,
-                                             [&](Vtu_texture_unit_sim_clip1& d, const std::function<void()>& t) { init(d, t); });
-      rr = hs.run(spans, ro, fanout);
+      run_unit(std::type_identity<Vtu_texture_unit_sim_clip1>{});
     } else {
-      Harness<Vtu_texture_unit_sim_clip2> hs(drive<Vtu_texture_unit_sim_clip2>, sample<Vtu_texture_unit_sim_clip2>,
-                                             [&](Vtu_texture_unit_sim_clip2& d, const std::function<void()>& t) { init(d, t); });
-      rr = hs.run(spans, ro, fanout);
+      run_unit(std::type_identity<Vtu_texture_unit_sim_clip2>{});
     }
 #else
     throw std::invalid_argument("render_rtl: the unit with clip volume " + o.clip_variant +
@@ -433,13 +431,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
                                 ") is verilated only with -DTU_COSIM_CLIP_VARIANTS=ON (scripts/cosim_clip_variants.sh)");
 #endif
   } else if (o.has_ewa) {
-    Harness<Vtu_texture_unit_sim> hs(drive<Vtu_texture_unit_sim>, sample<Vtu_texture_unit_sim>,
-                                     [&](Vtu_texture_unit_sim& d, const std::function<void()>& t) { init(d, t); });
-    rr = hs.run(spans, ro, fanout);
+    run_unit(std::type_identity<Vtu_texture_unit_sim>{});
   } else {
-    Harness<Vtu_texture_unit_sim_bil> hs(drive<Vtu_texture_unit_sim_bil>, sample<Vtu_texture_unit_sim_bil>,
-                                         [&](Vtu_texture_unit_sim_bil& d, const std::function<void()>& t) { init(d, t); });
-    rr = hs.run(spans, ro, fanout);
+    run_unit(std::type_identity<Vtu_texture_unit_sim_bil>{});
   }
   RtlRender out;
   out.sim_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
