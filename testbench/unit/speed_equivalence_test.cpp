@@ -10,6 +10,8 @@
 
 #include "block.hpp"
 #include "ellipse/ellipse_fx.hpp"
+#include "ewa/ewa_fx.hpp"
+#include "gauss/clip.hpp"
 #include "persp/persp.hpp"
 #include "reciprocal/reciprocal.hpp"
 #include "texunit/render.hpp"
@@ -271,6 +273,45 @@ TEST(SpeedEquivalence, AnalyticEqualsWideDefinition) {
     const efx::Out a = efx::analytic(in), b = analytic_wide(in);
     ASSERT_TRUE(a == b) << "nux " << in.nux << " nvx " << in.nvx << " nuy " << in.nuy << " nvy " << in.nvy << " q "
                         << in.q << " dm " << in.dm << " dexp " << in.dexp;
+  }
+}
+
+// The EWA walk of the renders (ewa::fx::filter without statistics: one loop per weight source,
+// sums in locals, the level's columns and rows wrapped once) against the generic loop (taken when
+// statistics are recorded) and against reads through Texture::fetch (taken while a TexelTrace
+// records, which must see the same reads): every weight source, border weights on and off, every
+// wrap mode, the vector set's random pixels.
+TEST(SpeedEquivalence, EwaWalkFastEqualsGeneric) {
+  namespace efx = ewa::fx;
+  std::mt19937_64 rng(22);
+  std::vector<efx::In> ins;
+  for (int t = 0; t < 600; ++t) ins.push_back(efx::random_in(rng));
+  const auto base = tex::bricks(64).color;
+  for (const tex::Wrap wu : {tex::Wrap::Repeat, tex::Wrap::Mirror, tex::Wrap::Clamp, tex::Wrap::Border, tex::Wrap::MirrorOnce}) {
+    const auto tx = tex::Texture::build("t", base, tex::Addressing{wu, wu == tex::Wrap::Border ? tex::Wrap::Clamp : tex::Wrap::Border,
+                                                                   {10, 20, 30, 40}});
+    for (const auto w : {efx::Weights::Formula, efx::Weights::Table1d, efx::Weights::Table2d})
+      for (const clip::Variant* cv : {static_cast<const clip::Variant*>(nullptr), &clip::variants().front()}) {
+        const efx::Config cfg{w, 1024, cv};
+        for (const auto& in : ins) {
+          const efx::Out fast = efx::filter(in, tx, cfg);
+          efx::WalkStats st;
+          const efx::Out generic = efx::walk(efx::setup(in, tx, cfg), tx, cfg, false, &st);
+          std::vector<uint64_t> addrs;
+          efx::Out traced;
+          {
+            const tex::TexelTrace trace(&addrs, 0);
+            traced = efx::filter(in, tx, cfg);
+          }
+          for (const efx::Out* o : std::initializer_list<const efx::Out*>{&generic, &traced}) {
+            ASSERT_TRUE(fast.color.r == o->color.r && fast.color.g == o->color.g && fast.color.b == o->color.b &&
+                        fast.color.a == o->color.a && fast.level == o->level && fast.texels_visited == o->texels_visited &&
+                        fast.texels_inside == o->texels_inside && fast.capped == o->capped && fast.flags == o->flags)
+                << "u " << in.u << " v " << in.v << " weights " << int(w) << " clip " << (cv != nullptr);
+          }
+          ASSERT_EQ(addrs.size(), fast.texels_inside + ((fast.flags & efx::kNoWeight) ? 1u : 0u));
+        }
+      }
   }
 }
 

@@ -198,8 +198,9 @@ void set_f64(uint64_t af, int p, int exp_off, Out* o) {
 }
 }  // namespace
 
-ExactNum numerators_direct(const Coefs& c, int x, int y) {
-  const auto s = persp::Unit::direct(c, x, y);
+ExactNum numerators_direct(const Coefs& c, int x, int y) { return numerators_at(c, persp::Unit::direct(c, x, y)); }
+
+ExactNum numerators_at(const Coefs& c, const persp::Unit::Acc& s) {
   const i128 pu = s.pu.raw(), pv = s.pv.raw(), q = s.q.raw();
   return {c.a.raw() * q - c.g.raw() * pu, c.d.raw() * q - c.g.raw() * pv,
           c.b.raw() * q - c.h.raw() * pu, c.e.raw() * q - c.h.raw() * pv};
@@ -221,7 +222,10 @@ std::vector<ExactNum> numerators_span(const Coefs& c, int x0, int y, int n) {
   return out;
 }
 
-int64_t round_num(i128 n) { return static_cast<int64_t>(sat(rnd(n, 2 * kPF - kNF), fmt::kEllNumW)); }
+int64_t round_num(i128 n) {  // half up (floor of n + half), saturated; the same as rnd then sat
+  constexpr int d = 2 * kPF - kNF;
+  return static_cast<int64_t>(sat((n + (i128(1) << (d - 1))) >> d, fmt::kEllNumW));
+}
 
 namespace {
 // Normalise an exact value v * 2^-f to the det3 float format (truncating the magnitude).
@@ -239,6 +243,12 @@ void det_norm(i128 v, int f, int64_t* dm, int32_t* dexp) {
 }
 }  // namespace
 
+Det3 det3(const Coefs& c) {
+  Det3 d;
+  det3(c, &d.dm, &d.dexp);
+  return d;
+}
+
 void det3(const Coefs& c, int64_t* dm, int32_t* dexp) {
   const i128 a = c.a.raw(), b = c.b.raw(), cc = c.c.raw(), d = c.d.raw(), e = c.e.raw(),
              f = c.f.raw(), g = c.g.raw(), h = c.h.raw(), i = c.i.raw();
@@ -251,14 +261,19 @@ double det3_value(const In& in) {
 }
 
 In make_in(const Coefs& c, int x, int y, uint32_t laniso, uint32_t max_lod) {
-  const auto n = numerators_direct(c, x, y);
+  return make_in(c, persp::Unit::direct(c, x, y), det3(c), laniso, max_lod);
+}
+
+In make_in(const Coefs& c, const persp::Unit::Acc& s, const Det3& d, uint32_t laniso, uint32_t max_lod) {
+  const auto n = numerators_at(c, s);
   In in;
   in.nux = round_num(n.nux);
   in.nvx = round_num(n.nvx);
   in.nuy = round_num(n.nuy);
   in.nvy = round_num(n.nvy);
-  in.q = static_cast<int64_t>(persp::Unit::direct(c, x, y).q.raw());
-  det3(c, &in.dm, &in.dexp);
+  in.q = static_cast<int64_t>(s.q.raw());
+  in.dm = d.dm;
+  in.dexp = d.dexp;
   in.laniso = laniso;
   in.max_lod = max_lod;
   return in;
@@ -351,12 +366,19 @@ uint64_t isqrt_serial(u128 x) {
 }
 
 uint64_t isqrt(u128 x) {
-  // Floating-point estimate, then exact integer correction. Below 2^52 x is exact in a double
-  // and the correctly rounded root is off by at most one; above, the 64-bit long double
-  // significand keeps the estimate within a few units of the root.
+  // Floating-point estimate, then exact integer correction (the loops make any estimate exact; a
+  // close one makes them short). Below 2^52 x is exact in a double and the correctly rounded root
+  // is off by at most one; below 2^104 a double estimate is within a few units of a root < 2^52;
+  // above, the 64-bit long double significand keeps the estimate within a few units of the root.
   if (x < (u128(1) << 52)) return isqrt52(static_cast<uint64_t>(x));
-  const long double e = std::sqrt(static_cast<long double>(x));
-  uint64_t r = e >= 0x1p64L ? ~uint64_t(0) : static_cast<uint64_t>(e);
+  uint64_t r;
+  if (x < (u128(1) << 104)) {  // a double estimate (relative error ~2^-52: within a unit or two of the root)
+    const double xd = static_cast<double>(static_cast<uint64_t>(x >> 64)) * 0x1p64 + static_cast<double>(static_cast<uint64_t>(x));
+    r = static_cast<uint64_t>(std::sqrt(xd));
+  } else {
+    const long double e = std::sqrt(static_cast<long double>(x));
+    r = e >= 0x1p64L ? ~uint64_t(0) : static_cast<uint64_t>(e);
+  }
   while (u128(r) * r > x) --r;
   while (r != ~uint64_t(0) && u128(r + 1) * (r + 1) <= x) ++r;
   return r;
@@ -422,7 +444,11 @@ Out recurrence(const In& in, int64_t qg, int64_t qh) { return analytic(rec_front
 Out forward_difference(const In& in, int64_t g, int64_t h) { return recurrence(in, in.q + g, in.q + h); }
 
 Out pixel(const Coefs& c, int x, int y, uint32_t laniso, uint32_t max_lod, bool recurrence) {
-  const In in = make_in(c, x, y, laniso, max_lod);
+  return pixel(c, persp::Unit::direct(c, x, y), det3(c), laniso, max_lod, recurrence);
+}
+
+Out pixel(const Coefs& c, const persp::Unit::Acc& s, const Det3& d, uint32_t laniso, uint32_t max_lod, bool recurrence) {
+  const In in = make_in(c, s, d, laniso, max_lod);
   return recurrence ? forward_difference(in, static_cast<int64_t>(c.g.raw()), static_cast<int64_t>(c.h.raw()))
                     : analytic(in);
 }

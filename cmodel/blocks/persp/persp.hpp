@@ -282,6 +282,10 @@ class RayCaster {
  public:
   explicit RayCaster(const Camera& cam);
   bool hit(const Triangle& t, int x, int y, Hit* h) const;
+  // hit() in two parts: the unit ray direction through pixel (x, y) (d[3]), and its hit with a
+  // triangle: hit(t, x, y, h) == hit_dir(t, d, h) for d = dir(x, y) (one ray for many triangles).
+  void dir(int x, int y, double* d) const;
+  bool hit_dir(const Triangle& t, const double* d, Hit* h) const;
   // Pixel rectangle [x0, x1] x [y0, y1] (clipped to the image) outside which no pixel centre's
   // ray hits inside t: the vertices' projections plus a 2-pixel margin (far beyond rounding).
   // False when a vertex is not in front of the eye (the projection then bounds nothing).
