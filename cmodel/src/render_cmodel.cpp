@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 #include "afvis/afvis.hpp"
@@ -64,6 +67,32 @@ afvis::Relief afvis_relief(const relief::Maps& maps, const img::Gray8* trace_map
 }
 }  // namespace
 
+namespace {
+// A built-in texture (checkerboard, bricks: a pure function of its spec) is built once per process
+// and copied for each render (a copy is ~50x cheaper than the build and its mip pyramid); PNG
+// textures are read each time. The key holds every field the build reads, the source included
+// (the texture's name names it).
+tex::Texture texture_of(const scene::Scene& s, const std::string& name) {
+  const auto it = s.textures.find(name);
+  if (it == s.textures.end() || it->second.builtin.empty()) return scene::build_texture(s, name);
+  const scene::TextureSpec& t = it->second;
+  const auto& a = t.addressing;
+  const std::string key = s.source + '\n' + name + '\n' + t.builtin + ' ' + std::to_string(t.size) + ' ' +
+                          std::to_string(t.cells) + ' ' + std::to_string(int(a.u)) + ' ' + std::to_string(int(a.v)) + ' ' +
+                          std::to_string(a.border.r) + ' ' + std::to_string(a.border.g) + ' ' + std::to_string(a.border.b) +
+                          ' ' + std::to_string(a.border.a) + ' ' + std::to_string(t.format) + ' ' + std::to_string(t.srgb);
+  static std::mutex mu;
+  static std::map<std::string, std::shared_ptr<const tex::Texture>> cache;
+  {
+    const std::lock_guard<std::mutex> lock(mu);
+    if (const auto c = cache.find(key); c != cache.end()) return *c->second;
+  }
+  auto built = std::make_shared<const tex::Texture>(scene::build_texture(s, name));
+  const std::lock_guard<std::mutex> lock(mu);
+  return *cache.emplace(key, std::move(built)).first->second;
+}
+}  // namespace
+
 ewa::Engine engine_of(scene::Filter f) {
   switch (f) {
     case scene::Filter::Nearest: return ewa::Engine::Nearest;
@@ -105,7 +134,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
   std::vector<tex::Texture> texs;
   std::vector<std::vector<persp::Unit::Coefs>> coefs;
   for (size_t o = 0; o < s.objects.size(); ++o) {
-    texs.push_back(scene::build_texture(s, s.materials.at(s.objects[o].material).texture));
+    texs.push_back(texture_of(s, s.materials.at(s.objects[o].material).texture));
     coefs.push_back(setup_fx(s, o, texs.back().levels[0].width, texs.back().levels[0].height));
   }
   std::vector<std::optional<relief::Maps>> reliefs;  // per object with relief and opt.relief

@@ -152,7 +152,7 @@ void lod_unit(const Log2Table& lt, const In& in, const Ell& el, int ps, bool f_z
   const int k = std::max(0, ps - (fmt::kEllNrmW - 1));
   // After the shift sn = s >> k < 2^NrmW, and |d|, |b| <= s (|b| <= s by 2|xy| <= x^2 + y^2), so
   // |dn|, |bn| <= 2^NrmW (a floor shift of a negative value may add one): dn^2 + bn^2 <= 2^(2 NrmW
-  // + 1) < 2^52 and lam < 2^(NrmW + 2), all exact in 64 bits (EllipseFx.LodUnitRanges).
+  // + 1) < 2^52 and lam < 2^(NrmW + 2), all exact in 64 bits (SpeedEquivalence.AnalyticEqualsWideDefinition).
   static_assert(2 * fmt::kEllNrmW + 1 < 52, "isqrt52: the LOD unit's radicand is below 2^52");
   const uint64_t sn = static_cast<uint64_t>(el.s >> k);
   const int64_t dn = static_cast<int64_t>(d >> k), bn = static_cast<int64_t>(b >> k);
@@ -400,7 +400,7 @@ Out analytic(const In& in) {
   const uint64_t mq = top64(q, e, fmt::kRecipMantW);
   const uint64_t r = static_cast<uint64_t>(recip::core(recip::Mant::from_raw(static_cast<i128>(mq))).raw());
   // f = det3 / q = p * 2^(dexp - (DetW-2) - RecipOutF + PerspF - e). |dm| <= 2^(DetW-1) (s40) and
-  // R <= 2^RecipOutF (R <= 1), so |p| <= 2^63: |p| is exact in 64 bits (EllipseFx.AnalyticRanges).
+  // R <= 2^RecipOutF (R <= 1), so |p| <= 2^63: |p| is exact in 64 bits (SpeedEquivalence.AnalyticEqualsWideDefinition).
   static_assert(fmt::kEllDetW - 1 + fmt::kRecipOutF <= 63, "|dm| R fits 64 bits");
   const int off = in.dexp - (fmt::kEllDetW - 2) - fmt::kRecipOutF + kPF - e;
   const uint64_t ap = (in.dm < 0 ? uint64_t(0) - static_cast<uint64_t>(in.dm) : static_cast<uint64_t>(in.dm)) * r;
