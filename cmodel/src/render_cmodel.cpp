@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 #include "afvis/afvis.hpp"
@@ -64,6 +67,32 @@ afvis::Relief afvis_relief(const relief::Maps& maps, const img::Gray8* trace_map
 }
 }  // namespace
 
+namespace {
+// A built-in texture (checkerboard, bricks: a pure function of its spec) is built once per process
+// and copied for each render (a copy is ~50x cheaper than the build and its mip pyramid); PNG
+// textures are read each time. The key holds every field the build reads, the source included
+// (the texture's name names it).
+tex::Texture texture_of(const scene::Scene& s, const std::string& name) {
+  const auto it = s.textures.find(name);
+  if (it == s.textures.end() || it->second.builtin.empty()) return scene::build_texture(s, name);
+  const scene::TextureSpec& t = it->second;
+  const auto& a = t.addressing;
+  const std::string key = s.source + '\n' + name + '\n' + t.builtin + ' ' + std::to_string(t.size) + ' ' +
+                          std::to_string(t.cells) + ' ' + std::to_string(int(a.u)) + ' ' + std::to_string(int(a.v)) + ' ' +
+                          std::to_string(a.border.r) + ' ' + std::to_string(a.border.g) + ' ' + std::to_string(a.border.b) +
+                          ' ' + std::to_string(a.border.a) + ' ' + std::to_string(t.format) + ' ' + std::to_string(t.srgb);
+  static std::mutex mu;
+  static std::map<std::string, std::shared_ptr<const tex::Texture>> cache;
+  {
+    const std::lock_guard<std::mutex> lock(mu);
+    if (const auto c = cache.find(key); c != cache.end()) return *c->second;
+  }
+  auto built = std::make_shared<const tex::Texture>(scene::build_texture(s, name));
+  const std::lock_guard<std::mutex> lock(mu);
+  return *cache.emplace(key, std::move(built)).first->second;
+}
+}  // namespace
+
 ewa::Engine engine_of(scene::Filter f) {
   switch (f) {
     case scene::Filter::Nearest: return ewa::Engine::Nearest;
@@ -105,7 +134,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
   std::vector<tex::Texture> texs;
   std::vector<std::vector<persp::Unit::Coefs>> coefs;
   for (size_t o = 0; o < s.objects.size(); ++o) {
-    texs.push_back(scene::build_texture(s, s.materials.at(s.objects[o].material).texture));
+    texs.push_back(texture_of(s, s.materials.at(s.objects[o].material).texture));
     coefs.push_back(setup_fx(s, o, texs.back().levels[0].width, texs.back().levels[0].height));
   }
   std::vector<std::optional<relief::Maps>> reliefs;  // per object with relief and opt.relief
@@ -119,6 +148,17 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
     if (reliefs[o] && opt.afvis != AfvisMode::Off && (opt.afvis == AfvisMode::On || s.materials.at(s.objects[o].material).relief->af_visibility))
       afv_cells[o] = afvis::min_depth_pyramid(reliefs[o]->depth, opt.afvis_pyramid);
   const auto mats = object_materials(s);
+  // Per object and triangle, what every pixel of it shares: B2's laniso, the sampler state, det3.
+  struct ObjConst {
+    uint32_t laniso;
+    tex::LodParams lp;
+    std::vector<ellipse::fx::Det3> det;
+  };
+  std::vector<ObjConst> oc;
+  for (size_t o = 0; o < s.objects.size(); ++o) {
+    oc.push_back({laniso_code(mats[o]->max_aniso), lod_params(*mats[o]), {}});
+    for (const auto& k : coefs[o]) oc.back().det.push_back(ellipse::fx::det3(k));
+  }
   std::vector<uint64_t> tex_base;  // per object: its texture's trace base (texel-cache model)
   for (const auto& o : s.objects)
     tex_base.push_back(uint64_t(std::distance(s.textures.begin(), s.textures.find(s.materials.at(o.material).texture))) << 32);
@@ -138,15 +178,20 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
   std::atomic<int> rows_done{0};
   par::for_each_index(h, opt.uv_shift ? 1 : opt.threads, [&](int y) {
     auto& pixels = rows[static_cast<size_t>(y)];
+    size_t n_row = 0;
+    for (int x = 0; x < w; ++x) n_row += cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)].object >= 0;
+    pixels.reserve(n_row);
     for (int x = 0; x < w; ++x) {
       const Cover c = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)];
       if (c.object < 0) continue;
       const auto& m = *mats[static_cast<size_t>(c.object)];
       const auto& tx = texs[static_cast<size_t>(c.object)];
       const auto& k = coefs[static_cast<size_t>(c.object)][static_cast<size_t>(c.triangle)];
+      const ObjConst& ok = oc[static_cast<size_t>(c.object)];
       const int top = tx.num_levels() - 1;
-      // B1: u, v codes; B2: footprint on the same quantised coefficients.
-      const persp::Pixel px = persp::Unit::pixel(persp::Unit::direct(k, x, y));
+      // B1: u, v codes; B2: footprint on the same quantised coefficients (and accumulators).
+      const persp::Unit::Acc acc = persp::Unit::direct(k, x, y);
+      const persp::Pixel px = persp::Unit::pixel(acc);
       ewa::fx::In in;
       in.u = px.u;
       in.v = px.v;
@@ -155,11 +200,13 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       if (const auto& maps = reliefs[static_cast<size_t>(c.object)]; maps && !px.flag)
         view = shift_relief_fx(s, rays, *m.relief, c, *maps, tx, x, y, &in.u, &in.v, &rec);
       if (opt.uv_shift) opt.uv_shift(x, y, c.object, &in.u, &in.v);
-      in.b2 = ellipse::fx::pixel(k, x, y, laniso_code(m.max_aniso), static_cast<uint32_t>(top),
+      in.b2 = ellipse::fx::pixel(k, acc, ok.det[static_cast<size_t>(c.triangle)], ok.laniso, static_cast<uint32_t>(top),
                                  s.footprint == scene::Footprint::Recurrence);
       rec.x = x, rec.y = y, rec.object = c.object;
-      rec.u = std::ldexp(double(in.u), -fmt::kTexUvF);
-      rec.v = std::ldexp(double(in.v), -fmt::kTexUvF);
+      // u, v in texels: times 2^-TexUvF, exact (as std::ldexp, without its call per pixel).
+      constexpr double kUvLsb = 1.0 / double(int64_t(1) << fmt::kTexUvF);
+      rec.u = double(in.u) * kUvLsb;
+      rec.v = double(in.v) * kUvLsb;
       rec.b2_flags = in.b2.flags;
       if (const auto& pc = procs[static_cast<size_t>(c.object)]) {
         // The noise unit at B1's (u, v) with B2's lrho; beyond the B1 guard the footprint spans
@@ -183,7 +230,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
       }
       std::optional<tex::TexelTrace> trace;
       if (opt.trace_texels) trace.emplace(&rec.texel_addrs, tex_base[static_cast<size_t>(c.object)]);
-      const tex::LodParams lp = lod_params(m);
+      const tex::LodParams& lp = ok.lp;
       switch (filter.value_or(m.filter)) {
         case scene::Filter::Nearest:  // GL NEAREST / LINEAR: the base level
           rec.color = tex::nearest(tx, tex::level_range(lp, top).base, in.u, in.v);

@@ -76,12 +76,18 @@ std::vector<Cover> visibility(const scene::Scene& s, int threads) {
     }
   // Rows are independent; within a pixel the triangles keep the scene's order (ties: first).
   par::for_each_index(h, threads, [&](int y) {
+    // The row's rays once (RayCaster::dir), shared by every triangle (hit_dir: hit's bits).
+    std::vector<double> dirs;
     for (const Box& b : boxes) {
       if (y < b.y0 || y > b.y1) continue;
+      if (dirs.empty()) {
+        dirs.resize(3 * static_cast<size_t>(w));
+        for (int x = 0; x < w; ++x) rays.dir(x, y, &dirs[3 * static_cast<size_t>(x)]);
+      }
       const auto& tri = s.objects[static_cast<size_t>(b.object)].triangles[static_cast<size_t>(b.triangle)];
       for (int x = b.x0; x <= b.x1; ++x) {
         persp::Hit hit;
-        if (!rays.hit(tri, x, y, &hit)) continue;
+        if (!rays.hit_dir(tri, &dirs[3 * static_cast<size_t>(x)], &hit)) continue;
         if (hit.s < 0 || hit.r < 0 || hit.s + hit.r > 1) continue;
         const size_t i = static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
         if (hit.dist < depth[i]) {

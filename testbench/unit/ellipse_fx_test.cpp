@@ -63,10 +63,11 @@ TEST(EllipseFx, Log2TableExhaustive) {
 }
 
 // Floating-point estimate + correction equals the bit-serial square root: random inputs of every
-// length, perfect squares and their neighbours, the double/long-double switch and the extremes.
+// length, perfect squares and their neighbours, the 2^52 / 2^104 switches and the extremes.
 TEST(EllipseFx, IsqrtFastEqualsSerial) {
   std::vector<u128> xs = {0, 1, 2, 3, 4, ~u128(0), ~u128(0) - 1, u128(1) << 52,
-                          (u128(1) << 52) - 1, (u128(1) << 52) + 1};
+                          (u128(1) << 52) - 1, (u128(1) << 52) + 1, u128(1) << 104,
+                          (u128(1) << 104) - 1, (u128(1) << 104) + 1};
   std::mt19937_64 rng(12);
   for (int b = 1; b <= 64; ++b)
     for (int t = 0; t < 200; ++t) {

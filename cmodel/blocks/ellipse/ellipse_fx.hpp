@@ -54,6 +54,8 @@ struct ExactNum {
   i128 nux, nvx, nuy, nvy;
 };
 ExactNum numerators_direct(const Coefs& c, int x, int y);
+// The same from B1's accumulators at the pixel (persp::Unit::direct(c, x, y)).
+ExactNum numerators_at(const Coefs& c, const persp::Unit::Acc& s);
 // The corrected seed recurrences walked over a span [x0, x0 + n) of row y.
 std::vector<ExactNum> numerators_span(const Coefs& c, int x0, int y, int n);
 
@@ -94,6 +96,14 @@ int64_t round_num(i128 n);
 void det3(const Coefs& c, int64_t* dm, int32_t* dexp);
 double det3_value(const In& in);
 In make_in(const Coefs& c, int x, int y, uint32_t laniso = 4 << fmt::kEllLogF, uint32_t max_lod = 12);
+// det3 of a triangle (its normalised float form), and make_in with it and B1's accumulators at the
+// pixel given: a render computes both once (per triangle, per pixel) for B1 and B2.
+struct Det3 {
+  int64_t dm = 0;
+  int32_t dexp = 0;
+};
+Det3 det3(const Coefs& c);
+In make_in(const Coefs& c, const persp::Unit::Acc& s, const Det3& d, uint32_t laniso, uint32_t max_lod);
 
 // A local projective map around pixel (0, 0): q, Jacobian J (texels per pixel), dq/dx = G,
 // dq/dy = H and (u, v) at the pixel. Any such tuple is the view of some plane.
@@ -135,6 +145,7 @@ Out forward_difference(const In& in, int64_t g, int64_t h);
 // the quantised coefficients (make_in), analytic or (recurrence) the seed's forward differences
 // with q + G, q + H.
 Out pixel(const Coefs& c, int x, int y, uint32_t laniso, uint32_t max_lod, bool recurrence);
+Out pixel(const Coefs& c, const persp::Unit::Acc& s, const Det3& d, uint32_t laniso, uint32_t max_lod, bool recurrence);
 
 // Log2 unit: x > 0 -> log2(x) with EllLogF + 1 fraction bits (truncating squarings).
 // log2_fx_serial is the hardware's algorithm (EllLogF + 1 truncating squarings of the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <vector>
 
 #include "ewa/ewa_lanes.hpp"
 #include "gauss/weight.hpp"
@@ -329,13 +330,125 @@ QuadForm quad_form(const PixelSetup& su) {
   return f;
 }
 
+namespace {
+// The texel reads of a walk at one level, as Texture::fetch makes them: each column of the box
+// wrapped once per pixel and each row once (tex::wrap_index), then one load per texel; -1 (the
+// border colour) as fetch. While a TexelTrace records, every read goes through fetch instead.
+class LevelReader {
+ public:
+  LevelReader(const tex::Texture& t, int level, int64_t x0, int64_t x1)
+      : t_(t), level_(std::clamp(level, 0, t.num_levels() - 1)), im_(t.levels[static_cast<size_t>(level_)]),
+        trace_(tex::TexelTrace::active()), x0_(x0) {
+    if (trace_) return;
+    static thread_local std::vector<int32_t> cols;  // reused: no allocation per pixel
+    cols.resize(static_cast<size_t>(std::max<int64_t>(0, x1 - x0 + 1)));
+    const int lw = std::countr_zero(static_cast<unsigned>(im_.width));
+    for (int64_t x = x0; x <= x1; ++x)
+      cols[static_cast<size_t>(x - x0)] = static_cast<int32_t>(tex::wrap_index(x, lw, t.addressing.u));
+    cols_ = cols.data();
+  }
+  void row(int64_t y) {
+    y_ = y;
+    if (trace_) return;
+    const int64_t yi = tex::wrap_index(y, std::countr_zero(static_cast<unsigned>(im_.height)), t_.addressing.v);
+    row_ = yi < 0 ? nullptr : im_.px.data() + static_cast<size_t>(yi) * static_cast<size_t>(im_.width);
+  }
+  img::Rgba8 at(int64_t x) const {
+    if (trace_) return t_.fetch(level_, x, y_);
+    const int32_t xi = cols_[x - x0_];
+    return row_ && xi >= 0 ? row_[xi] : t_.addressing.border;
+  }
+
+ private:
+  const tex::Texture& t_;
+  int level_;
+  const img::Rgba8Image& im_;
+  bool trace_;
+  int64_t x0_, y_ = 0;
+  const int32_t* cols_ = nullptr;
+  const img::Rgba8* row_ = nullptr;
+};
+
+// The walk without statistics, incremental Q (filter's path), for one weight source `wf(q, xi,
+// eta)`: the same texels in the same order, weights and sums as the generic loop in walk(),
+// with the sums and counters in locals (registers) instead of memory.
+template <class W>
+Out walk_fast(const PixelSetup& su, const tex::Texture& t, W wf) {
+  Out out = walk_out(su);
+  const QuadForm qf = quad_form(su);
+  const int64_t A = qf.a, B = qf.b, ddq = qf.ddq;
+  const int64_t kxu = su.kxu, kxv = su.kxv, kyu = su.kyu, kyv = su.kyv;
+  const int64_t dxi = kxu * kStep, deta = kyu * kStep;
+  uint64_t a0 = 0, a1 = 0, a2 = 0, a3 = 0, wsum = 0;
+  uint32_t inside = 0;
+  LevelReader texels(t, su.level, su.x0, su.x1);
+  for (int64_t y = su.y0; y <= su.y1 && su.x0 <= su.x1; ++y) {
+    texels.row(y);
+    const int64_t dv = y * kStep - su.cv, du0 = su.x0 * kStep - su.cu;
+    int64_t xi = kxu * du0 + kxv * dv;
+    int64_t eta = kyu * du0 + kyv * dv;
+    int64_t q = xi * xi + eta * eta;
+    int64_t dq = A * (2 * du0 * kStep + kStep * kStep) + B * dv * kStep;
+    for (int64_t x = su.x0;; ++x) {
+      const uint32_t w = wf(q, xi, eta);
+      if (w > 0) {
+        ++inside;
+        const img::Rgba8 px = texels.at(x);
+        a0 += uint64_t(w) * px.r, a1 += uint64_t(w) * px.g;
+        a2 += uint64_t(w) * px.b, a3 += uint64_t(w) * px.a;
+        wsum += w;
+      }
+      if (x == su.x1) break;
+      q += dq;  // Heckbert: first and second differences along x
+      dq += ddq;
+      xi += dxi;
+      eta += deta;
+    }
+  }
+  if (su.x1 >= su.x0 && su.y1 >= su.y0)
+    out.texels_visited = static_cast<uint32_t>((su.x1 - su.x0 + 1) * (su.y1 - su.y0 + 1));
+  out.texels_inside = inside;
+  Sums sums;
+  sums.acc[0] = a0, sums.acc[1] = a1, sums.acc[2] = a2, sums.acc[3] = a3;
+  sums.wsum = wsum;
+  finish(su, t, sums, &out);
+  return out;
+}
+}  // namespace
+
 Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool direct, WalkStats* st) {
+  if (!direct && st == nullptr) {  // the render's path: one loop per weight source
+    constexpr int64_t kOne = int64_t(1) << kQF;
+    if (cfg.clip)
+      return walk_fast(su, t, [&](int64_t q, int64_t xi, int64_t eta) { return border_weight(su, cfg, q, xi, eta); });
+    switch (cfg.weights) {
+      case Weights::Formula:
+        return walk_fast(su, t, [](int64_t q, int64_t, int64_t) {
+          return q < kOne ? gauss::weight(static_cast<uint32_t>(q >> (kQF - fmt::kGaussQF))) : 0u;
+        });
+      case Weights::Table1d: {
+        const gauss::Table1D& tab = table1d();
+        return walk_fast(su, t, [&tab](int64_t q, int64_t, int64_t) {
+          return q < kOne ? tab.lookup(static_cast<uint32_t>(q >> (kQF - fmt::kGaussQF))) : 0u;
+        });
+      }
+      case Weights::Table2d: {
+        const gauss::Table2D& tab = table2d();
+        constexpr int sh = fmt::kEwaKF + fmt::kEwaPosF - fmt::kGaussXiF;  // floor
+        return walk_fast(su, t, [&tab](int64_t q, int64_t xi, int64_t eta) {
+          return q < kOne ? tab.lookup(static_cast<int32_t>(xi >> sh), static_cast<int32_t>(eta >> sh)) : 0u;
+        });
+      }
+    }
+  }
   Out out = walk_out(su);
   const QuadForm qf = quad_form(su);
   const int64_t A = qf.a, B = qf.b, ddq = qf.ddq;
   Sums sums;
   uint64_t* const acc = sums.acc;
+  LevelReader texels(t, su.level, su.x0, su.x1);
   for (int64_t y = su.y0; y <= su.y1; ++y) {
+    texels.row(y);
     const int64_t dv = y * kStep - su.cv, du0 = su.x0 * kStep - su.cu;
     int64_t xi = int64_t(su.kxu) * du0 + int64_t(su.kxv) * dv;
     int64_t eta = int64_t(su.kyu) * du0 + int64_t(su.kyv) * dv;
@@ -364,7 +477,7 @@ Out walk(const PixelSetup& su, const tex::Texture& t, const Config& cfg, bool di
       }
       if (w > 0) {
         ++out.texels_inside;
-        const img::Rgba8 px = t.fetch(su.level, x, y);
+        const img::Rgba8 px = texels.at(x);
         acc[0] += uint64_t(w) * px.r, acc[1] += uint64_t(w) * px.g;
         acc[2] += uint64_t(w) * px.b, acc[3] += uint64_t(w) * px.a;
         sums.wsum += w;

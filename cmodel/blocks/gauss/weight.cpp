@@ -5,7 +5,6 @@
 namespace tu::gauss {
 
 namespace {
-Sq square(Sq x) { return (x * x).as<Sq, Round::HalfUp, Ovf::Sat>(); }
 uint32_t entry(double w) {
   const double s = std::ldexp(w, fmt::kWtabEntryW);
   const double top = std::ldexp(1.0, fmt::kWtabEntryW) - 1;
@@ -18,16 +17,6 @@ uint32_t lerp(uint32_t a, uint32_t b, uint32_t f, int fb) {
   return static_cast<uint32_t>(a + ((d + (int64_t(1) << (fb - 1))) >> fb));
 }
 }  // namespace
-
-uint32_t weight(uint32_t q_code) {
-  if (q_code > (uint32_t(1) << fmt::kGaussQF)) return 0;
-  // t = 1 - Q/2: Q/2 has GaussQF + 1 = GaussTF fraction bits with the same raw code.
-  static_assert(fmt::kGaussTF == fmt::kGaussQF + 1);
-  const T t = T::from_raw((int64_t(1) << fmt::kGaussTF) - q_code);
-  const Sq t2 = (t * t).as<Sq, Round::HalfUp, Ovf::Sat>();
-  const Sq t4 = square(t2);
-  return static_cast<uint32_t>(square(t4).raw());
-}
 
 double weight_ref(double q) {
   if (q < 0 || q > 1) return 0;

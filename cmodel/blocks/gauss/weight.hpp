@@ -17,8 +17,16 @@ using Q = UFixed<fmt::kGaussQW, fmt::kGaussQF>;
 using T = UFixed<fmt::kGaussTW, fmt::kGaussTF>;
 using Sq = UFixed<fmt::kGaussSqW, fmt::kGaussSqF>;
 
-// Q code (u16.14) -> w code (u17.16). Q > 1 gives 0.
-uint32_t weight(uint32_t q_code);
+// Q code (u16.14) -> w code (u17.16). Q > 1 gives 0. Inline: the EWA walk calls it per texel.
+inline uint32_t weight(uint32_t q_code) {
+  if (q_code > (uint32_t(1) << fmt::kGaussQF)) return 0;
+  // t = 1 - Q/2: Q/2 has GaussQF + 1 = GaussTF fraction bits with the same raw code.
+  static_assert(fmt::kGaussTF == fmt::kGaussQF + 1);
+  const T t = T::from_raw((int64_t(1) << fmt::kGaussTF) - q_code);
+  const Sq t2 = (t * t).as<Sq, Round::HalfUp, Ovf::Sat>();
+  const Sq t4 = (t2 * t2).as<Sq, Round::HalfUp, Ovf::Sat>();
+  return static_cast<uint32_t>((t4 * t4).as<Sq, Round::HalfUp, Ovf::Sat>().raw());
+}
 double weight_ref(double q);  // (1 - q/2)^8 on [0, 1], else 0
 
 struct WeightStats {

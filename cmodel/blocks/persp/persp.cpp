@@ -68,11 +68,16 @@ RayCaster::RayCaster(const Camera& cam) : width_(cam.width), height_(cam.height)
   }
 }
 
-bool RayCaster::hit(const Triangle& t, int x, int y, Hit* h) const {
+void RayCaster::dir(int x, int y, double* d) const {
   // Per-pixel ray, built from the pixel centre directly (not from the linear form above).
   const glm::dvec3 fwd = v3(fwd_), right = v3(right_), up = v3(up_);
   const double nx = 2.0 * (x + 0.5) / width_ - 1.0, ny = 1.0 - 2.0 * (y + 0.5) / height_;
-  const glm::dvec3 d = glm::normalize(fwd + right * (nx * th_ * aspect_) + up * (ny * th_));
+  const glm::dvec3 r = glm::normalize(fwd + right * (nx * th_ * aspect_) + up * (ny * th_));
+  d[0] = r.x, d[1] = r.y, d[2] = r.z;
+}
+
+bool RayCaster::hit_dir(const Triangle& t, const double* dp, Hit* h) const {
+  const glm::dvec3 d = v3(dp);
   const glm::dvec3 p0 = v3(t.v[0].p), e1 = v3(t.v[1].p) - p0, e2 = v3(t.v[2].p) - p0;
   const glm::dmat3 m(e1, e2, -d);  // columns
   const double det = glm::determinant(m);
@@ -81,6 +86,12 @@ bool RayCaster::hit(const Triangle& t, int x, int y, Hit* h) const {
   if (srt.z <= 0) return false;
   *h = {srt.x, srt.y, srt.z};
   return true;
+}
+
+bool RayCaster::hit(const Triangle& t, int x, int y, Hit* h) const {
+  double d[3];
+  dir(x, y, d);
+  return hit_dir(t, d, h);
 }
 
 bool RayCaster::bounds(const Triangle& t, int* x0, int* x1, int* y0, int* y1) const {

@@ -19,6 +19,7 @@
 // narrower widths with the same code; the unit itself is Model<fmt::kPerspF>.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -191,12 +192,36 @@ struct Model {
     s.pv = (s.pv - d).template as<P>();
     s.q = (s.q - g).template as<Q>();
   }
+
+ public:
+  // The shift sh = RecipOutF + e - PerspUvF over every unguarded q (e = msb(q) in
+  // [F - PerspGuardLog2, kQW - 2]), and |p * R| < 2^(kPW - 1 + RecipOutF).
+  static constexpr int kMinSh = fmt::kRecipOutF + F - fmt::kPerspGuardLog2 - fmt::kPerspUvF;
+  static constexpr int kMaxSh = fmt::kRecipOutF + kQW - 2 - fmt::kPerspUvF;
+  // With 1 <= sh <= 63 and |prod| < 2^(62 + sh) the rounded, shifted value fits int64: it is the
+  // low 64 bits of the 128-bit shift, formed from the two halves without a 128-bit shift and
+  // saturated in 64 bits (SpeedEquivalence.PerspScaleFastEqualsWide compares the forms).
+  static constexpr bool kScale64 = kMinSh >= 1 && kMaxSh <= 63 && kPW - 1 + fmt::kRecipOutF <= 62 + kMinSh;
+  // Round half up prod * 2^-sh to the Uv code and saturate (prod = p R, sh as above).
   static int64_t scale(i128 prod, int sh) {
+    if constexpr (kScale64) {
+      const u128 v = static_cast<u128>(prod + (int64_t(1) << (sh - 1)));  // half: a 64-bit constant
+      const uint64_t lo = static_cast<uint64_t>(v), hi = static_cast<uint64_t>(v >> 64);
+      const int64_t r = static_cast<int64_t>((lo >> sh) | (hi << (64 - sh)));
+      return std::clamp<int64_t>(r, static_cast<int64_t>(Uv::kMinRaw), static_cast<int64_t>(Uv::kMaxRaw));
+    } else {
+      return scale_wide(prod, sh);
+    }
+  }
+  // The same in 128 bits (any sh >= 1): the reference of scale.
+  static int64_t scale_wide(i128 prod, int sh) {
     const i128 v = (prod + (i128(1) << (sh - 1))) >> sh;  // round half up
     if (v > Uv::kMaxRaw) return static_cast<int64_t>(Uv::kMaxRaw);
     if (v < Uv::kMinRaw) return static_cast<int64_t>(Uv::kMinRaw);
     return static_cast<int64_t>(v);
   }
+
+ private:
   template <class T>
   static T fit(double x, const char* name, const std::string& tri) {
     const long double lim = std::ldexp(1.0L, T::kI - 1);
@@ -257,6 +282,10 @@ class RayCaster {
  public:
   explicit RayCaster(const Camera& cam);
   bool hit(const Triangle& t, int x, int y, Hit* h) const;
+  // hit() in two parts: the unit ray direction through pixel (x, y) (d[3]), and its hit with a
+  // triangle: hit(t, x, y, h) == hit_dir(t, d, h) for d = dir(x, y) (one ray for many triangles).
+  void dir(int x, int y, double* d) const;
+  bool hit_dir(const Triangle& t, const double* d, Hit* h) const;
   // Pixel rectangle [x0, x1] x [y0, y1] (clipped to the image) outside which no pixel centre's
   // ray hits inside t: the vertices' projections plus a 2-pixel margin (far beyond rounding).
   // False when a vertex is not in front of the eye (the projection then bounds nothing).

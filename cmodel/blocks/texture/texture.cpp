@@ -29,18 +29,6 @@ thread_local uint64_t trace_base = 0;
 int64_t level_pos(int64_t u, int level) { return u - (int64_t(1) << (kUvF + level - 1)); }
 }  // namespace
 
-int64_t wrap_index(int64_t x, int l, Wrap w) {
-  const int64_t m = (int64_t(1) << l) - 1;
-  switch (w) {
-    case Wrap::Repeat: return x & m;
-    case Wrap::Mirror: return ((x >> l) & 1) ? ~x & m : x & m;
-    case Wrap::Clamp: return std::clamp<int64_t>(x, 0, m);
-    case Wrap::Border: return x >= 0 && x <= m ? x : -1;
-    case Wrap::MirrorOnce: return std::min(x < 0 ? ~x : x, m);
-  }
-  return x & m;
-}
-
 int64_t wrap_index_ref(double i, int size, Wrap w) {
   const double n = size;
   auto mod = [](double a, double b) { return a - b * std::floor(a / b); };
@@ -118,6 +106,7 @@ TexelTrace::~TexelTrace() {
   trace_out = prev_out_;
   trace_base = prev_base_;
 }
+bool TexelTrace::active() { return trace_out != nullptr; }
 
 Rgba8 Texture::fetch(int level, int64_t x, int64_t y) const {
   const size_t l = static_cast<size_t>(std::clamp(level, 0, num_levels() - 1));

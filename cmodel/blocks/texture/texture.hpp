@@ -13,6 +13,7 @@
 // TexLodF bits, round half up: one more 1/2.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -37,7 +38,17 @@ using Wrap = schema::Wrap;
 //   Clamp       clamp(x, 0, m)
 //   Border      x in [0, m] ? x : -1
 //   MirrorOnce  clamp(x < 0 ? ~x : x, 0, m)   (~x = -1 - x: the texel mirrored about -1/2)
-int64_t wrap_index(int64_t x, int l, Wrap w);
+inline int64_t wrap_index(int64_t x, int l, Wrap w) {  // inline: per texel
+  const int64_t m = (int64_t(1) << l) - 1;
+  switch (w) {
+    case Wrap::Repeat: return x & m;
+    case Wrap::Mirror: return ((x >> l) & 1) ? ~x & m : x & m;
+    case Wrap::Clamp: return std::clamp<int64_t>(x, 0, m);
+    case Wrap::Border: return x >= 0 && x <= m ? x : -1;
+    case Wrap::MirrorOnce: return std::min(x < 0 ? ~x : x, m);
+  }
+  return x & m;
+}
 // Float reference: the OpenGL 4.6 definitions (§8.14.2, Table 8.20: mirror(a) = a >= 0 ? a :
 // -(1 + a); MIRRORED_REPEAT (size - 1) - mirror((i mod 2 size) - size); ...) evaluated in double
 // on an integer-valued i (|i| < 2^52), -1 for the border colour. Test: Texture.WrapIndexMatchesGlRules.
@@ -77,6 +88,9 @@ class TexelTrace {
   ~TexelTrace();
   TexelTrace(const TexelTrace&) = delete;
   TexelTrace& operator=(const TexelTrace&) = delete;
+  // True while a trace records on this thread (readers that bypass Texture::fetch for speed
+  // must then call it, so that every read is recorded).
+  static bool active();
 
  private:
   std::vector<uint64_t>* prev_out_;
