@@ -2,9 +2,11 @@
 # Standard-cell synthesis and static timing of one RTL top in OSU 0.18 um (qflow-tech-osu018):
 # Yosys 0.23 `synth -flatten` (coarse part), maccmap (multiplies and multiply-adds as carry-save
 # trees of full adders instead of a chain of ripple adders), techmap ($lcu = Brent-Kung),
-# dfflibmap + `abc -liberty -D` (delay-oriented mapping with the script strash; dc2; map -D; buffer;
+# dfflibmap + `abc -liberty -D` (delay-oriented mapping with the script strash; dch -f; map -D; buffer;
 # upsize; dnsize: ABC's default liberty script with &nf takes minutes per small block, and without
-# buffering a pipeline enable driving hundreds of flops sets the critical path), `stat -liberty`; then OpenSTA:
+# buffering a pipeline enable driving hundreds of flops sets the critical path; dch -f, structural
+# choices, instead of dc2, which rewrote Yosys's Brent-Kung carry trees into ripple chains: a
+# registered 49-bit adder 6.31 ns with dc2), `stat -liberty`; then OpenSTA:
 # one clock on clk_i, ideal (no clock tree), zero input / output delays, no wire load
 # (the library defines none; nets cost only the pin capacitances they drive).
 # Prints one JSON object: area_um2, cells, flip_flops, latches, memories (bits per $mem, before
@@ -24,7 +26,7 @@ inc="-I$rtl/common -I$rtl/generated"  # `include files (rtl/manifest.json includ
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 mkdir -p "$(dirname "$net")"
-printf 'strash\ndc2\nmap -D %s\ntopo\nbuffer -p\nupsize -D %s\ndnsize -D %s\n' "$target" "$target" "$target" > "$dir/abc.script"
+printf 'strash\ndch -f\nmap -D %s\ntopo\nbuffer -p\nupsize -D %s\ndnsize -D %s\n' "$target" "$target" "$target" > "$dir/abc.script"
 yosys -q -l "$dir/ylog" -p "read_verilog -sv $inc $*; hierarchy -top $top; synth -flatten -top $top -run :fine;
   tee -q -o $dir/mem.il dump t:\$mem_v2; opt -fast -full; memory_map; opt -full; maccmap; techmap; opt -fast;
   dfflibmap -liberty $lib; abc -liberty $lib -D $target -script $dir/abc.script; opt_clean;
