@@ -362,6 +362,7 @@ struct Config {
   int noise_dims = 3, noise_cores = tu::fmt::kNoiseOctaves;
   bool water = true;  // the noise unit's water back-end (tu_noise_unit HasWater)
   int noise_scheme = 0;  // 0 pipelined, 1 octave-serial (tu_noise_unit Serial)
+  bool feline = false;  // Feline probe engine (tu_feline)
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -373,6 +374,7 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam bit HasBilinear = 1'b" << c.bilinear << ";  // bilinear engine (per-span choice with EWA)\n"
      << "  localparam bit HasTriFilter = 1'b" << c.tri_filter << ";  // trilinear engine (tu_trilinear)\n"
      << "  localparam bit HasNearest = 1'b" << c.nearest << ";  // nearest engine (tu_nearest)\n"
+     << "  localparam bit HasFeline = 1'b" << c.feline << ";  // Feline probe engine (tu_feline)\n"
      << "  localparam bit HasRelief = 1'b" << c.relief << ";\n"
      << "  localparam bit HasPom = 1'b" << c.pom << ";  // tu_pom_layers + tu_pom_march\n"
      << "  localparam bit HasIterParallax = 1'b" << c.iter_parallax << ";\n"
@@ -762,9 +764,13 @@ int run(const Options& opt) {
   planned_shaded.water = noise.water;
   if (brdf_row) planned_shaded.shade_model = shading::model_of(brdf_row->variant);
   // The full unit: F_MSH (the thesis's model) when the scene does not need another.
-  const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n,
-                          planned.persp_lanes, false, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel,
-                          true, 31, true, clip_code, true};
+  const Config everything = [&] {
+    Config c{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n,
+             planned.persp_lanes, false, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel,
+             true, 31, true, clip_code, true};
+    c.feline = true;
+    return c;
+  }();
 
   // 5. Scene cycles of the RTL texture unit (texture path), from the exact cycle model
   //    ewa::stream_cycles on the bit-accurate C-model render's per-pixel work (equal to Verilator:
