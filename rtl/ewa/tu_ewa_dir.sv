@@ -5,7 +5,8 @@
 //   VEC     I/U clocks, CordUnroll iterations per clock -> 2 phi (binary angle)
 //   ROT     I/U clocks from theta = phi + 1/4 turn reduced to [-1/4, 1/4) turn -> c, s rounded
 //           half up to EwaCsF bits
-// start_i at clock t -> done_o (c_o, s_o valid, held until the next start) from t + 1 + 2 I/U.
+// start_i at clock t -> finish_o at t + 2 I/U (the last rotation clock), done_o (c_o, s_o valid,
+// held until the next start) from t + 1 + 2 I/U.
 // Factored out of tu_ewa_setup's PRE / VEC / ROT states; tu_feline_setup uses it (the Feline
 // probes' line is the EWA ellipse's major axis).
 module tu_ewa_dir #(
@@ -17,6 +18,7 @@ module tu_ewa_dir #(
   input  logic signed [63:0]                    d_i,     // Ae' - Ce' (both < 2^62)
   input  logic signed [63:0]                    b_i,     // Be'
   input  logic                                  unit_i,  // no axes: theta = 0
+  output logic                                  finish_o,  // c_o, s_o valid from the next clock
   output logic                                  done_o,
   output logic signed [tu_formats_pkg::EwaCsW-1:0] c_o,
   output logic signed [tu_formats_pkg::EwaCsW-1:0] s_o
@@ -122,7 +124,8 @@ module tu_ewa_dir #(
       s_o  <= cs_round(cy_d);
     end
   end
-  assign done_o = st_q == DDone;
+  assign finish_o = st_q == DRot && last;
+  assign done_o   = st_q == DDone;
   logic unused;
   assign unused = ^atan_unused;
 endmodule

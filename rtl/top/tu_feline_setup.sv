@@ -133,7 +133,7 @@ module tu_feline_setup #(
   end
 
   // ---- DIR: the major axis and the line
-  logic                  dir_done;
+  logic                  dir_done, dir_finish_unused;
   logic signed [CsW-1:0] c, s;
   logic signed [63:0]    dd, bd;
   assign dd = $signed(ae_q) - $signed(ce_q);
@@ -141,7 +141,7 @@ module tu_feline_setup #(
   tu_ewa_dir #(.CordUnroll(CordUnroll)) u_dir (
     .clk_i, .rst_ni, .start_i(st_q == SPre && !unit_q && n_d != PW'(1)),
     .d_i(dd), .b_i(bd), .unit_i(1'b0),
-    .done_o(dir_done), .c_o(c), .s_o(s)
+    .finish_o(dir_finish_unused), .done_o(dir_done), .c_o(c), .s_o(s)
   );
   // 2^e (e >= 0: T[e mod 2^ExpF] << e / 2^ExpF) and 2^-m (m = -e: T[-m mod 2^ExpF] >> (m / 2^ExpF + 1),
   // 2^E2F >> m / 2^ExpF for a whole m): the ROM index is e's low ExpF bits either way
@@ -240,7 +240,7 @@ module tu_feline_setup #(
   end
   assign n_o = n_q;
   logic unused;
-  assign unused = ^{lflags_unused, eflags_i[4:1], lg[LW-1:0]};
+  assign unused = ^{dir_finish_unused, lflags_unused, eflags_i[4:1], lg[LW-1:0]};
 
   // valid/ready protocol checks (rtl/common/tu_assert.svh)
   `TU_ASSERT_HANDSHAKE(RecHandshake, rec_valid_o, rec_ready_i, {n_o, lod_o, single_o, guard_o, hu_o, hv_o, tq_o, flags_o})
