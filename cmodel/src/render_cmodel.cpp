@@ -99,9 +99,8 @@ ewa::Engine engine_of(scene::Filter f) {
     case scene::Filter::Bilinear: return ewa::Engine::Bilinear;
     case scene::Filter::Trilinear: return ewa::Engine::Trilinear;
     case scene::Filter::Ewa: return ewa::Engine::Ewa;
-    case scene::Filter::Feline: break;
+    case scene::Filter::Feline: return ewa::Engine::Feline;
   }
-  if (f == scene::Filter::Feline) throw std::invalid_argument("filter feline: the RTL texture unit has no Feline engine yet");
   return ewa::Engine::Ewa;
 }
 

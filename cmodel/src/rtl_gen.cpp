@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "ewa/ewa_fx.hpp"
+#include "feline/feline_fx.hpp"
 #include "pom/pom_layers.hpp"
 #include "gauss/clip.hpp"
 #include "noise/noise_ref.hpp"
@@ -285,6 +286,28 @@ std::string ewa_atan_rom() {
   os << "      default: atan_o = '0;\n    endcase\n  end\nendmodule\n";
   return os.str();
 }
+std::string feline_rom() {
+  // Feline probe set-up (docs/blocks/feline.md step 1 and 4): Lg[n] = floor(log2(n) 2^EllLogF)
+  // (every entry at once: the probe count compares the ratio with all of them) and
+  // R[m] = round(2^FelRecipF / m), R[0] = 0 (feline::fx::log2_int_table, recip_table).
+  const auto& lg = feline::fx::log2_int_table();
+  const auto& r = feline::fx::recip_table();
+  std::ostringstream os;
+  os << kBanner << "// Feline ROM: lg_o[n] = floor(log2(n) 2^EllLogF) (n = 0..FelNMax, Lg[0] = 0) at bits\n"
+     << "// [n EllLogW +: EllLogW]; recip_o = round(2^FelRecipF / m_i), 0 for m_i = 0.\n"
+     << "module tu_feline_rom (\n"
+     << "  input  logic [tu_formats_pkg::FelProbeW-1:0]                        m_i,\n"
+     << "  output logic [tu_formats_pkg::FelRecipF:0]                          recip_o,\n"
+     << "  output logic [(tu_formats_pkg::FelNMax+1)*tu_formats_pkg::EllLogW-1:0] lg_o\n);\n";
+  os << "  assign lg_o = {";
+  for (size_t n = lg.size(); n-- > 0;)
+    os << hex(static_cast<uint64_t>(lg[n]), fmt::kEllLogW) << (n ? ", " : "};\n");
+  os << "  always_comb begin\n    unique case (m_i)\n";
+  for (size_t k = 0; k < r.size(); ++k)
+    os << "      " << hex(k, fmt::kFelProbeW) << ": recip_o = " << hex(r[k], fmt::kFelRecipF + 1) << ";\n";
+  os << "      default: recip_o = '0;\n    endcase\n  end\nendmodule\n";
+  return os.str();
+}
 std::string noise_perm_rom() {
   // Perlin noise (docs/blocks/noise.md): the permutation table, addressed modulo 256.
   const auto& p = noise::permutation();
@@ -308,6 +331,7 @@ std::map<std::string, std::string> generated_rtl() {
           {"rtl/generated/tu_clip_seg_mm1.sv", clip_roms(true)},
           {"rtl/generated/tu_ewa_atan_rom.sv", ewa_atan_rom()},
           {"rtl/generated/tu_ewa_exp2_rom.sv", ewa_exp2_rom()},
+          {"rtl/generated/tu_feline_rom.sv", feline_rom()},
           {"rtl/generated/tu_noise_perm_rom.sv", noise_perm_rom()},
           {"rtl/generated/tu_pom_f_rom.sv", pom_f_rom()},
           {"rtl/generated/tu_recip_rom.sv", recip_rom()},

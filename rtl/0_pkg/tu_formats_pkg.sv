@@ -252,11 +252,12 @@ package tu_formats_pkg;
   localparam int AfvCrossW = 45;  // crossing order e = n_u |Pv|, n_v |Pu|: unsigned, exact products
   localparam int AfvTestW = 32;  // depth test (d0 - h) |P| vs 255 n: exact, signed, PomUvF bits
   // filter engine of a span (schema.hpp TU_ENGINE_CODES)
-  typedef enum logic [1:0] {
-    EngBilinear = 2'd0,  // bilinear at level 0 (tu_bilinear)
-    EngEwa = 2'd1,  // EWA (tu_ewa)
-    EngTrilinear = 2'd2,  // trilinear between floor(lod) and the next (tu_trilinear)
-    EngNearest = 2'd3  // nearest texel at level 0 (tu_nearest)
+  typedef enum logic [2:0] {
+    EngBilinear = 3'd0,  // bilinear at level 0 (tu_bilinear)
+    EngEwa = 3'd1,  // EWA (tu_ewa)
+    EngTrilinear = 3'd2,  // trilinear between floor(lod) and the next (tu_trilinear)
+    EngNearest = 3'd3,  // nearest texel at level 0 (tu_nearest)
+    EngFeline = 3'd4  // Feline probes along the major axis (tu_feline)
   } engine_e;
   // EWA weight source (schema.hpp TU_WEIGHT_SOURCE_CODES)
   typedef enum logic [1:0] {
@@ -272,7 +273,7 @@ package tu_formats_pkg;
     WrapBorder = 3'd3,  // outside [0, size - 1]: the border colour (GL_CLAMP_TO_BORDER)
     WrapMirrorOnce = 3'd4  // clamp(x < 0 ? -1 - x : x) to [0, size - 1] (GL_MIRROR_CLAMP_TO_EDGE)
   } wrap_e;
-  localparam int EngineW = 2;
+  localparam int EngineW = 3;
   localparam int WsrcW = 2;
   localparam int WrapW = 3;
   // flag bits (bit indices) of the EWA filter and of the footprint unit
@@ -289,11 +290,11 @@ package tu_formats_pkg;
   localparam int EllFlagMagnify = 4;  // minor_c < 1 texel: lod = 0
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
-  localparam int MaterialW = 66;  // material fields of a pixel
+  localparam int MaterialW = 114;  // material fields of a pixel
   localparam int ReliefW = 94;  // material relief fields
   localparam int TriW = 112;  // per-triangle footprint constants
   localparam int ProcW = 338;  // procedural material constants
-  localparam int FpixW = 429;  // pixel on its way to the filter
-  localparam int PixW = 523;  // pixel before the relief stage
+  localparam int FpixW = 477;  // pixel on its way to the filter
+  localparam int PixW = 571;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

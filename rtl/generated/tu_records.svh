@@ -16,6 +16,11 @@ typedef struct packed {
   logic [tu_formats_pkg::EngineW-1:0] filt;  // filter engine (Eng* codes)
   logic clip;  // EWA sub-texel border weights (the unit's EwaClipVariant)
   logic [3:0] tlbase;  // colour texture: base level (tex::level_range), nearest and bilinear sample it
+  logic [tu_formats_pkg::TexLodBiasW-1:0] lbias;  // Feline probe lod: the sampler rule's bias (s14.8)
+  logic [tu_formats_pkg::EllLodW-1:0] lminlod;  // Feline probe lod: min lod
+  logic [tu_formats_pkg::EllLodW-1:0] lmaxlod;  // Feline probe lod: max lod
+  logic [3:0] ltop;  // Feline probe lod: the top level of the material's range
+  logic [tu_formats_pkg::FelProbeW-1:0] fnmax;  // Feline probe cap Nmax (1..FelNMax)
 } tu_material_t;
 // material relief fields
 typedef struct packed {

@@ -23,12 +23,14 @@ module tu_texture_unit #(
   // Defaults from the unit configuration (rtl/0_pkg/tu_unit_cfg_pkg.sv: the full unit as committed;
   // `texunit plan SCENE --out rtl/0_pkg/tu_unit_cfg_pkg.sv` specialises it to a scene).
   // Filter engines: EWA (tu_ewa), bilinear at level 0 (tu_bilinear), trilinear (tu_trilinear),
-  // nearest at level 0 (tu_nearest). Each span's filt_i picks one; a span asking for an engine the
-  // unit leaves out goes to the first present of EWA, trilinear, bilinear, nearest.
+  // nearest at level 0 (tu_nearest), Feline probes (tu_feline). Each span's filt_i picks one; a
+  // span asking for an engine the unit leaves out goes to the first present of EWA, trilinear,
+  // bilinear, nearest, Feline.
   parameter int HasEwa       = {31'b0, tu_unit_cfg_pkg::HasEwa},
   parameter int HasBilinear  = {31'b0, tu_unit_cfg_pkg::HasBilinear},
   parameter int HasTriFilter = {31'b0, tu_unit_cfg_pkg::HasTriFilter},
   parameter int HasNearest   = {31'b0, tu_unit_cfg_pkg::HasNearest},
+  parameter int HasFeline    = {31'b0, tu_unit_cfg_pkg::HasFeline},
   // 1: relief stage (tu_relief_stage) between B1 and the filter, with its POM march (fixed or
   // adaptive layers) and iterative-parallax engines
   parameter int HasRelief   = {31'b0, tu_unit_cfg_pkg::HasRelief},
@@ -97,7 +99,8 @@ module tu_texture_unit #(
   input  logic [2*tu_formats_pkg::WrapW-1:0]     twrap_i,  // {v, u} Wrap* codes
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
-  input  logic [1:0]                            filt_i,  // material filter: 0 bilinear, 1 EWA, 2 trilinear, 3 nearest
+  input  logic [tu_formats_pkg::EngineW-1:0]    filt_i,  // material filter: Eng* codes
+  input  logic [tu_formats_pkg::FelProbeW-1:0]  fnmax_i, // material Feline probe cap (1..FelNMax)
   input  logic                                  clip_i,  // material EWA border weights (HasEwaClip)
   // material relief (POM): on, adaptive layers, layers (1..63), height scale S, depth map
   input  logic                                  rel_i,
@@ -182,6 +185,11 @@ module tu_texture_unit #(
     in_tri.lbase   = lbase_i;
     in_tri.ltop    = ltop_i;
     in_mat.tlbase  = lbase_i;
+    in_mat.lbias   = lbias_i;   // the Feline probes' lod rule (the tri record's copy feeds B2)
+    in_mat.lminlod = lminlod_i;
+    in_mat.lmaxlod = lmaxlod_i;
+    in_mat.ltop    = ltop_i;
+    in_mat.fnmax   = fnmax_i;
     in_mat.tbase   = tbase_i;
     in_mat.tlw     = tlw_i;
     in_mat.tlh     = tlh_i;
@@ -424,24 +432,29 @@ module tu_texture_unit #(
   logic [4:0]    p_flags, p_eflags;
   logic [1:0]    p_pflags;
   logic [RrW-1:0] p_rr;  // relief n, steps, flags
-  localparam logic [1:0] EngBil = tu_formats_pkg::EngBilinear, EngEwa = tu_formats_pkg::EngEwa,
-                         EngTri = tu_formats_pkg::EngTrilinear, EngNst = tu_formats_pkg::EngNearest;
-  localparam logic [1:0] EngFirst = (HasEwa != 0) ? EngEwa : (HasTriFilter != 0) ? EngTri :
-                                    (HasBilinear != 0) ? EngBil : EngNst;
+  localparam int EW = tu_formats_pkg::EngineW;
+  localparam logic [EW-1:0] EngBil = tu_formats_pkg::EngBilinear, EngEwa = tu_formats_pkg::EngEwa,
+                            EngTri = tu_formats_pkg::EngTrilinear, EngNst = tu_formats_pkg::EngNearest,
+                            EngFel = tu_formats_pkg::EngFeline;
+  localparam logic [EW-1:0] EngFirst = (HasEwa != 0) ? EngEwa : (HasTriFilter != 0) ? EngTri :
+                                       (HasBilinear != 0) ? EngBil : (HasNearest != 0) ? EngNst : EngFel;
+  // Pixels in flight: <= 2 in every engine but Feline (set-up, prober, normaliser: 3).
+  localparam int OsDepth = HasFeline != 0 ? 4 : 2;
   logic          os_in_ready, os_valid, flt_valid, eng_ready, can_go, fire_flt, fire_out;
-  logic [1:0]    sel, cur_q;
-  logic [1:0]    inflight_q;  // <= 2: the sideband FIFO's depth bounds the pixels in flight
+  logic [EW-1:0] sel, cur_q;
+  logic [2:0]    inflight_q;  // <= OsDepth: the sideband FIFO's depth bounds the pixels in flight
   logic [OsW-1:0] os_data;
   logic          ewa_in_ready, ewa_valid, bil_in_ready, bil_valid, tri_in_ready, tri_valid;
-  logic          nst_in_ready, nst_valid;
-  logic          ewa_req, bil_req, tri_req, nst_req;
-  logic [AW-1:0] ewa_addr, bil_addr, tri_addr, nst_addr;
-  logic [31:0]   ewa_rgba, bil_rgba, tri_rgba, nst_rgba;
+  logic          nst_in_ready, nst_valid, fel_in_ready, fel_valid;
+  logic          ewa_req, bil_req, tri_req, nst_req, fel_req;
+  logic [AW-1:0] ewa_addr, bil_addr, tri_addr, nst_addr, fel_addr;
+  logic [31:0]   ewa_rgba, bil_rgba, tri_rgba, nst_rgba, fel_rgba;
   always_comb begin
     unique case (f_mat.filt)
       EngEwa:  sel = (HasEwa != 0) ? EngEwa : EngFirst;
       EngTri:  sel = (HasTriFilter != 0) ? EngTri : EngFirst;
       EngNst:  sel = (HasNearest != 0) ? EngNst : EngFirst;
+      EngFel:  sel = (HasFeline != 0) ? EngFel : EngFirst;
       default: sel = (HasBilinear != 0) ? EngBil : EngFirst;
     endcase
   end
@@ -451,24 +464,25 @@ module tu_texture_unit #(
   logic [31:0]   nz_rgba;
   assign f_noise   = HasNoise != 0 && f_pix.proc.on;
   assign can_go    = (inflight_q == '0 || cur_q == sel) && !nz_busy;
-  logic [3:0]    in_ready_of, valid_of, req_of;  // indexed by engine
+  logic [4:0]    in_ready_of, valid_of, req_of;  // indexed by engine
   logic [AW-1:0] cur_addr;
   logic [31:0]   cur_rgba;
-  assign in_ready_of = {nst_in_ready, tri_in_ready, ewa_in_ready, bil_in_ready};
-  assign valid_of    = {nst_valid, tri_valid, ewa_valid, bil_valid};
-  assign req_of      = {nst_req, tri_req, ewa_req, bil_req};
+  assign in_ready_of = {fel_in_ready, nst_in_ready, tri_in_ready, ewa_in_ready, bil_in_ready};
+  assign valid_of    = {fel_valid, nst_valid, tri_valid, ewa_valid, bil_valid};
+  assign req_of      = {fel_req, nst_req, tri_req, ewa_req, bil_req};
   always_comb begin  // (a case, not an array pattern: Yosys 0.23 parses the top for area)
     unique case (cur_q)
       EngEwa:  begin cur_addr = ewa_addr; cur_rgba = ewa_rgba; end
       EngTri:  begin cur_addr = tri_addr; cur_rgba = tri_rgba; end
       EngNst:  begin cur_addr = nst_addr; cur_rgba = nst_rgba; end
+      EngFel:  begin cur_addr = fel_addr; cur_rgba = fel_rgba; end
       default: begin cur_addr = bil_addr; cur_rgba = bil_rgba; end
     endcase
   end
   assign eng_ready = in_ready_of[sel];
   assign fq_ready  = f_noise ? inflight_q == '0 && nz_in_ready : can_go && eng_ready && os_in_ready;
   assign fire_flt  = fq_valid && fq_ready && !f_noise;
-  tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
+  tu_fifo #(.Width(OsW), .Depth(OsDepth)) u_osb (
     .clk_i, .rst_ni, .in_valid_i(fq_valid && !f_noise && can_go && eng_ready), .in_ready_o(os_in_ready),
     .in_data_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rr}), .out_valid_o(os_valid),
     .out_ready_i(p_ready && flt_valid), .out_data_o(os_data)
@@ -492,7 +506,7 @@ module tu_texture_unit #(
       inflight_q <= '0;
     end else begin
       if (fire_flt) cur_q <= sel;
-      inflight_q <= inflight_q + {1'b0, fire_flt} - {1'b0, fire_out};
+      inflight_q <= inflight_q + 3'(fire_flt) - 3'(fire_out);
     end
   end
 
@@ -573,6 +587,36 @@ module tu_texture_unit #(
     logic unused_nst;
     assign unused_nst = ^f_mat.tlbase;
   end
+  logic [3:0]                           fel_level;
+  logic [tu_formats_pkg::EwaCountW-1:0] fel_texels;
+  logic [tu_formats_pkg::FelProbeW-1:0] fel_probes;
+  if (HasFeline != 0) begin : g_feline
+    logic [2:0] fel_flags_unused;
+    tu_feline u_fel (
+      .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngFel), .in_ready_o(fel_in_ready),
+      .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
+      .lrho_i(f_lrho), .eflags_i(f_eflags), .guard_i(f_guard), .nmax_i(f_mat.fnmax),
+      .bias_i(f_mat.lbias), .minlod_i(f_mat.lminlod), .maxlod_i(f_mat.lmaxlod), .lbase_i(f_mat.tlbase),
+      .ltop_i(f_mat.ltop), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(fel_req), .tex_addr_o(fel_addr), .tex_data_i,
+      .out_valid_o(fel_valid), .out_ready_i(p_ready && os_valid && cur_q == EngFel),
+      .rgba_o(fel_rgba), .level_o(fel_level), .texels_o(fel_texels), .probes_o(fel_probes),
+      .flags_o(fel_flags_unused)
+    );
+    logic unused_fel;
+    assign unused_fel = ^fel_flags_unused;  // not in the unit's output record
+  end else begin : g_no_feline
+    assign fel_in_ready = 1'b0;
+    assign fel_valid    = 1'b0;
+    assign fel_req      = 1'b0;
+    assign fel_addr     = '0;
+    assign fel_rgba     = '0;
+    assign fel_level    = '0;
+    assign fel_texels   = '0;
+    assign fel_probes   = '0;
+    logic unused_fel;
+    assign unused_fel = ^{f_mat.fnmax, f_mat.lbias, f_mat.lminlod, f_mat.lmaxlod, f_mat.ltop};
+  end
   // Noise unit: a procedural pixel's colour from tu_noise_unit at (u, v) with lrho, no texels.
   if (HasNoise != 0) begin : g_noise
     localparam int NzCntW = $clog2(tu_formats_pkg::NoiseWaterLatency + 2);
@@ -602,11 +646,14 @@ module tu_texture_unit #(
     assign unused_noise = ^{f_lrho, f_pix.proc};
   end
   // Bilinear pixels: level 0, four texels; trilinear: floor(lod), eight; nearest: level 0, one;
-  // no EWA flags; procedural pixels: none of these.
-  assign p_level   = nz_busy ? '0 : cur_q == EngEwa ? ewa_level : cur_q == EngTri ? tri_level : '0;
-  assign p_visited = nz_busy ? '0 : cur_q == EngEwa ? ewa_visited
+  // no EWA flags; Feline: floor(probe lod), its texels, inside = its probes; procedural pixels:
+  // none of these.
+  assign p_level   = nz_busy ? '0 : cur_q == EngEwa ? ewa_level : cur_q == EngTri ? tri_level :
+                     cur_q == EngFel ? fel_level : '0;
+  assign p_visited = nz_busy ? '0 : cur_q == EngEwa ? ewa_visited : cur_q == EngFel ? fel_texels
                                      : tu_formats_pkg::EwaCountW'(cur_q == EngTri ? 8 : cur_q == EngNst ? 1 : 4);
-  assign p_inside  = nz_busy || cur_q != EngEwa ? '0 : ewa_inside;
+  assign p_inside  = nz_busy ? '0 : cur_q == EngEwa ? ewa_inside :
+                     cur_q == EngFel ? tu_formats_pkg::EwaCountW'(fel_probes) : '0;
   assign p_flags   = nz_busy || cur_q != EngEwa ? '0 : ewa_flags;
 
 
@@ -644,7 +691,7 @@ module tu_texture_unit #(
   `TU_ASSERT_HANDSHAKE(InHandshakeB1, in_valid_i, in_ready_o, {a_i, b_i, c_i, d_i, e_i, f_i, g_i, h_i, i_i, x0_i, x1_i, y_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeB2, in_valid_i, in_ready_o, {kux_i, kvx_i, kuy_i, kvy_i, m_i, nn_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, twrap_i,
-                                                                 wsrc_i, cap_i, filt_i, clip_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
+                                                                 wsrc_i, cap_i, filt_i, fnmax_i, clip_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
                                                                  hlw_i, hlh_i, rdm_i, dlayers_i, dbase_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeProc, in_valid_i, in_ready_o, {proc_i})
   `TU_ASSERT_HANDSHAKE(ViewHandshake, view_valid_i, view_ready_o, {view_ok_i, vx_i, vy_i, vz_i, vc_i})

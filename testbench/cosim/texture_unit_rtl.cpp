@@ -40,7 +40,7 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kWrap,
   kWsrc, kCap, kFilt, kClip, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
-  kRdm, kDlayers, kDbase, kLbase, kLtop,
+  kRdm, kDlayers, kDbase, kLbase, kLtop, kFnmax,
   kProc, kProcWords = (schema::kProcW + 63) / 64, kRowSize = kProc + kProcWords  // tu_proc_t, least significant first
 };
 
@@ -109,6 +109,7 @@ void drive(V& d, const Row& r) {
   d.wsrc_i = static_cast<uint8_t>(r[kWsrc]);
   d.cap_i = static_cast<uint32_t>(r[kCap]);
   d.filt_i = static_cast<uint8_t>(r[kFilt]);
+  d.fnmax_i = static_cast<uint8_t>(r[kFnmax]);
   d.clip_i = static_cast<uint8_t>(r[kClip]);
   d.rel_i = static_cast<uint8_t>(r[kRel]);
   d.radapt_i = static_cast<uint8_t>(r[kRadapt]);
@@ -141,8 +142,6 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (f != scene::Filter::Bilinear && !o.has_ewa)
       throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: " + std::string(scene::to_string(f)) +
                                   ", but the unit is bilinear-only");
-    if (f == scene::Filter::Feline)
-      throw std::invalid_argument(s.source + ": /materials/" + name + "/filter: feline, but the RTL unit has no Feline engine yet");
     engine_of[name] = render::engine_of(f);
   }
   // The corridor unit (its plan: EWA with the 1-D weight table on every material, iterative
@@ -309,6 +308,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       r[kCap] = ewa::kDefaultMaxTexels;
       const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(c.object)].material);
       r[kFilt] = static_cast<uint64_t>(eng);
+      r[kFnmax] = static_cast<uint64_t>(m.feline_max_probes);
       r[kClip] = clip_on(m);
       if (ob.proc) {
         const auto pw = pack_proc(*ob.proc);
@@ -362,6 +362,11 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         // Trilinear: one bilinear pass for a guard pixel or a lod (GL rule) at the top level.
         const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;
         pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(tlod >> fmt::kTexLodF), top);
+        if (eng == ewa::Engine::Feline && pix < expect.pixels.size()) {  // its probes at their lod
+          const auto& rec = expect.pixels[pix];
+          pc.probes = guard ? 1 : rec.probes;
+          pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(std::floor(rec.lod)), top);
+        }
         costs.push_back(pc);
         if (shade_unit) shades.push_back(brdf::shade::pack(shade.fx_in(rays, c.object, c.triangle, px, y)));
         relief::StagePixel rp;
@@ -474,7 +479,8 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       // Bilinear / trilinear / nearest pixels: the unit reports 4 / 8 / 1 texels, no EWA flags (the C
       // model's level and texel records of those are its own bookkeeping: compared is the engine
       // that filtered, and the colour).
-      // Procedural pixels (the noise unit): no texels, no filter flags.
+      // Procedural pixels (the noise unit): no texels, no filter flags. Feline pixels: floor(lod),
+      // their texels, and their probes in the inside count (0 for a guard pixel: no filter).
       const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(e.object)].material);
       const bool noise = objs[static_cast<size_t>(e.object)].proc.has_value();
       const bool same = rec.x == e.x && rec.y == e.y && rec.color == e.color && rec.b2_flags == e.b2_flags &&
@@ -484,9 +490,13 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
                          : eng == ewa::Engine::Ewa
                              ? rec.lod == e.lod && rec.texels == e.texels && rec.texels_inside == e.texels_inside &&
                                    rec.ewa_flags == e.ewa_flags
+                         : eng == ewa::Engine::Feline
+                             ? rec.lod == std::floor(e.lod) && rec.texels == e.texels &&
+                                   rec.texels_inside == e.probes && rec.ewa_flags == 0
                              : rec.texels == (eng == ewa::Engine::Trilinear ? 8 : eng == ewa::Engine::Nearest ? 1 : 4) &&
                                    rec.texels_inside == 0 &&
                                    rec.ewa_flags == 0);
+      if (eng == ewa::Engine::Feline) rec.probes = rec.texels_inside, rec.texels_inside = 0;
       if (!same) {
         if (out.mismatches == 0) {
           char buf[256];

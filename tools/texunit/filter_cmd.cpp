@@ -2,10 +2,8 @@
 // docs/blocks/feline.md. Every filter of the unit (nearest, bilinear, trilinear, EWA) and Feline at
 // probe caps 2, 4, 8, 16 through the bit-accurate C model on the scene's texture path (relief
 // off): PSNR against the box ground truth and the float EWA, probes, texels and clocks per pixel,
-// texels per clock. Clocks: the RTL texture unit's exact cycle model (ewa::stream_cycles) for the
-// engines it has; Feline has no RTL engine yet, so its clocks are the model of one built from the
-// unit's tu_trilinear: its N probes as N back-to-back tu_trilinear passes (set-up and the
-// weighted sum overlapped), a lower bound for that engine (marked "model").
+// texels per clock. Clocks: the RTL texture unit's exact cycle model (ewa::stream_cycles, equal to
+// Verilator) for every engine, Feline's tu_feline included.
 #include "filter_cmd.hpp"
 
 #include <algorithm>
@@ -34,22 +32,7 @@ namespace {
 struct Row {
   std::string name;
   double psnr_truth = 0, psnr_ewa = 0, probes = 0, texels = 0, clocks = 0;
-  bool modelled = false;
 };
-
-// Feline's clocks on a unit built from tu_trilinear: every probe one trilinear pass (one level
-// when the probes' LOD is the top level, as tu_trilinear), B1-guard pixels one pass.
-uint64_t feline_model_cycles(const render::Frame& fr) {
-  std::vector<ewa::PixelCost> costs;
-  for (const auto& p : fr.pixels) {
-    ewa::PixelCost c;
-    c.engine = ewa::Engine::Trilinear;
-    const int n = std::max(1, p.probes);
-    c.one_level = p.probes == 0 || p.texels == 4 * n;
-    costs.insert(costs.end(), static_cast<size_t>(n), c);
-  }
-  return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(false)));
-}
 
 void write_plot(const std::vector<Row>& rows, const std::string& dir, const std::string& title) {
   const std::string dat = dir + "/psnr_vs_clocks.dat", gp = dir + "/psnr_vs_clocks.gp";
@@ -82,35 +65,34 @@ int run_filter_compare(const FilterCompareArgs& a) {
   const auto ewa_ref = render::render_ref(s, scene::Filter::Ewa);
   const double n = static_cast<double>(std::max<size_t>(1, truth.pixels.size()));
   std::vector<Row> rows;
-  auto measure = [&](const std::string& name, const scene::Scene& si, scene::Filter f, bool feline) {
+  auto measure = [&](const std::string& name, const scene::Scene& si, scene::Filter f) {
     const auto fr = render::render_cmodel(si, f, render::texture_path_only());
     Row r{name, render::psnr_covered(fr, truth), render::psnr_covered(fr, ewa_ref)};
     for (const auto& p : fr.pixels) r.probes += p.probes, r.texels += p.texels;
     r.probes /= n;
     r.texels /= n;
-    r.modelled = feline;
-    r.clocks = double(feline ? feline_model_cycles(fr) : plan::scene_stream_cycles(si, [f](const scene::Material&) { return f; }, false)) / n;
+    r.clocks = double(plan::scene_stream_cycles(si, [f](const scene::Material&) { return f; }, false)) / n;
     rows.push_back(r);
   };
   for (const scene::Filter f : {scene::Filter::Nearest, scene::Filter::Bilinear, scene::Filter::Trilinear})
-    measure(scene::to_string(f), s, f, false);
+    measure(scene::to_string(f), s, f);
   for (const int cap : {2, 4, 8, 16}) {
     scene::Scene si = s;
     for (auto& [name, m] : si.materials) m.feline_max_probes = cap;
-    measure("feline N<=" + std::to_string(cap), si, scene::Filter::Feline, true);
+    measure("feline N<=" + std::to_string(cap), si, scene::Filter::Feline);
   }
-  measure("ewa", s, scene::Filter::Ewa, false);
+  measure("ewa", s, scene::Filter::Ewa);
   std::printf("%s: %dx%d, %zu covered pixels, texture path (relief off), C model; truth %d x %d samples per pixel, box\n",
               s.source.c_str(), s.camera.width, s.camera.height, truth.pixels.size(), a.ss, a.ss);
   std::printf("%-14s %12s %14s %11s %11s %11s %12s %12s\n", "filter", "PSNR truth", "PSNR float EWA", "probes/px",
               "texels/px", "clocks/px", "texels/clock", "4/clk bound");
   for (const auto& r : rows)
-    std::printf("%-14s %9.2f dB %11.2f dB %11.2f %11.2f %10.2f%s %12.3f %12.2f\n", r.name.c_str(), r.psnr_truth,
-                r.psnr_ewa, r.probes, r.texels, r.clocks, r.modelled ? "*" : " ", r.texels / r.clocks,
+    std::printf("%-14s %9.2f dB %11.2f dB %11.2f %11.2f %11.2f %12.3f %12.2f\n", r.name.c_str(), r.psnr_truth,
+                r.psnr_ewa, r.probes, r.texels, r.clocks, r.texels / r.clocks,
                 std::max(1.0, r.texels / 4));
-  std::printf("clocks/px: the RTL texture unit's exact cycle model (ewa::stream_cycles, = Verilator); * model: "
-              "Feline as N back-to-back tu_trilinear passes (no Feline RTL engine yet); 4/clk bound: texels / 4, "
-              "the clocks of a datapath reading a 2x2 texel block per clock (a GPU's bilinear probe)\n");
+  std::printf("clocks/px: the RTL texture unit's exact cycle model (ewa::stream_cycles, = Verilator; Feline: "
+              "tu_feline, its probes through one tu_trilinear); 4/clk bound: texels / 4, the clocks of a datapath "
+              "reading a 2x2 texel block per clock (a GPU's bilinear probe)\n");
   if (!a.plot.empty()) write_plot(rows, a.plot, s.source + ": PSNR vs clocks per pixel");
   return 0;
 }

@@ -144,7 +144,8 @@ std::optional<scene::WeightSource> engine_source(const TRow& r) {
 
 // The plan's filter names (mat_filter) as scene filters.
 scene::Filter filter_named(const std::string& f) {
-  return f == "bilinear" ? scene::Filter::Bilinear : f == "trilinear" ? scene::Filter::Trilinear : scene::Filter::Ewa;
+  return f == "bilinear" ? scene::Filter::Bilinear : f == "trilinear" ? scene::Filter::Trilinear
+         : f == "feline"  ? scene::Filter::Feline   : scene::Filter::Ewa;
 }
 
 std::string fmt(const char* f, double x) {
@@ -362,6 +363,7 @@ struct Config {
   int noise_dims = 3, noise_cores = tu::fmt::kNoiseOctaves;
   bool water = true;  // the noise unit's water back-end (tu_noise_unit HasWater)
   int noise_scheme = 0;  // 0 pipelined, 1 octave-serial (tu_noise_unit Serial)
+  bool feline = false;  // Feline probe engine (tu_feline)
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -373,6 +375,7 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam bit HasBilinear = 1'b" << c.bilinear << ";  // bilinear engine (per-span choice with EWA)\n"
      << "  localparam bit HasTriFilter = 1'b" << c.tri_filter << ";  // trilinear engine (tu_trilinear)\n"
      << "  localparam bit HasNearest = 1'b" << c.nearest << ";  // nearest engine (tu_nearest)\n"
+     << "  localparam bit HasFeline = 1'b" << c.feline << ";  // Feline probe engine (tu_feline)\n"
      << "  localparam bit HasRelief = 1'b" << c.relief << ";\n"
      << "  localparam bit HasPom = 1'b" << c.pom << ";  // tu_pom_layers + tu_pom_march\n"
      << "  localparam bit HasIterParallax = 1'b" << c.iter_parallax << ";\n"
@@ -431,6 +434,12 @@ uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::F
       // A B1-guard pixel is recorded with 1 texel (the workload's guard is EWA's: no level tried).
       c.one_level = ewa::trilinear_one_level(rec.texels == 1, static_cast<int>(std::floor(rec.lod)), top_level[obj]);
     }
+    if (c.engine == ewa::Engine::Feline) {
+      // A B1-guard pixel is recorded with 1 texel and no probes (one guard pass).
+      c.guard = rec.texels == 1 && rec.probes == 0;
+      c.probes = c.guard ? 1 : rec.probes;
+      c.one_level = ewa::trilinear_one_level(c.guard, static_cast<int>(std::floor(rec.lod)), top_level[obj]);
+    }
     c.noise = obj < noise_objects.size() && noise_objects[obj];
     c.water = obj < water_objects.size() && water_objects[obj];
     costs.push_back(c);
@@ -443,6 +452,54 @@ uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::F
   if (relief_stage && !ell_recurrence && std::find(noise_objects.begin(), noise_objects.end(), true) != noise_objects.end())
     return ewa::texture_unit_cycles(costs, std::vector<relief::StagePixel>(costs.size()), ep);
   return ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(relief_stage, ell_recurrence)), ep);
+}
+
+// Feline for an anisotropic material (docs/blocks/feline.md): the probe caps 2, 4, 8, 16 in turn,
+// the first whose float render meets min_psnr_db on the material's pixels against the float EWA;
+// chosen when its clocks per pixel (the RTL unit's exact cycle model on the material's objects
+// alone, C-model probes) are fewer than the EWA's there.
+struct FelineChoice {
+  int cap = 0;  // 0: not chosen
+  std::string why;
+  json j;
+  std::optional<render::Frame> frame;
+};
+FelineChoice choose_feline(const scene::Scene& s, const std::string& material, const render::Frame& ewa_ref,
+                           const std::function<bool(int)>& mine) {
+  scene::Scene only = s;
+  only.objects.clear();
+  for (const auto& o : s.objects)
+    if (o.material == material) only.objects.push_back(o);
+  auto clocks = [&](scene::Filter f, int cap) {
+    scene::Scene t = only;
+    t.materials.at(material).feline_max_probes = cap;
+    size_t n = 0;
+    const uint64_t c = scene_stream_cycles(t, [f](const scene::Material&) { return f; }, false, std::nullopt, false, 0, {}, &n);
+    return n ? double(c) / double(n) : 0.0;
+  };
+  FelineChoice c;
+  c.j = {{"caps", json::object()}};
+  c.why = "feline: ";
+  for (const int cap : {2, 4, 8, 16}) {
+    scene::Scene t = s;
+    t.materials.at(material).feline_max_probes = cap;
+    render::Frame fr = render::render_ref(t, scene::Filter::Feline);
+    const double p = psnr_objects(fr, ewa_ref, mine);
+    c.j["caps"][std::to_string(cap)] = {{"psnr_db", p}};
+    c.why += "Nmax " + std::to_string(cap) + " " + fmt("%.2f dB", p);
+    if (p < s.budget.min_psnr_db) {
+      c.why += ", ";
+      continue;
+    }
+    const double clk = clocks(scene::Filter::Feline, cap), ewa_clk = clocks(scene::Filter::Ewa, cap);
+    c.j["caps"][std::to_string(cap)]["clocks_per_px"] = clk;
+    c.j["ewa_clocks_per_px"] = ewa_clk;
+    c.why += " at " + fmt("%.2f", clk) + " clocks/px against EWA's " + fmt("%.2f", ewa_clk);
+    if (clk < ewa_clk) c.cap = cap, c.frame = std::move(fr);
+    return c;  // larger caps cost more clocks
+  }
+  c.why += "none meets the budget";
+  return c;
 }
 
 int run(const Options& opt) {
@@ -513,6 +570,9 @@ int run(const Options& opt) {
   const render::Frame ewa = render::render_ref(s, scene::Filter::Ewa);
   std::optional<render::Frame> tri;
   std::map<std::string, std::string> mat_filter;
+  std::map<std::string, int> mat_cap;                    // Feline materials: the chosen probe cap
+  std::map<std::string, render::Frame> feline_frames;    // their float renders at that cap
+  json feline_json = json::object();
   std::string filter_why;
   for (const auto& [name, count] : material_pixels) {
     auto mine = [&](int object) { return s.objects[static_cast<size_t>(object)].material == name; };
@@ -539,6 +599,16 @@ int run(const Options& opt) {
         why += "trilinear: footprint gate fails (p99 anisotropy " + fmt("%.2f", qa) + ")";
       }
     }
+    if (f == "ewa") {
+      FelineChoice fc = choose_feline(s, name, ewa, mine);
+      why += "; " + fc.why;
+      feline_json[name] = fc.j;
+      if (fc.cap > 0) {
+        f = "feline";
+        mat_cap[name] = fc.cap;
+        feline_frames.emplace(name, std::move(*fc.frame));
+      }
+    }
     mat_filter[name] = f;
     filter_why += (filter_why.empty() ? "" : " | ") + why;
   }
@@ -546,15 +616,23 @@ int run(const Options& opt) {
     return std::any_of(mat_filter.begin(), mat_filter.end(), [&](const auto& kv) { return kv.second == f; });
   };
   // The scene's most capable filter names the unit's footprint path and its weights.
-  const std::string filter = uses("ewa") ? "ewa" : uses("trilinear") ? "trilinear" : "bilinear";
+  const std::string filter = uses("ewa") ? "ewa" : uses("feline") ? "feline" : uses("trilinear") ? "trilinear" : "bilinear";
+  // The chosen probe caps from here on (the planned unit's cycles).
+  for (const auto& [name, cap] : mat_cap) s.materials.at(name).feline_max_probes = cap;
   // The picture of the plan: each pixel from its material's filter; its PSNR against EWA.
   render::Frame planned_frame = ewa;
   for (const auto& p : planned_frame.pixels) {
-    const std::string& f = mat_filter.at(s.objects[static_cast<size_t>(p.object)].material);
-    if (f != "ewa") planned_frame.image.at(p.x, p.y) = (f == "bilinear" ? bil : *tri).image.at(p.x, p.y);
+    const std::string& mat = s.objects[static_cast<size_t>(p.object)].material;
+    const std::string& f = mat_filter.at(mat);
+    if (f != "ewa")
+      planned_frame.image.at(p.x, p.y) =
+          (f == "bilinear" ? bil : f == "feline" ? feline_frames.at(mat) : *tri).image.at(p.x, p.y);
   }
   const double filter_psnr = render::psnr_covered(planned_frame, ewa);
-  const render::Frame* chosen_frame = filter == "ewa" ? &ewa : filter == "trilinear" ? &*tri : &bil;
+  const render::Frame* chosen_frame = filter == "ewa"         ? &ewa
+                                      : filter == "feline"    ? &feline_frames.begin()->second
+                                      : filter == "trilinear" ? &*tri
+                                                              : &bil;
 
   // 2c. Pipeline per material (plan_pipeline.hpp): object space where it meets the budget for
   //     fewer clocks than the material's screen-space filter, measured by rendering the material
@@ -740,10 +818,11 @@ int run(const Options& opt) {
                       ": the unit's EWA walk has one clip volume");
   const int clip_code = !clip_named.empty() ? ewa::rtl_clip_code(*clip_named.begin())
                         : clip && ewa::rtl_clip_code(clip->variant) >= 0 ? ewa::rtl_clip_code(clip->variant) : 0;
-  const Config planned{has_tri, has_ewa, uses("bilinear"), uses("trilinear"), false, relief, pom, iterative, max_layers, weight_bit(weights),
+  Config planned{has_tri, has_ewa, uses("bilinear"), uses("trilinear"), false, relief, pom, iterative, max_layers, weight_bit(weights),
                        log2n("weight_table_1d"), log2n("weight_table_2d"), persp->variant == "klane4" ? 4 : 1,
                        ell_rec && has_tri, false, shading::kUnitModel, /*distance_map, set below*/ false,
                        /*wrap_modes, set below*/ 31, !clip_named.empty(), clip_code};
+  planned.feline = uses("feline");
   // The full unit: everything in, relief up to the scene format's 256 layers.
   Config planned_shaded = planned;
   planned_shaded.shading = shade;
@@ -762,9 +841,13 @@ int run(const Options& opt) {
   planned_shaded.water = noise.water;
   if (brdf_row) planned_shaded.shade_model = shading::model_of(brdf_row->variant);
   // The full unit: F_MSH (the thesis's model) when the scene does not need another.
-  const Config everything{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n,
-                          planned.persp_lanes, false, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel,
-                          true, 31, true, clip_code, true};
+  const Config everything = [&] {
+    Config c{true, true, true, true, true, true, true, true, 256, 7, planned.wtab_log2n, planned.wtab2d_log2n,
+             planned.persp_lanes, false, true, brdf_row ? planned_shaded.shade_model : shading::kUnitModel,
+             true, 31, true, clip_code, true};
+    c.feline = true;
+    return c;
+  }();
 
   // 5. Scene cycles of the RTL texture unit (texture path), from the exact cycle model
   //    ewa::stream_cycles on the bit-accurate C-model render's per-pixel work (equal to Verilator:
@@ -816,6 +899,8 @@ int run(const Options& opt) {
               {"budget", {{"max_texel_err", s.budget.max_texel_err}, {"min_psnr_db", s.budget.min_psnr_db}}},
               {"filter", filter},
               {"filters", mat_filter},
+              {"feline_max_probes", mat_cap},
+              {"feline_candidates", feline_json},
               {"filter_psnr_db", std::isinf(filter_psnr) ? json("reference") : json(filter_psnr)},
               {"filter_reasons", filter_why},
               {"relief", relief},
@@ -878,7 +963,9 @@ int run(const Options& opt) {
   std::printf("scene %s: %zu covered pixels; footprint p99 LOD %.2f, p99 anisotropy %.2f\n", s.source.c_str(), px, q_lod, q_aniso);
   std::printf("budget: max_texel_err %g texel, min_psnr_db %g dB\n", s.budget.max_texel_err, s.budget.min_psnr_db);
   std::string per_mat;
-  for (const auto& [name, f] : mat_filter) per_mat += (per_mat.empty() ? "" : ", ") + name + " " + f;
+  for (const auto& [name, f] : mat_filter)
+    per_mat += (per_mat.empty() ? "" : ", ") + name + " " + f +
+               (mat_cap.count(name) ? " (Nmax " + std::to_string(mat_cap.at(name)) + ")" : "");
   std::printf("filters: %s; the plan's picture %s against the float EWA\n  (%s)\n", per_mat.c_str(),
               std::isinf(filter_psnr) ? "is" : (fmt("%.2f", filter_psnr) + " dB").c_str(), filter_why.c_str());
   std::printf("pipeline per material (each material rendered alone, texture path; the top has no object-space path):\n");

@@ -72,6 +72,12 @@ StreamModel::Times StreamModel::add(const PixelCost& c, uint64_t avail) {
       last_out_ = a + (c.one_level ? 8 : 15);
       tri_free_ = last_out_ + 1;
       break;
+    case Engine::Feline: {
+      const auto t = fel_.add({c.probes, c.one_level, c.guard}, ready);
+      a = t.accept;
+      last_out_ = t.out;
+      break;
+    }
     case Engine::Ewa: {
       a = std::max(setup_free_, ready);                                               // accept
       const uint64_t h = std::max(a + static_cast<uint64_t>(setup_cycles(c, p_)), walker_free_);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "ewa/ewa_fx.hpp"
+#include "feline/feline_cycles.hpp"
 #include "pom/relief.hpp"
 
 namespace tu::ewa {
@@ -52,6 +53,7 @@ struct PixelCost {
   bool clip = false;       // EWA with sub-texel border weights (the grown box is in `box`)
   bool noise = false;      // procedural: the noise unit (tu_noise_unit), not `engine`
   bool water = false;      // noise: a water pixel (WaterPasses octave sums, NoiseWaterLatency)
+  int probes = 1;          // Feline: trilinear probes N (one_level: they blend one level)
 };
 
 // Per-pixel counts of the C model's result.
@@ -92,6 +94,7 @@ class StreamModel {
   uint64_t setup_free_ = 0, walker_free_ = 0, bil_free_ = 0, tri_free_ = 0, nst_free_ = 0, noise_free_ = 0, last_out_ = 0;
   bool any_ = false, last_noise_ = false, last_water_ = false;
   Engine last_engine_ = Engine::Ewa;
+  feline::EngineModel fel_;  // the Feline engine (feline/feline_cycles.hpp)
 };
 
 // The full texture unit (tu_texture_unit with its relief stage) on a stream of covered pixels,

@@ -119,8 +119,7 @@ uint32_t laniso_code(double max_aniso);
 // The material's sampler LOD state as codes (bias, min / max lod, base / max level).
 tex::LodParams lod_params(const scene::Material& m);
 
-// The RTL texture unit's engine for a material's filter (its filt_i code); std::invalid_argument
-// for a filter the RTL has no engine for (feline).
+// The RTL texture unit's engine for a material's filter (its filt_i code).
 ewa::Engine engine_of(scene::Filter f);
 Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter = {},
                     const CmodelOptions& opt = {});

@@ -19,7 +19,8 @@
   X(Bilinear, 0, "bilinear at level 0 (tu_bilinear)")                         \
   X(Ewa, 1, "EWA (tu_ewa)")                                                   \
   X(Trilinear, 2, "trilinear between floor(lod) and the next (tu_trilinear)") \
-  X(Nearest, 3, "nearest texel at level 0 (tu_nearest)")
+  X(Nearest, 3, "nearest texel at level 0 (tu_nearest)")                     \
+  X(Feline, 4, "Feline probes along the major axis (tu_feline)")
 // EWA weight source (tu_ewa wsrc_i; SV tu_formats_pkg::WsrcFormula ...).
 #define TU_WEIGHT_SOURCE_CODES(X)                               \
   X(Formula, 0, "Gaussian formula (tu_gauss_weight)")           \
@@ -65,7 +66,12 @@
   X(cap, kEwaCountW, "EWA texel cap")                                  \
   X(filt, kEngineW, "filter engine (Eng* codes)")                     \
   X(clip, 1, "EWA sub-texel border weights (the unit's EwaClipVariant)") \
-  X(tlbase, 4, "colour texture: base level (tex::level_range), nearest and bilinear sample it")
+  X(tlbase, 4, "colour texture: base level (tex::level_range), nearest and bilinear sample it") \
+  X(lbias, kTexLodBiasW, "Feline probe lod: the sampler rule's bias (s14.8)")     \
+  X(lminlod, kEllLodW, "Feline probe lod: min lod")                               \
+  X(lmaxlod, kEllLodW, "Feline probe lod: max lod")                               \
+  X(ltop, 4, "Feline probe lod: the top level of the material's range")          \
+  X(fnmax, kFelProbeW, "Feline probe cap Nmax (1..FelNMax)")
 // Material relief fields, used up by the relief stage.
 #define TU_REC_RELIEF(X)                             \
   X(rel, 1, "POM relief on")                         \
@@ -142,7 +148,7 @@ enum class Engine { TU_ENGINE_CODES(TU_X_ENUM) };
 enum class WeightSource { TU_WEIGHT_SOURCE_CODES(TU_X_ENUM) };
 enum class Wrap { TU_WRAP_CODES(TU_X_ENUM) };
 #undef TU_X_ENUM
-inline constexpr int kEngineW = 2;
+inline constexpr int kEngineW = 3;
 inline constexpr int kWsrcW = 2;
 inline constexpr int kWrapW = 3;
 #define TU_X_COUNT(name, code, desc) +1

@@ -6,6 +6,7 @@ package tu_unit_cfg_pkg;
   localparam bit HasBilinear = 1'b0;  // bilinear engine (per-span choice with EWA)
   localparam bit HasTriFilter = 1'b0;  // trilinear engine (tu_trilinear)
   localparam bit HasNearest = 1'b0;  // nearest engine (tu_nearest)
+  localparam bit HasFeline = 1'b0;  // Feline probe engine (tu_feline)
   localparam bit HasRelief = 1'b1;
   localparam bit HasPom = 1'b0;  // tu_pom_layers + tu_pom_march
   localparam bit HasIterParallax = 1'b1;
