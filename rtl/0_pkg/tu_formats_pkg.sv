@@ -251,6 +251,8 @@ package tu_formats_pkg;
   localparam int AfvDistW = 23;  // n: ray length to the next cell boundary, |P| s units: unsigned, PomUvF bits
   localparam int AfvCrossW = 45;  // crossing order e = n_u |Pv|, n_v |Pu|: unsigned, exact products
   localparam int AfvTestW = 32;  // depth test (d0 - h) |P| vs 255 n: exact, signed, PomUvF bits
+  localparam int AfvRowLog2 = 9;
+  localparam int AfvRowCycles = 6;
   // filter engine of a span (schema.hpp TU_ENGINE_CODES)
   typedef enum logic [1:0] {
     EngBilinear = 2'd0,  // bilinear at level 0 (tu_bilinear)
@@ -290,10 +292,10 @@ package tu_formats_pkg;
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
   localparam int MaterialW = 66;  // material fields of a pixel
-  localparam int ReliefW = 94;  // material relief fields
+  localparam int ReliefW = 112;  // material relief fields
   localparam int TriW = 112;  // per-triangle footprint constants
   localparam int ProcW = 338;  // procedural material constants
   localparam int FpixW = 429;  // pixel on its way to the filter
-  localparam int PixW = 523;  // pixel before the relief stage
+  localparam int PixW = 541;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage
