@@ -7,10 +7,16 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "afvis_block.hpp"
 #include "cosim_checks.hpp"
 #include "ewa/ewa_cycles.hpp"
+#include "texture_unit_rtl.hpp"
+#include "texunit/render.hpp"
+#include "texunit/scene.hpp"
 
 namespace {
 using namespace tu;
@@ -64,3 +70,69 @@ TEST(AfvisCosim, CyclesMatchPrediction) {
 }
 
 }  // namespace
+
+// Inside the texture-unit top (the full unit, HasAfvis = 1): docs/scenes/af_visibility.json at
+// 48 x 36 with relief, every pixel == render_cmodel (colour, level, texel counts, flags, relief
+// results) with 30 % stalls; without stalls the cycles are the unit's cycle model
+// (ewa::texture_unit_cycles with PixelCost::afv_walk). Visibility is really on: pixels go through
+// tu_afvis and the picture differs from the same scene without the flag.
+TEST(TextureUnitRtl, AfVisibilitySceneEqualsCModelWithCyclesPredicted) {
+  auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/af_visibility.json");
+  s.camera.width = 48;
+  s.camera.height = 36;
+  render::CmodelOptions co;
+  const render::Frame c = render::render_cmodel(s, std::nullopt, co);
+  size_t afv = 0;
+  for (const auto& p : c.pixels) afv += p.afv_clocks > 0;
+  EXPECT_GT(afv, c.pixels.size() / 2);
+  cosim::RtlRenderOptions o;
+  o.relief = true;
+  o.stall_prob = 0.3;
+  const auto r = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r.ok()) << r.first_mismatch;
+  auto flat = s;
+  for (auto& [n, m] : flat.materials) m.relief->af_visibility = false;
+  o.stall_prob = 0;
+  const auto plain = cosim::render_rtl(flat, o);
+  EXPECT_TRUE(plain.ok()) << plain.first_mismatch;
+  size_t differ = 0;
+  for (size_t i = 0; i < r.frame.pixels.size() && i < plain.frame.pixels.size(); ++i)
+    differ += !(r.frame.pixels[i].color == plain.frame.pixels[i].color);
+  EXPECT_GT(differ, afv / 4);
+  const auto r0 = cosim::render_rtl(s, o);
+  EXPECT_TRUE(r0.ok()) << r0.first_mismatch;
+  EXPECT_EQ(r0.cycles, r0.predicted_cycles);
+  EXPECT_EQ(plain.cycles, plain.predicted_cycles);
+  std::printf("af_visibility 48x36: %zu px, %zu through tu_afvis, %zu differ from plain EWA; cycles measured %llu "
+              "predicted %llu (plain EWA: %llu), %.1f / %.1f cycles per px\n",
+              r0.frame.pixels.size(), afv, differ, (unsigned long long)r0.cycles, (unsigned long long)r0.predicted_cycles,
+              (unsigned long long)plain.cycles, double(r0.cycles) / double(r0.frame.pixels.size()),
+              double(plain.cycles) / double(plain.frame.pixels.size()));
+}
+
+// What the unit cannot do is refused naming the field (exit 2 from the CLI): border weights with
+// visibility, and the corridor unit (no visibility engine).
+TEST(TextureUnitRtl, AfVisibilityRefusals) {
+  auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/af_visibility.json");
+  s.camera.width = 8;
+  s.camera.height = 6;
+  cosim::RtlRenderOptions o;
+  o.relief = true;
+  auto clip = s;
+  clip.materials.at("floor").clip = "mm_p1";
+  try {
+    cosim::render_rtl(clip, o);
+    ADD_FAILURE() << "clip with af_visibility accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("/materials/floor/relief/af_visibility"), std::string::npos) << e.what();
+  }
+  o.corridor_unit = true;  // its other limits met: the 1-D weight table, iterative relief
+  o.weights = scene::WeightSource::Table1d;
+  for (auto& [n, m] : s.materials) m.relief->method = scene::ReliefMethod::Iterative;
+  try {
+    cosim::render_rtl(s, o);
+    ADD_FAILURE() << "the corridor unit accepted af_visibility";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("relief/af_visibility: the corridor unit"), std::string::npos) << e.what();
+  }
+}
