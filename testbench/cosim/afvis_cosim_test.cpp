@@ -72,16 +72,18 @@ TEST(AfvisCosim, CyclesMatchPrediction) {
 }  // namespace
 
 // Inside the texture-unit top (the full unit, HasAfvis = 1): docs/scenes/af_visibility.json at
-// 48 x 36 with relief, every pixel == render_cmodel (colour, level, texel counts, flags, relief
+// 40 x 30 with relief, every pixel == render_cmodel (colour, level, texel counts, flags, relief
 // results) with 30 % stalls; without stalls the cycles are the unit's cycle model
-// (ewa::texture_unit_cycles with PixelCost::afv_walk). Visibility is really on: pixels go through
-// tu_afvis and the picture differs from the same scene without the flag.
+// (ewa::texture_unit_cycles with PixelCost::afv_walk). Visibility is really on: most pixels go
+// through tu_afvis and the C model's picture without visibility differs from the unit's.
 TEST(TextureUnitRtl, AfVisibilitySceneEqualsCModelWithCyclesPredicted) {
   auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/af_visibility.json");
-  s.camera.width = 48;
-  s.camera.height = 36;
+  s.camera.width = 40;
+  s.camera.height = 30;
   render::CmodelOptions co;
   const render::Frame c = render::render_cmodel(s, std::nullopt, co);
+  co.afvis = render::AfvisMode::Off;
+  const render::Frame plain = render::render_cmodel(s, std::nullopt, co);
   size_t afv = 0;
   for (const auto& p : c.pixels) afv += p.afv_clocks > 0;
   EXPECT_GT(afv, c.pixels.size() / 2);
@@ -90,24 +92,18 @@ TEST(TextureUnitRtl, AfVisibilitySceneEqualsCModelWithCyclesPredicted) {
   o.stall_prob = 0.3;
   const auto r = cosim::render_rtl(s, o);
   EXPECT_TRUE(r.ok()) << r.first_mismatch;
-  auto flat = s;
-  for (auto& [n, m] : flat.materials) m.relief->af_visibility = false;
-  o.stall_prob = 0;
-  const auto plain = cosim::render_rtl(flat, o);
-  EXPECT_TRUE(plain.ok()) << plain.first_mismatch;
   size_t differ = 0;
-  for (size_t i = 0; i < r.frame.pixels.size() && i < plain.frame.pixels.size(); ++i)
-    differ += !(r.frame.pixels[i].color == plain.frame.pixels[i].color);
+  for (size_t i = 0; i < r.frame.pixels.size() && i < plain.pixels.size(); ++i)
+    differ += !(r.frame.pixels[i].color == plain.pixels[i].color);
   EXPECT_GT(differ, afv / 4);
+  o.stall_prob = 0;
   const auto r0 = cosim::render_rtl(s, o);
   EXPECT_TRUE(r0.ok()) << r0.first_mismatch;
   EXPECT_EQ(r0.cycles, r0.predicted_cycles);
-  EXPECT_EQ(plain.cycles, plain.predicted_cycles);
-  std::printf("af_visibility 48x36: %zu px, %zu through tu_afvis, %zu differ from plain EWA; cycles measured %llu "
-              "predicted %llu (plain EWA: %llu), %.1f / %.1f cycles per px\n",
+  std::printf("af_visibility 40x30: %zu px, %zu through tu_afvis, %zu differ from plain EWA (C model); cycles measured "
+              "%llu predicted %llu (%.1f per px)\n",
               r0.frame.pixels.size(), afv, differ, (unsigned long long)r0.cycles, (unsigned long long)r0.predicted_cycles,
-              (unsigned long long)plain.cycles, double(r0.cycles) / double(r0.frame.pixels.size()),
-              double(plain.cycles) / double(plain.frame.pixels.size()));
+              double(r0.cycles) / double(r0.frame.pixels.size()));
 }
 
 // What the unit cannot do is refused naming the field (exit 2 from the CLI): border weights with

@@ -296,7 +296,7 @@ TEST(AfvisFx, RowBufferHoldsTheWidestRow) {
     }
   }
   std::printf("afvis: widest row %u texels with w > 0 (row buffer %d)\n", widest, 1 << fmt::kAfvRowLog2);
-  EXPECT_LE(widest, uint32_t(2 * ((1 << fmt::kEwaAxisMaxLog2) + 3) + 1));
+  EXPECT_LE(widest, uint32_t(2 * ((1 << fmt::kEwaAxisMaxLog2) + 2) + 1));
   EXPECT_LT(widest, uint32_t(1) << fmt::kAfvRowLog2);
   EXPECT_GT(widest, 200u);  // the stiff set reaches the axis clamp
 }
