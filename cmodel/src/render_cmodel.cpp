@@ -271,6 +271,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
             rec.afv_traced = static_cast<int>(a.traced);
             rec.afv_steps = static_cast<int>(a.steps);
             rec.afv_visible = static_cast<int>(a.visible);
+            rec.afv_clocks = a.clocks;
           } else {
             r = ewa::fx::filter(in, tx, ecfg);
           }

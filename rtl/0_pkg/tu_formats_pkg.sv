@@ -251,6 +251,8 @@ package tu_formats_pkg;
   localparam int AfvDistW = 23;  // n: ray length to the next cell boundary, |P| s units: unsigned, PomUvF bits
   localparam int AfvCrossW = 45;  // crossing order e = n_u |Pv|, n_v |Pu|: unsigned, exact products
   localparam int AfvTestW = 32;  // depth test (d0 - h) |P| vs 255 n: exact, signed, PomUvF bits
+  localparam int AfvRowLog2 = 9;  // walker row buffer: 2^AfvRowLog2 entries (a row has <= 2 (2^EwaAxisMaxLog2 + 2) + 1 texels)
+  localparam int AfvRowCycles = 6;  // walker clocks per box row besides its texels and traces: 5 drain + 1 row start
   // filter engine of a span (schema.hpp TU_ENGINE_CODES)
   typedef enum logic [2:0] {
     EngBilinear = 3'd0,  // bilinear at level 0 (tu_bilinear)

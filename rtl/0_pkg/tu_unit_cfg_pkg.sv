@@ -31,4 +31,5 @@ package tu_unit_cfg_pkg;
   localparam int NoiseCores = 4;  // octave cores: the largest octave count
   localparam bit HasWater = 1'b1;  // water back-end of the noise unit (normal, Lambert)
   localparam int NoiseScheme = 0;  // 0 pipelined (NoiseCores cores), 1 octave-serial (one core)
+  localparam bit HasAfvis = 1'b1;  // AF with parallax visibility (tu_afvis)
 endpackage

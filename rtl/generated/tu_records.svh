@@ -35,6 +35,10 @@ typedef struct packed {
   logic rdm;  // distance map (cap = rlayers, relief::dm_cap)
   logic [tu_formats_pkg::DmLayersW-1:0] dlayers;  // distance map: layers
   logic [tu_formats_pkg::TexAddrW-1:0] dbase;  // distance map: base word address in the depth RAM
+  logic afv;  // AF with parallax visibility on the material's EWA pixels (tu_afvis)
+  logic [7:0] admin;  // afvis: the depth map's smallest code
+  logic [7:0] abias;  // afvis: trace bias, depth codes
+  logic arule;  // afvis: 0 trace every texel, 1 the seed's row rule
 } tu_relief_t;
 // per-triangle footprint constants
 typedef struct packed {

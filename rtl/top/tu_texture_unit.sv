@@ -58,6 +58,9 @@ module tu_texture_unit #(
   // noise scheme: 0 pipelined (NoiseCores cores, one octave sum per clock), 1 octave-serial (one
   // core, NoiseCores clocks per sum)
   parameter int NoiseScheme = tu_unit_cfg_pkg::NoiseScheme,
+  // 1: AF with parallax visibility (tu_afvis, docs/blocks/afvis.md) beside tu_ewa in the EWA slot:
+  // a shifted pixel of a material with afv takes it; its depth reads use the a_* port
+  parameter int HasAfvis   = {31'b0, tu_unit_cfg_pkg::HasAfvis},
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -114,6 +117,11 @@ module tu_texture_unit #(
   input  logic                                  rdm_i,     // distance map (cap = rlayers)
   input  logic [tu_formats_pkg::DmLayersW-1:0]  dlayers_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]   dbase_i,   // the map in the depth RAM
+  // material AF with parallax visibility (HasAfvis): on, the depth map's smallest code, bias, rule
+  input  logic                                  afv_i,
+  input  logic [7:0]                            admin_i,
+  input  logic [7:0]                            abias_i,
+  input  logic                                  arule_i,
   // procedural material (tu_proc_t; on = 0: a texture material)
   input  logic [tu_formats_pkg::ProcW-1:0]      proc_i,
   // per-pixel tangent-space view, one word per pixel of a relief span, in pixel order
@@ -128,6 +136,10 @@ module tu_texture_unit #(
   output logic                                  d_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   d_addr_o,
   input  logic [7:0]                            d_data_i,
+  // the visibility engine's depth-map port (a second read port on the depth RAM; HasAfvis)
+  output logic                                  a_req_o,
+  output logic [tu_formats_pkg::TexAddrW-1:0]   a_addr_o,
+  input  logic [7:0]                            a_data_i,
   // per-pixel shade word (brdf::shade::pack), one per output pixel in pixel order (HasShading)
   input  logic                                  shade_valid_i,
   output logic                                  shade_ready_o,
@@ -210,6 +222,10 @@ module tu_texture_unit #(
     in_rel.rdm     = rdm_i;
     in_rel.dlayers = dlayers_i;
     in_rel.dbase   = dbase_i;
+    in_rel.afv     = afv_i;
+    in_rel.admin   = admin_i;
+    in_rel.abias   = abias_i;
+    in_rel.arule   = arule_i;
   end
   assign span_side = {a_i, d_i, g_i, h_i, x0_i, x1_i, y_i, in_tri, in_mat, in_rel, proc_i};
   assign in_ready_o = ps_in_ready && ns_in_ready;
@@ -354,12 +370,27 @@ module tu_texture_unit #(
 
   // ---------------- relief stage ----------------
   // B1's (u, v) shifted by the material's POM relief; everything else rides along in order.
+  // With HasAfvis a pixel also carries what the visibility engine needs: {shifted with afv, the
+  // view vx, vy, vz, S, the depth map base, log2 sides, its smallest code, bias, rule}.
+  localparam int VzW = tu_formats_pkg::PomVzW;
+  localparam int AfvW = HasAfvis != 0 ? 1 + 3 * VzW + tu_formats_pkg::PomSW + AW + 8 + 8 + 8 + 1 : 1;
   localparam int RSideW = FPixW + 1 + 3 * tu_formats_pkg::EllCoefW +
-                                   3 * tu_formats_pkg::EllLogW + 2 * tu_formats_pkg::EllLodW + 5;
+                                   3 * tu_formats_pkg::EllLogW + 2 * tu_formats_pkg::EllLodW + 5 + AfvW;
   tu_relief_t pj_rel;
   assign pj_rel = sb_pix.rel;
+  logic [AfvW-1:0] afv_side;
+  if (HasAfvis != 0) begin : g_afv_side
+    // the relief stage shifts iff rel, no B1 guard and a view (tu_relief_stage shift)
+    assign afv_side = {pj_rel.rel && pj_rel.afv && !b1_flag && view_ok_i, vx_i, vy_i, vz_i, pj_rel.rscale,
+                       pj_rel.hbase, pj_rel.hlw, pj_rel.hlh, pj_rel.admin, pj_rel.abias, pj_rel.arule};
+  end else begin : g_no_afv_side
+    assign afv_side = 1'b0;
+    logic unused_afv_rel;
+    assign unused_afv_rel = ^{pj_rel.afv, pj_rel.admin, pj_rel.abias, pj_rel.arule};
+  end
   logic [RSideW-1:0] rs_in, rs_out;
-  assign rs_in = {sb_pix.fpix, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_tlod, b2_flags, b2_lrho};
+  assign rs_in = {sb_pix.fpix, b1_flag, b2_ae, b2_ce, b2_be, b2_lmaj, b2_lmin, b2_lod, b2_tlod, b2_flags, b2_lrho,
+                  afv_side};
   logic          rs_valid, rs_ready;
   logic [UW-1:0] rs_u, rs_v;
   localparam int RrW = 2 * tu_formats_pkg::PomNW + 3;  // relief result: n, steps, flags
@@ -412,7 +443,8 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::EllLogW-1:0]  f_lmaj, f_lmin, f_lrho;
   logic [tu_formats_pkg::EllLodW-1:0]  f_lod, f_tlod;
   logic [4:0]                          f_eflags;
-  assign {f_pix, f_guard, f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_tlod, f_eflags, f_lrho, f_u, f_v, f_rr} = fq_data;
+  logic [AfvW-1:0]                     f_afv_side;
+  assign {f_pix, f_guard, f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_tlod, f_eflags, f_lrho, f_afv_side, f_u, f_v, f_rr} = fq_data;
   assign f_mat = f_pix.mat;
 
   // ---------------- filter ----------------
@@ -514,16 +546,70 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::EwaCountW-1:0] ewa_visited, ewa_inside;
   logic [4:0]                           ewa_flags;
   if (HasEwa != 0) begin : g_ewa
+    // plain EWA (tu_ewa) and, with HasAfvis, the visibility engine (tu_afvis) share the EWA slot;
+    // they take turns like the engines (afv_cur_q: the engine of the slot's pixels in flight)
+    logic pe_in_ready, pe_valid, pe_req, f_afv, afv_cur_q, av_in_ready, av_valid, av_req;
+    logic [AW-1:0] pe_addr, av_addr;
+    logic [31:0]   pe_rgba, av_rgba;
+    logic [3:0]    pe_level, av_level;
+    logic [tu_formats_pkg::EwaCountW-1:0] pe_visited, pe_inside, av_visited, av_inside;
+    logic [4:0]    pe_flags, av_flags;
+    assign f_afv = HasAfvis != 0 && f_afv_side[AfvW-1];
+    assign ewa_in_ready = (f_afv ? av_in_ready : pe_in_ready) && (inflight_q == '0 || afv_cur_q == f_afv);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) afv_cur_q <= 1'b0;
+      else if (fire_flt && sel == EngEwa) afv_cur_q <= f_afv;
+    end
     tu_ewa #(.HasClip(HasEwaClip), .ClipVariant(EwaClipVariant)) u_ewa (
-      .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngEwa), .in_ready_o(ewa_in_ready),
+      .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngEwa && !f_afv && ewa_in_ready), .in_ready_o(pe_in_ready),
       .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
       .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
       .wrap_i({f_mat.twrapv, f_mat.twrapu}), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap), .clip_i(f_mat.clip),
-      .tex_req_o(ewa_req), .tex_addr_o(ewa_addr), .tex_data_i,
-      .out_valid_o(ewa_valid), .out_ready_i(p_ready && os_valid && cur_q == EngEwa),
-      .rgba_o(ewa_rgba), .level_o(ewa_level), .visited_o(ewa_visited), .inside_o(ewa_inside),
-      .flags_o(ewa_flags)
+      .tex_req_o(pe_req), .tex_addr_o(pe_addr), .tex_data_i,
+      .out_valid_o(pe_valid), .out_ready_i(p_ready && os_valid && cur_q == EngEwa && !afv_cur_q),
+      .rgba_o(pe_rgba), .level_o(pe_level), .visited_o(pe_visited), .inside_o(pe_inside),
+      .flags_o(pe_flags)
     );
+    if (HasAfvis != 0) begin : g_afvis
+      logic [VzW-1:0] a_vx, a_vy, a_vz;
+      logic [tu_formats_pkg::PomSW-1:0] a_s;
+      logic [AW-1:0]  a_hbase;
+      logic [3:0]     a_hlw, a_hlh;
+      logic [7:0]     a_dmin, a_bias;
+      logic           a_rule, a_on;
+      logic [tu_formats_pkg::EwaCountW-1:0] a_kept, a_traced;
+      logic [23:0]    a_steps;
+      assign {a_on, a_vx, a_vy, a_vz, a_s, a_hbase, a_hlw, a_hlh, a_dmin, a_bias, a_rule} = f_afv_side;
+      tu_afvis u_afvis (
+        .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngEwa && f_afv && ewa_in_ready), .in_ready_o(av_in_ready),
+        .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
+        .lod_i(f_lod), .eflags_i(f_eflags), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
+        .wrap_i({f_mat.twrapv, f_mat.twrapu}), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap),
+        .vx_i(a_vx), .vy_i(a_vy), .vz_i(a_vz), .scale_i(a_s), .hbase_i(a_hbase), .hlw_i(a_hlw), .hlh_i(a_hlh),
+        .dmin_i(a_dmin), .bias_i(a_bias), .rule_i(a_rule),
+        .tex_req_o(av_req), .tex_addr_o(av_addr), .tex_data_i,
+        .d_req_o(a_req_o), .d_addr_o(a_addr_o), .d_data_i(a_data_i),
+        .out_valid_o(av_valid), .out_ready_i(p_ready && os_valid && cur_q == EngEwa && afv_cur_q),
+        .rgba_o(av_rgba), .level_o(av_level), .visited_o(av_visited), .inside_o(av_inside),
+        .flags_o(av_flags), .kept_o(a_kept), .traced_o(a_traced), .steps_o(a_steps)
+      );
+      logic unused_afv;
+      assign unused_afv = ^{a_on, a_kept, a_traced, a_steps};  // counts: the block's outputs only
+    end else begin : g_no_afvis
+      assign {av_in_ready, av_valid, av_req, av_addr, av_rgba, av_level, av_visited, av_inside, av_flags} = '0;
+      assign a_req_o  = 1'b0;
+      assign a_addr_o = '0;
+      logic unused_afv;
+      assign unused_afv = ^{a_data_i, f_afv_side};
+    end
+    assign ewa_valid   = afv_cur_q ? av_valid : pe_valid;
+    assign ewa_req     = afv_cur_q ? av_req : pe_req;
+    assign ewa_addr    = afv_cur_q ? av_addr : pe_addr;
+    assign ewa_rgba    = afv_cur_q ? av_rgba : pe_rgba;
+    assign ewa_level   = afv_cur_q ? av_level : pe_level;
+    assign ewa_visited = afv_cur_q ? av_visited : pe_visited;
+    assign ewa_inside  = afv_cur_q ? av_inside : pe_inside;
+    assign ewa_flags   = afv_cur_q ? av_flags : pe_flags;
   end else begin : g_no_ewa
     assign ewa_in_ready = 1'b0;
     assign ewa_valid    = 1'b0;
@@ -534,8 +620,10 @@ module tu_texture_unit #(
     assign ewa_visited  = '0;
     assign ewa_inside   = '0;
     assign ewa_flags    = '0;
+    assign a_req_o      = 1'b0;
+    assign a_addr_o     = '0;
     logic unused_ewa;
-    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_mat.wsrc, f_mat.cap, f_mat.clip};
+    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_mat.wsrc, f_mat.cap, f_mat.clip, a_data_i, f_afv_side};
   end
   if (HasBilinear != 0) begin : g_bilinear
     tu_bilinear u_bil (
@@ -692,7 +780,7 @@ module tu_texture_unit #(
   `TU_ASSERT_HANDSHAKE(InHandshakeB2, in_valid_i, in_ready_o, {kux_i, kvx_i, kuy_i, kvy_i, m_i, nn_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, twrap_i,
                                                                  wsrc_i, cap_i, filt_i, fnmax_i, clip_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
-                                                                 hlw_i, hlh_i, rdm_i, dlayers_i, dbase_i})
+                                                                 hlw_i, hlh_i, rdm_i, dlayers_i, dbase_i, afv_i, admin_i, abias_i, arule_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeProc, in_valid_i, in_ready_o, {proc_i})
   `TU_ASSERT_HANDSHAKE(ViewHandshake, view_valid_i, view_ready_o, {view_ok_i, vx_i, vy_i, vz_i, vc_i})
   `TU_ASSERT_HANDSHAKE(ShadeHandshake, shade_valid_i, shade_ready_o, {shade_i})

@@ -21,6 +21,7 @@ module tu_texture_unit_sim #(
   parameter int NoiseCores    = tu_unit_cfg_pkg::NoiseCores,
   parameter int HasWater      = {31'b0, tu_unit_cfg_pkg::HasWater},
   parameter int NoiseScheme   = tu_unit_cfg_pkg::NoiseScheme,
+  parameter int HasAfvis      = {31'b0, tu_unit_cfg_pkg::HasAfvis},
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words,
   // the depth RAM also holds the distance maps (the default scene's wall: 1,114,112 words)
   parameter int DepthWords = 2 * Words
@@ -81,6 +82,10 @@ module tu_texture_unit_sim #(
   input  logic                                  rdm_i,
   input  logic [tu_formats_pkg::DmLayersW-1:0]  dlayers_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]   dbase_i,
+  input  logic                                  afv_i,
+  input  logic [7:0]                            admin_i,
+  input  logic [7:0]                            abias_i,
+  input  logic                                  arule_i,
   input  logic [tu_formats_pkg::ProcW-1:0]      proc_i,
   // pixel output
   output logic                                  out_valid_o,
@@ -106,6 +111,9 @@ module tu_texture_unit_sim #(
   logic [63:0]                         view;
   logic [tu_formats_pkg::TexAddrW-1:0] d_addr;
   logic [31:0]                         d_word;
+  logic                                a_req;
+  logic [tu_formats_pkg::TexAddrW-1:0] a_addr;
+  logic [31:0]                         a_word;
   logic                                 shade_valid, shade_ready;
   logic [tu_formats_pkg::ShadeWordW-1:0] shade;
   tu_texture_unit #(.HasEwa(HasEwa), .HasBilinear(HasBilinear), .HasTriFilter(HasTriFilter), .HasNearest(HasNearest),
@@ -114,17 +122,19 @@ module tu_texture_unit_sim #(
                     .EllRecurrence(EllRecurrence),
                     .HasEwaClip(HasEwaClip), .EwaClipVariant(EwaClipVariant),
                     .HasNoise(HasNoise), .NoiseDims(NoiseDims), .NoiseCores(NoiseCores), .HasWater(HasWater),
-                    .NoiseScheme(NoiseScheme)) u_tu (
+                    .NoiseScheme(NoiseScheme), .HasAfvis(HasAfvis)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
     .kuy_i, .kvy_i, .m_i, .nn_i, .dm_i, .dexp_i, .laniso_i, .maxlod_i, .lbias_i, .lminlod_i, .lmaxlod_i, .lbase_i, .ltop_i,
     .tbase_i, .tlw_i, .tlh_i, .twrap_i, .wsrc_i, .cap_i, .filt_i, .fnmax_i, .clip_i,
-    .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i, .rdm_i, .dlayers_i, .dbase_i, .proc_i,
+    .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i, .rdm_i, .dlayers_i, .dbase_i,
+    .afv_i, .admin_i, .abias_i, .arule_i, .proc_i,
     .view_valid_i(view_valid), .view_ready_o(view_ready), .view_ok_i(view[3 * VzW + tu_formats_pkg::PomCW]),
     .vx_i(view[2 * VzW + tu_formats_pkg::PomCW +: VzW]), .vy_i(view[VzW + tu_formats_pkg::PomCW +: VzW]),
     .vz_i(view[tu_formats_pkg::PomCW +: VzW]), .vc_i(view[0 +: tu_formats_pkg::PomCW]),
     .d_req_o(d_req), .d_addr_o(d_addr), .d_data_i(d_word[7:0]),
+    .a_req_o(a_req), .a_addr_o(a_addr), .a_data_i(a_word[7:0]),
     .shade_valid_i(shade_valid), .shade_ready_o(shade_ready), .shade_i(shade),
     .out_valid_o, .out_ready_i,
     .x_o, .y_o, .rgba_o, .level_o, .visited_o, .inside_o, .flags_o, .eflags_o,
@@ -140,6 +150,17 @@ module tu_texture_unit_sim #(
     .clk_i, .rd_en_i(d_req), .rd_addr_i(d_addr), .rd_data_o(d_word),
     .wr_en_i(ram_we_i && ram_sel_i == 2'd1), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
   );
+  // the visibility engine's read port on the depth RAM: a copy written with it (a dual-port RAM)
+  if (HasAfvis != 0) begin : g_depth2
+    tu_texel_ram #(.Words(DepthWords)) u_depth2 (
+      .clk_i, .rd_en_i(a_req), .rd_addr_i(a_addr), .rd_data_o(a_word),
+      .wr_en_i(ram_we_i && ram_sel_i == 2'd1), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
+    );
+  end else begin : g_no_depth2
+    assign a_word = '0;
+    logic unused_a;
+    assign unused_a = ^{a_req, a_addr};
+  end
   tu_view_src #(.Words(Words)) u_views (
     .clk_i, .rst_ni, .wr_en_i(ram_we_i && ram_sel_i == 2'd2), .wr_addr_i(ram_waddr_i),
     .wr_data_i(ram_wdata_i), .out_valid_o(view_valid), .out_ready_i(view_ready), .out_data_o(view)
@@ -149,5 +170,5 @@ module tu_texture_unit_sim #(
     .wr_data_i(ram_wdata_i), .out_valid_o(shade_valid), .out_ready_i(shade_ready), .out_data_o(shade)
   );
   logic unused;
-  assign unused = ^{d_word[31:8], view[63:3 * VzW + tu_formats_pkg::PomCW + 1]};
+  assign unused = ^{d_word[31:8], a_word[31:8], view[63:3 * VzW + tu_formats_pkg::PomCW + 1]};
 endmodule

@@ -16,6 +16,7 @@
 #include "Vtu_texture_unit_sim_clip1.h"
 #include "Vtu_texture_unit_sim_clip2.h"
 #endif
+#include "afvis/afvis.hpp"
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "harness.hpp"
@@ -40,7 +41,7 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kWrap,
   kWsrc, kCap, kFilt, kClip, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
-  kRdm, kDlayers, kDbase, kLbase, kLtop, kFnmax,
+  kRdm, kDlayers, kDbase, kLbase, kLtop, kFnmax, kAfv, kAdmin, kAbias, kArule,
   kProc, kProcWords = (schema::kProcW + 63) / 64, kRowSize = kProc + kProcWords  // tu_proc_t, least significant first
 };
 
@@ -122,6 +123,10 @@ void drive(V& d, const Row& r) {
   d.rdm_i = static_cast<uint8_t>(r[kRdm]);
   d.dlayers_i = static_cast<uint8_t>(r[kDlayers]);
   d.dbase_i = static_cast<uint32_t>(r[kDbase]);
+  d.afv_i = static_cast<uint8_t>(r[kAfv]);
+  d.admin_i = static_cast<uint8_t>(r[kAdmin]);
+  d.abias_i = static_cast<uint8_t>(r[kAbias]);
+  d.arule_i = static_cast<uint8_t>(r[kArule]);
   for (size_t j = 0; j < (schema::kProcW + 31) / 32; ++j)  // the VlWide words of proc_i
     d.proc_i[j] = static_cast<uint32_t>(r[kProc + j / 2] >> (32 * (j % 2)));
 }
@@ -172,12 +177,21 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     if (m.procedural && (!o.has_ewa || o.corridor_unit))
       throw std::invalid_argument(s.source + ": /materials/" + name +
                                   "/procedural: this unit has no noise unit (the full unit has); render it with --engine cmodel or ref");
-  // AF with parallax visibility (docs/blocks/afvis.md): C model only, no RTL visibility unit yet.
-  for (const auto& [name, m] : s.materials)
-    if (o.relief && m.relief && m.relief->af_visibility && o.filter.value_or(m.filter) == scene::Filter::Ewa)
+  // AF with parallax visibility (docs/blocks/afvis.md): the full unit's tu_afvis (HasAfvis), with
+  // the trace on the depth map itself (no coarse pyramid) and no border weights.
+  auto afv_on = [&](const scene::Material& m) {
+    return o.relief && m.relief && m.relief->af_visibility && o.filter.value_or(m.filter) == scene::Filter::Ewa;
+  };
+  for (const auto& [name, m] : s.materials) {
+    if (afv_on(m) && (o.corridor_unit || s.footprint == scene::Footprint::Recurrence))
+      throw std::invalid_argument(s.source + ": /materials/" + name + "/relief/af_visibility: the " +
+                                  (o.corridor_unit ? "corridor unit" : "recurrence-ellipse unit") +
+                                  " has no visibility engine (the full unit has); render it with --engine cmodel or ref");
+    if (afv_on(m) && !m.clip.empty())
       throw std::invalid_argument(s.source + ": /materials/" + name +
-                                  "/relief/af_visibility: the RTL unit has no visibility unit yet (docs/blocks/afvis.md);"
-                                  " render it with --engine cmodel or ref, or with --no-relief");
+                                  "/relief/af_visibility: with clip, but the visibility engine has no border weights "
+                                  "(render with --clip off, or with --engine cmodel)");
+  }
   // The full unit shades (HasShading); a light needs it, and a model the materials name must be its.
   const bool shade_unit = o.has_ewa && !o.corridor_unit;  // the corridor plan has no lights
   if (!shade_unit && !s.lights.empty())
@@ -328,6 +342,10 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         r[kHbase] = ob.hbase;
         r[kHlw] = static_cast<uint64_t>(log2_size(ob.maps->depth.width));
         r[kHlh] = static_cast<uint64_t>(log2_size(ob.maps->depth.height));
+        r[kAfv] = afv_on(m);
+        r[kAdmin] = afvis::min_depth(ob.maps->depth);
+        r[kAbias] = afvis::kDefaultBias;
+        r[kArule] = static_cast<uint64_t>(afvis::Rule::Row);
         // One view word per pixel: {ok, vx, vy, vz, complexity at the unshifted uv}.
         for (int px = x; px <= x1; ++px) {
           relief::TangentView tv;
@@ -353,6 +371,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         if (eng == ewa::Engine::Ewa && pix < expect.pixels.size()) {
           const auto& rec = expect.pixels[pix];
           pc = ewa::pixel_cost(in, static_cast<int>(rec.lod), rec.ewa_flags, static_cast<uint64_t>(rec.texels), top);
+          pc.afv_walk = rec.afv_clocks;  // tu_afvis (0: tu_ewa)
         }
         pc.engine = eng;
         pc.guard = guard;

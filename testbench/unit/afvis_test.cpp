@@ -15,6 +15,7 @@
 #include "afvis/afvis.hpp"
 #include "afvis/afvis_quality.hpp"
 #include "afvis/afvis_ref.hpp"
+#include "afvis_block.hpp"
 #include "ewa/ewa_fx.hpp"
 #include "ewa_walk_checks.hpp"
 #include "gauss/clip.hpp"
@@ -273,6 +274,31 @@ TEST(AfvisFx, GrazingAndWidths) {
   EXPECT_LT(st.max_cross, int64_t(1) << fmt::kAfvCrossW);
   EXPECT_LT(st.max_abs_test, int64_t(1) << (fmt::kAfvTestW - 1));
   EXPECT_GT(capped, 0u);
+}
+
+// The RTL walker's row buffer (tu_afvis_walk, 2^AfvRowLog2 entries) holds every row's texels with
+// w > 0: the widest rows come from the largest semi-axes at the walk level (2^EwaAxisMaxLog2 texels,
+// the box's half extent plus its margin): over the block's stiff set (incl. a 2000-texel 1:1
+// footprint with the largest cap) and 3,000 random vectors the widest row stays below it. The
+// walker's clock count afvis::Out::clocks is the sum of its parts (box + AfvRowCycles per row +
+// the trace clocks + the finish), checked against Verilator in AfvisCosim.CyclesMatchPrediction.
+TEST(AfvisFx, RowBufferHoldsTheWidestRow) {
+  const auto& b = blocks::find("afvis");
+  uint32_t widest = 0;
+  for (const std::string set : {"stiff", "random"}) {
+    const auto vf = blocks::generate(b, set, 3000, 11);
+    const auto in_idx = vf.indices(vec::Role::In);
+    for (const auto& row : vf.rows) {
+      const afvis::Out o = blocks::afvis_block_model(blocks::pick(row, in_idx));
+      widest = std::max(widest, o.max_row);
+      const uint64_t rows_min = o.ewa.texels_visited > 0 ? 1 : 0;
+      EXPECT_GE(o.clocks, o.ewa.texels_visited + rows_min * fmt::kAfvRowCycles + uint64_t(o.traced) + o.steps);
+    }
+  }
+  std::printf("afvis: widest row %u texels with w > 0 (row buffer %d)\n", widest, 1 << fmt::kAfvRowLog2);
+  EXPECT_LE(widest, uint32_t(2 * ((1 << fmt::kEwaAxisMaxLog2) + 2) + 1));
+  EXPECT_LT(widest, uint32_t(1) << fmt::kAfvRowLog2);
+  EXPECT_GT(widest, 200u);  // the stiff set reaches the axis clamp
 }
 
 // A pixel with no visible texel: a deep plain (255) with a ridge (0) between it and the eye at a

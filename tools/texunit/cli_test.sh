@@ -179,6 +179,17 @@ SV
     [ "$(val "$tmp/p.json" "d['filter'], d['relief']")" = "('ewa', True)" ] || fail "$(cat "$tmp/p.json")"
     [ "$(val "$tmp/p.json" "any('iter_parallax' in b for b in d['specialised']['blocks'])")" = True ] || fail "iterative relief"
     ;;
+  plan_af_visibility)
+    # AF with parallax visibility (docs/blocks/afvis.md §5): the unit keeps tu_afvis when a material
+    # asks for it and reports its clocks; a scene without the flag leaves it out.
+    "$tu" plan docs/scenes/af_visibility.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
+    grep -q "localparam bit HasAfvis = 1'b1;" "$tmp/cfg.sv" || fail "af_visibility.json: HasAfvis not 1: $(cat "$tmp/cfg.sv")"
+    [ "$(val "$tmp/p.json" "d['af_visibility']['pixels'] > 0 and d['af_visibility']['walker_clocks_per_px'] > d['af_visibility']['ewa_walker_clocks_per_px']")" = True ] ||
+      fail "af_visibility cost: $(cat "$tmp/p.json")"
+    "$tu" plan docs/scenes/ui_quad.json --json --out "$tmp/cfg2.sv" >"$tmp/p2.json"
+    grep -q "localparam bit HasAfvis = 1'b0;" "$tmp/cfg2.sv" || fail "ui_quad.json: HasAfvis not 0"
+    [ "$(val "$tmp/p2.json" "d['af_visibility']")" = False ] || fail "ui_quad af_visibility: $(cat "$tmp/p2.json")"
+    ;;
   plan_hud_floor)
     # Per-material filters: the floor needs EWA, the head-on HUD quad bilinear; no trilinear or
     # relief hardware; the plan's per-span filters beat the authored EWA-everywhere in cycles.

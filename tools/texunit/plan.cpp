@@ -364,6 +364,7 @@ struct Config {
   bool water = true;  // the noise unit's water back-end (tu_noise_unit HasWater)
   int noise_scheme = 0;  // 0 pipelined, 1 octave-serial (tu_noise_unit Serial)
   bool feline = false;  // Feline probe engine (tu_feline)
+  bool afvis = true;  // AF with parallax visibility (tu_afvis beside tu_ewa)
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -401,8 +402,55 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam int NoiseCores = " << c.noise_cores << ";  // octave cores: the largest octave count\n"
      << "  localparam bit HasWater = 1'b" << c.water << ";  // water back-end of the noise unit (normal, Lambert)\n"
      << "  localparam int NoiseScheme = " << c.noise_scheme << ";  // 0 pipelined (NoiseCores cores), 1 octave-serial (one core)\n"
+     << "  localparam bit HasAfvis = 1'b" << c.afvis << ";  // AF with parallax visibility (tu_afvis)\n"
      << "endpackage\n";
   return sv.str();
+}
+
+// AF with parallax visibility (docs/blocks/afvis.md): tu_afvis is in the unit when a material asks
+// for it (relief with af_visibility, the EWA filter). Its cost: the C-model render with relief,
+// each pixel's filter-engine clocks with the visibility walker (afvis::Out::clocks) against the
+// same pixels through tu_ewa (af_visibility off), and the filter stream's clocks of both
+// (ewa::stream_cycles on those pixels: the relief stage in front is the same for both and not
+// counted); the engine's cells from the report table (block afvis, rtl top tu_afvis).
+struct AfvisPlan {
+  bool on = false;
+  std::vector<std::string> materials;
+  size_t pixels = 0;               // pixels through tu_afvis
+  double walk_on = 0, walk_off = 0;  // mean walker clocks per such pixel: tu_afvis, tu_ewa
+  uint64_t stream_on = 0, stream_off = 0;  // the scene's filter stream clocks with and without
+};
+AfvisPlan plan_afvis(const scene::Scene& s) {
+  AfvisPlan p;
+  for (const auto& [name, m] : s.materials)
+    if (m.relief && m.relief->af_visibility && m.filter == scene::Filter::Ewa) p.materials.push_back(name);
+  p.on = !p.materials.empty();
+  if (!p.on) return p;
+  render::CmodelOptions o;
+  const render::Frame on = render::render_cmodel(s, std::nullopt, o);
+  o.afvis = render::AfvisMode::Off;
+  const render::Frame off = render::render_cmodel(s, std::nullopt, o);
+  std::vector<ewa::PixelCost> con, coff;
+  for (const auto* fr : {&on, &off}) {
+    const auto wl = sysmodel::scene_workload(s, *fr);
+    for (size_t i = 0; i < wl.pixels.size(); ++i) {
+      ewa::PixelCost c = sysmodel::cost_of(wl.pixels[i]);
+      c.engine = render::engine_of(s.materials.at(s.objects[static_cast<size_t>(fr->pixels[i].object)].material).filter);
+      c.afv_walk = fr->pixels[i].afv_clocks;
+      (fr == &on ? con : coff).push_back(c);
+    }
+  }
+  for (size_t i = 0; i < con.size() && i < coff.size(); ++i)
+    if (con[i].afv_walk) {
+      ++p.pixels;
+      p.walk_on += double(con[i].afv_walk);
+      p.walk_off += double(ewa::walk_cycles(coff[i]));
+    }
+  if (p.pixels) p.walk_on /= double(p.pixels), p.walk_off /= double(p.pixels);
+  const auto front = static_cast<uint64_t>(ewa::texture_unit_front_latency(true));
+  p.stream_on = ewa::stream_cycles(con, front);
+  p.stream_off = ewa::stream_cycles(coff, front);
+  return p;
 }
 
 }  // namespace
@@ -507,6 +555,7 @@ int run(const Options& opt) {
   // The noise unit is planned on the authored scene; the texture path (filters, footprint, relief)
   // without the procedural descriptions, the float reference included.
   const NoisePlan noise = plan_noise(s);
+  const AfvisPlan afv = plan_afvis(s);
   for (auto& [name, m] : s.materials) m.procedural.reset();
   const auto table = load_table(opt.report);
   const std::string report_name = opt.report.empty() ? kBuiltInReport : opt.report;
@@ -839,6 +888,7 @@ int run(const Options& opt) {
   planned_shaded.noise = noise.on;
   if (noise.on) planned_shaded.noise_dims = noise.dims, planned_shaded.noise_cores = noise.cores;
   planned_shaded.water = noise.water;
+  planned_shaded.afvis = afv.on;
   if (brdf_row) planned_shaded.shade_model = shading::model_of(brdf_row->variant);
   // The full unit: F_MSH (the thesis's model) when the scene does not need another.
   const Config everything = [&] {
@@ -946,6 +996,17 @@ int run(const Options& opt) {
                           {"object_space_clocks_per_sample", pc.sample_clocks}, {"object_space", tries}, {"why", pc.why}};
   }
   out["pipelines"] = pipes;
+  std::optional<double> afv_cells;
+  for (const TRow* r : rows_of("afvis"))
+    if (r->cells > 0) afv_cells = r->cells;
+  out["af_visibility"] =
+      afv.on ? json({{"materials", afv.materials}, {"pixels", afv.pixels}, {"walker_clocks_per_px", afv.walk_on},
+                     {"ewa_walker_clocks_per_px", afv.walk_off}, {"filter_stream_cycles", afv.stream_on},
+                     {"filter_stream_cycles_without", afv.stream_off},
+                     {"cells", afv_cells ? json(*afv_cells) : json("not measured: no afvis row with Yosys cells in the report table")},
+                     {"source", "C-model render with relief; walker clocks afvis::Out::clocks vs tu_ewa's box + 12; "
+                                "ewa::stream_cycles of the filter stream (= Verilator, TextureUnitRtl.AfVisibility*)"}})
+             : json(false);
   // Everything is decided before anything is written, and every file is written or none.
   cli::Outputs outs;
   for (const auto& [path, cfg, what] : {std::tuple{opt.out_sv, planned_shaded, "specialised"}, {opt.out_full_sv, everything, "full"}}) {
@@ -989,6 +1050,17 @@ int run(const Options& opt) {
                 scheme_json["pipelined_cycles"].dump().c_str(), scheme_json["octave_serial_cycles"].dump().c_str());
   else
     std::printf("noise unit: none (no procedural material)\n");
+  if (afv.on) {
+    std::string names;
+    for (const auto& n : afv.materials) names += (names.empty() ? "" : ", ") + n;
+    std::printf("af visibility: tu_afvis in for %s: %zu pixels, %.1f walker clocks/px against %.1f through tu_ewa; filter "
+                "stream %llu clocks against %llu (%+.1f %%); cells %s\n", names.c_str(), afv.pixels, afv.walk_on, afv.walk_off,
+                (unsigned long long)afv.stream_on, (unsigned long long)afv.stream_off,
+                100.0 * (double(afv.stream_on) / double(std::max<uint64_t>(1, afv.stream_off)) - 1),
+                afv_cells ? fmt("%.0f (tu_afvis, generic Yosys)", *afv_cells).c_str() : "not measured");
+  } else {
+    std::printf("af visibility: none (no material asks for it: tu_afvis left out)\n");
+  }
   if (weights) std::printf("weights: %s, %.2f dB (%s); clip volume: %s, %.2f dB (C-model EWA render with border "
                            "weights vs float EWA with exact Phi ones, texture path)\n",
                            weights->name().c_str(), weight_render_db(*weights),

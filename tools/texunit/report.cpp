@@ -766,6 +766,7 @@ std::vector<std::string> groups() {
       g.push_back(s.group);  // pom_setup, pom_refine: rows of pom_unit (report_relief.cpp)
   g.insert(g.begin() + 3, kGauss.begin(), kGauss.end());  // after reciprocal, persp, ellipse: B1 .. B5 order
   g.push_back("distance_map");  // C model only (report_relief.cpp)
+  g.push_back("afvis");         // report_relief.cpp
   return g;
 }
 
@@ -791,7 +792,7 @@ std::vector<Row> rows(const Options& opt) {
     else if (is_relief_block(g)) {
       // report_relief.cpp: the engines' cycles per pixel on the bricks scene stream, pom_unit with
       // its stages pom_setup and pom_refine; area from the same Yosys cache.
-      r = relief_rows({g});
+      r = relief_rows({g}, opt.root);
       for (auto& x : r) area(x, opt, cache);
     } else
       for (const auto& s : registry_specs())

@@ -8,12 +8,15 @@
 #include <map>
 #include <stdexcept>
 
+#include "afvis/afvis_quality.hpp"
 #include "block.hpp"
 #include "cosim.hpp"
 #include "distmap/dm_trace.hpp"
 #include "pom/relief.hpp"
 #include "pom/relief_quality.hpp"
 #include "pom_vec_common.hpp"
+#include "texunit/render.hpp"
+#include "texunit/scene.hpp"
 
 namespace tu::report {
 
@@ -109,6 +112,64 @@ Row dm_row(bool refined) {
   return row;
 }
 
+// AF with parallax visibility (docs/blocks/afvis.md): the engine tu_afvis on the block's random
+// vectors (Verilator, mean clocks per pixel) and on the docs scene's relief pixels with the row rule
+// (the walker's clocks afvis::Out::clocks = Verilator, TextureUnitRtl.AfVisibility*), with the
+// quality against the truth of the bricks map at the scene's camera (afvis::quality, 4x4 samples).
+std::vector<Row> afvis_rows(const std::string& root) {
+  std::vector<Row> rows;
+  rows.push_back(measured_row("random_vectors", blocks::generate(blocks::find("afvis"), "random", 2000, 3), true));
+  rows.back().err_unit = "8-bit colour levels vs the float EWA with the float visibility";
+  rows.back().notes = "2,000 random vectors (bricks 256 colour, bricks 64 depth, views 0-90 deg, both rules)";
+  const scene::Scene s = scene::load(root + "/docs/scenes/af_visibility.json");
+  const auto t0 = std::chrono::steady_clock::now();
+  const render::Frame on = render::render_cmodel(s);
+  const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
+  render::CmodelOptions off;
+  off.afvis = render::AfvisMode::Off;
+  const render::Frame plain = render::render_cmodel(s, {}, off);
+  double n = 0, clocks = 0, box = 0, steps = 0, traced = 0;
+  for (size_t i = 0; i < on.pixels.size() && i < plain.pixels.size(); ++i)
+    if (on.pixels[i].afv_clocks) {
+      ++n;
+      clocks += double(on.pixels[i].afv_clocks);
+      box += plain.pixels[i].texels;
+      steps += on.pixels[i].afv_steps;
+      traced += on.pixels[i].afv_traced;
+    }
+  n = std::max(n, 1.0);
+  afvis::QualityParams qp;
+  qp.maps = {"bricks"};
+  qp.heights = {1};
+  qp.ss = 4;
+  const auto q = afvis::quality(s, qp);
+  auto db = [&](const std::string& v) {
+    for (const auto& r : q)
+      if (r.variant == v) return r.psnr;
+    return 0.0;
+  };
+  Row r;
+  r.block = "afvis";
+  r.variant = "docs_scene_row_rule";
+  r.scheme = "tu_afvis: row scan, row rule, box-field DDA one depth read per clock";
+  r.rtl_top = "tu_afvis";
+  r.err_unit = "dB vs the truth (relief pixels)";
+  r.max_abs_err = db("row");
+  r.latency_cycles = -1;
+  r.ii_cycles = clocks / n;
+  r.cycles_source = "afvis::Out::clocks per visibility pixel of the docs scene (walker, hand-over to output; = Verilator)";
+  r.cmodel_ns_per_item = ns / double(std::max<size_t>(1, on.pixels.size()));
+  char b[400];
+  std::snprintf(b, sizeof b,
+                "docs/scenes/af_visibility.json 128x96, %.0f visibility px: box %.1f texels, %.1f traces, %.1f depth reads per px; "
+                "walker %.1f clocks/px vs tu_ewa %.1f (+%.0f %%); bricks x1 vs truth (4x4): plain %.2f dB, row %.2f dB, every %.2f dB",
+                n, box / n, traced / n, steps / n, clocks / n, box / n + 12, 100 * (clocks / (box + 12 * n) - 1), db("plain"),
+                db("row"), db("every"));
+  r.notes = b;
+  rows.push_back(r);
+  return rows;
+}
+
 std::string mean_steps(const vec::VectorFile& vf, int out_col) {
   const int c = vf.indices(vec::Role::Out)[static_cast<size_t>(out_col)];
   double k = 0;
@@ -120,10 +181,11 @@ std::string mean_steps(const vec::VectorFile& vf, int out_col) {
 }  // namespace
 
 bool is_relief_block(const std::string& b) {
-  return b == "pom_layers" || b == "pom_march" || b == "iter_parallax" || b == "pom_unit" || b == "distance_map";
+  return b == "pom_layers" || b == "pom_march" || b == "iter_parallax" || b == "pom_unit" || b == "distance_map" ||
+         b == "afvis";
 }
 
-std::vector<Row> relief_rows(const std::vector<std::string>& blocks_) {
+std::vector<Row> relief_rows(const std::vector<std::string>& blocks_, const std::string& root) {
   std::vector<Row> rows;
   auto fixed = [&](const std::string& block, const std::string& variant) {
     rows.push_back(measured_row(variant, blocks::generate(blocks::find(block), "random", 20000, 3), false));
@@ -148,6 +210,8 @@ std::vector<Row> relief_rows(const std::vector<std::string>& blocks_) {
       for (double deg : {45.0, 80.0})
         for (int n : {4, 8, 16, 24, 32, 0})
           scene("pom_unit", std::to_string(int(deg)) + "deg_" + (n ? "N" + std::to_string(n) : "adaptive"), deg, n, 2);
+    } else if (b == "afvis") {
+      for (auto& r : afvis_rows(root)) rows.push_back(r);
     } else if (b == "distance_map") {
       rows.push_back(dm_row(false));
       rows.push_back(dm_row(true));

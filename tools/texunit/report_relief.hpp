@@ -15,7 +15,7 @@ bool is_relief_block(const std::string& block);
 // Errors and RTL throughput from Verilator runs (random set for fixed-latency blocks; the bricks
 // scene stream for the data-dependent engines, whose ii_cycles is the measured mean cycles per
 // pixel); the report adds the area from its Yosys cache.
-std::vector<Row> relief_rows(const std::vector<std::string>& blocks);
+std::vector<Row> relief_rows(const std::vector<std::string>& blocks, const std::string& root);  // root: the docs scenes (afvis)
 
 // PSNR against march steps per pixel and against cycles per pixel (texunit relief-quality data,
 // fixed N 4..32, adaptive, iterative, per view angle): DIR/relief_quality.dat, .gp and

@@ -23,6 +23,7 @@ Block make_ellipse_rec(); // ellipse_block.cpp
 Block make_ewa();         // ewa_block.cpp
 Block make_ewa_border();  // ewa_border_block.cpp
 Block make_feline();      // feline_block.cpp
+Block make_afvis();       // afvis_block.cpp
 Block make_objspace_sample();  // objspace_block.cpp
 Block make_texel_addr();  // texel_addr_block.cpp
 std::vector<Block> make_brdf_blocks();  // brdf_block.cpp
@@ -47,6 +48,7 @@ const std::vector<Block>& all() {
     b.push_back(make_ewa());
     b.push_back(make_ewa_border());
     b.push_back(make_feline());
+    b.push_back(make_afvis());
     b.push_back(make_objspace_sample());
     b.push_back(make_texel_addr());
     for (auto& m : make_brdf_blocks()) b.push_back(std::move(m));

@@ -112,10 +112,13 @@ Out walk(const ewa::fx::PixelSetup& su, const tex::Texture& t, const Config& cfg
         row.push_back({x, w});
     }
     out.ewa.texels_inside += static_cast<uint32_t>(row.size());
+    out.max_row = std::max(out.max_row, static_cast<uint32_t>(row.size()));
+    out.clocks += static_cast<uint64_t>(su.x1 - su.x0 + 1) + fmt::kAfvRowCycles;  // scan, drain, row start
     const int64_t cv = centre_code(y, su.level, r.lh);
     apply_rule(cfg.rule, row.size(), [&](size_t k) {
       const int64_t cu = centre_code(row[k].x, su.level, r.lw);
       const Trace tr = trace(cells, r.dmin, pom::tex_nearest(*r.depth, cu, cv), cu, cv, r.pu, r.pv, r.bias, st);
+      out.clocks += trace_clocks(tr);
       ++out.traced;
       out.steps += tr.steps;
       out.capped += tr.capped ? 1 : 0;
@@ -131,6 +134,7 @@ Out walk(const ewa::fx::PixelSetup& su, const tex::Texture& t, const Config& cfg
     }
   }
   out.no_visible = sums.wsum == 0;
+  out.clocks += 1 + 1 + (out.no_visible ? 3 : fmt::kEwaNormCycles);  // hand-over, last accumulate, finish
   ewa::fx::finish(su, t, sums, &out.ewa);
   return out;
 }

@@ -116,7 +116,17 @@ struct Out {
   uint32_t steps = 0;       // depth reads of the traces (the visibility unit's clocks)
   uint32_t capped = 0;      // traces that reached AfvStepMax
   bool no_visible = false;  // fallback: the nearest texel at L
+  // Clocks of the RTL walker (rtl/ewa/tu_afvis_walk.sv) from the record hand-over to output valid:
+  // 1 + sum over the box rows of (row texels + AfvRowCycles + the row's trace clocks) + 1 +
+  // (EwaNormCycles, or 3 for the nearest-texel fallback); a trace takes steps + 2 clocks when the
+  // texel is visible, steps + 1 when occluded (walk_clocks).
+  uint64_t clocks = 0;
+  uint32_t max_row = 0;  // the most texels with w > 0 in one row (the walker's row buffer, AfvRowMax)
 };
+
+// The walker's clocks for one trace (tu_afvis_walk: d0 read, one cell per clock, the decision
+// one clock after the last read's data).
+inline uint64_t trace_clocks(const Trace& t) { return t.steps + (t.visible ? 2u : 1u); }
 
 // The plain walk's set-up (ewa::fx::setup) then the visibility walk.
 Out filter(const ewa::fx::In& in, const tex::Texture& t, const Config& cfg, const Relief& r);

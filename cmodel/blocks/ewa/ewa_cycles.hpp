@@ -54,6 +54,10 @@ struct PixelCost {
   bool noise = false;      // procedural: the noise unit (tu_noise_unit), not `engine`
   bool water = false;      // noise: a water pixel (WaterPasses octave sums, NoiseWaterLatency)
   int probes = 1;          // Feline: trilinear probes N (one_level: they blend one level)
+  // AF with parallax visibility (tu_afvis, docs/blocks/afvis.md): > 0 for a pixel of the
+  // visibility engine, its walker's clocks from the hand-over to output valid (afvis::Out::clocks);
+  // the engine has its own EWA set-up (setup_cycles) and takes turns with the others.
+  uint64_t afv_walk = 0;
 };
 
 // Per-pixel counts of the C model's result.
@@ -92,7 +96,8 @@ class StreamModel {
  private:
   EngineParams p_;
   uint64_t setup_free_ = 0, walker_free_ = 0, bil_free_ = 0, tri_free_ = 0, nst_free_ = 0, noise_free_ = 0, last_out_ = 0;
-  bool any_ = false, last_noise_ = false, last_water_ = false;
+  uint64_t afv_setup_free_ = 0, afv_walker_free_ = 0;
+  bool any_ = false, last_noise_ = false, last_water_ = false, last_afv_ = false;
   Engine last_engine_ = Engine::Ewa;
   feline::EngineModel fel_;  // the Feline engine (feline/feline_cycles.hpp)
 };

@@ -282,7 +282,9 @@
   X(AfvPW, 22, "|Pu|, |Pv| (pom::parallax, < 2^(PomUvF+5)): unsigned magnitude, PomUvF bits")  \
   X(AfvDistW, 23, "n: ray length to the next cell boundary, |P| s units: unsigned, PomUvF bits") \
   X(AfvCrossW, 45, "crossing order e = n_u |Pv|, n_v |Pu|: unsigned, exact products")          \
-  X(AfvTestW, 32, "depth test (d0 - h) |P| vs 255 n: exact, signed, PomUvF bits")
+  X(AfvTestW, 32, "depth test (d0 - h) |P| vs 255 n: exact, signed, PomUvF bits")  \
+  X(AfvRowLog2, 9, "walker row buffer: 2^AfvRowLog2 entries (a row has <= 2 (2^EwaAxisMaxLog2 + 2) + 1 texels)") \
+  X(AfvRowCycles, 6, "walker clocks per box row besides its texels and traces: 5 drain + 1 row start")
 
 namespace tu::fmt {
 #define TU_X_DECLARE(name, value, desc) inline constexpr int k##name = (value);

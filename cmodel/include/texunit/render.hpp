@@ -43,6 +43,7 @@ struct PixelRecord {
   std::vector<uint64_t> texel_addrs;
   // AF with parallax visibility (C-model engine): texels traced, depth reads, texels kept.
   int afv_traced = 0, afv_steps = 0, afv_visible = 0;
+  uint64_t afv_clocks = 0;  // the visibility walker's clocks (afvis::Out::clocks; 0: not an afvis pixel)
 };
 
 struct Frame {

@@ -84,7 +84,11 @@
   X(hlh, 4, "depth map: log2 height")                 \
   X(rdm, 1, "distance map (cap = rlayers, relief::dm_cap)") \
   X(dlayers, kDmLayersW, "distance map: layers")    \
-  X(dbase, kTexAddrW, "distance map: base word address in the depth RAM")
+  X(dbase, kTexAddrW, "distance map: base word address in the depth RAM") \
+  X(afv, 1, "AF with parallax visibility on the material's EWA pixels (tu_afvis)") \
+  X(admin, 8, "afvis: the depth map's smallest code")  \
+  X(abias, 8, "afvis: trace bias, depth codes")         \
+  X(arule, 1, "afvis: 0 trace every texel, 1 the seed's row rule")
 // Per-triangle footprint constants a pixel carries to tu_ellipse.
 #define TU_REC_TRI(X)                        \
   X(dm, kEllDetW, "det3 mantissa")           \
