@@ -56,6 +56,10 @@ module tu_texture_unit #(
   // noise scheme: 0 pipelined (NoiseCores cores, one octave sum per clock), 1 octave-serial (one
   // core, NoiseCores clocks per sum)
   parameter int NoiseScheme = tu_unit_cfg_pkg::NoiseScheme,
+  // EWA texels per clock (tu_ewa Lanes: 1, or 4 = a 2 x 2 block over four bank ports, the texel
+  // port and texk_* for banks 1..3) and its set-up units (EwaSetups: 1, or 2 with 4 lanes)
+  parameter int EwaLanes  = 1,
+  parameter int EwaSetups = 1,
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -133,6 +137,11 @@ module tu_texture_unit #(
   output logic                                  tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   tex_addr_o,
   input  logic [31:0]                           tex_data_i,
+  // EWA bank ports 1..3 (EwaLanes = 4; 1-cycle read latency; EwaLanes = 1: unused, req 0); the
+  // texel port is bank 0 then
+  output logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)-1:0]                         texk_req_o,
+  output logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)*tu_formats_pkg::TexAddrW-1:0] texk_addr_o,
+  input  logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)*32-1:0]                      texk_data_i,
   // pixel output
   output logic                                  out_valid_o,
   input  logic                                  out_ready_i,
@@ -500,12 +509,28 @@ module tu_texture_unit #(
   logic [tu_formats_pkg::EwaCountW-1:0] ewa_visited, ewa_inside;
   logic [4:0]                           ewa_flags;
   if (HasEwa != 0) begin : g_ewa
-    tu_ewa #(.HasClip(HasEwaClip), .ClipVariant(EwaClipVariant)) u_ewa (
+    logic [EwaLanes-1:0]    ewa_req_v;
+    logic [EwaLanes*AW-1:0] ewa_addr_v;
+    logic [EwaLanes*32-1:0] ewa_data_v;
+    assign ewa_req  = ewa_req_v[0];
+    assign ewa_addr = ewa_addr_v[AW-1:0];
+    if (EwaLanes > 1) begin : g_banks
+      assign ewa_data_v  = {texk_data_i, tex_data_i};
+      assign texk_req_o  = ewa_req_v[EwaLanes-1:1];
+      assign texk_addr_o = ewa_addr_v[EwaLanes*AW-1:AW];
+    end else begin : g_one_port
+      assign ewa_data_v  = tex_data_i;
+      assign texk_req_o  = '0;
+      assign texk_addr_o = '0;
+      logic unused_texk;
+      assign unused_texk = ^texk_data_i;
+    end
+    tu_ewa #(.HasClip(HasEwaClip), .ClipVariant(EwaClipVariant), .Lanes(EwaLanes), .Setups(EwaSetups)) u_ewa (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngEwa), .in_ready_o(ewa_in_ready),
       .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
       .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
       .wrap_i({f_mat.twrapv, f_mat.twrapu}), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap), .clip_i(f_mat.clip),
-      .tex_req_o(ewa_req), .tex_addr_o(ewa_addr), .tex_data_i,
+      .tex_req_o(ewa_req_v), .tex_addr_o(ewa_addr_v), .tex_data_i(ewa_data_v),
       .out_valid_o(ewa_valid), .out_ready_i(p_ready && os_valid && cur_q == EngEwa),
       .rgba_o(ewa_rgba), .level_o(ewa_level), .visited_o(ewa_visited), .inside_o(ewa_inside),
       .flags_o(ewa_flags)
@@ -515,13 +540,15 @@ module tu_texture_unit #(
     assign ewa_valid    = 1'b0;
     assign ewa_req      = 1'b0;
     assign ewa_addr     = '0;
+    assign texk_req_o   = '0;
+    assign texk_addr_o  = '0;
     assign ewa_rgba     = '0;
     assign ewa_level    = '0;
     assign ewa_visited  = '0;
     assign ewa_inside   = '0;
     assign ewa_flags    = '0;
     logic unused_ewa;
-    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_mat.wsrc, f_mat.cap, f_mat.clip};
+    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_mat.wsrc, f_mat.cap, f_mat.clip, texk_data_i};
   end
   if (HasBilinear != 0) begin : g_bilinear
     tu_bilinear u_bil (
