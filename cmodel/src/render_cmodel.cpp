@@ -14,6 +14,7 @@
 #include "ellipse/ellipse_fx.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
+#include "ewa/ewa_lanes.hpp"
 #include "feline/feline_fx.hpp"
 #include "pom/relief.hpp"
 #include "texture/trilinear_lod.hpp"
@@ -273,7 +274,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
             rec.afv_visible = static_cast<int>(a.visible);
             rec.afv_clocks = a.clocks;
           } else {
-            r = ewa::fx::filter(in, tx, ecfg);
+            r = ewa::fx::filter_lanes(in, tx, ecfg, opt.ewa_lanes);
           }
           rec.color = r.color;
           rec.lod = r.level;
@@ -281,6 +282,7 @@ Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter, 
           rec.texels_inside = static_cast<int>(r.texels_inside);
           rec.ewa_flags = r.flags;
           rec.levels = ewa::pixel_cost(in, r.level, r.flags, r.texels_visited, top).levels;
+          rec.ewa_blocks = static_cast<int>(r.lane_blocks);
           break;
         }
       }

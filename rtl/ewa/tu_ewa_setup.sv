@@ -15,8 +15,9 @@
 //   BOX     1         hu = h + h/64 + 1 (margin) (+ 1/2 texel with border weights: clip_i),
 //                     x0 = ceil(cu - hu), x1 = floor(cu + hu), y likewise
 //   CAP     1         box = (x1-x0+1)(y1-y0+1); box > cap and L < top -> L+1, capped, AX again
-//   START   2         walk start values (row y0, column x0): xi, eta, Q and the first and second
-//                     differences of Q along x and along y (exact integers)
+//   START   2         walk start values (row y0, column x0; Align: the 2 x 2 walk's aligned corner
+//                     (x0 & ~1, y0 & ~1)): xi, eta, Q and the first and second differences of Q
+//                     along x and along y (exact integers)
 //   HAND    >= 1      hand the record to the walker (rec_valid_o until rec_ready_i)
 // Cycles from acceptance to rec_valid_o: 2 + 2 I/U + levels * (6 + RootW/S) + 2; a B1-guard
 // pixel (no texture coordinates: the texture's mean, the top level's single texel, as
@@ -24,7 +25,8 @@
 `include "tu_assert.svh"
 module tu_ewa_setup #(
   parameter int CordUnroll = 2,  // CORDIC iterations per clock (divides EwaCordIter)
-  parameter int SqrtStep   = 4   // square-root bits per clock (divides RootW)
+  parameter int SqrtStep   = 4,  // square-root bits per clock (divides RootW)
+  parameter int Align      = 0   // 1: start values at the even-aligned corner (tu_ewa_walk_lanes)
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -260,8 +262,8 @@ module tu_ewa_setup #(
   // ---- START: walk start values at (x0, y0)
   logic signed [31:0] du0, dv0;
   logic signed [63:0] qa, qb, qc;  // Q = A du^2 + B du dv + C dv^2
-  assign du0 = (x0_o <<< PosF) - cu_q;
-  assign dv0 = (y0_o <<< PosF) - cv_q;
+  assign du0 = ((Align != 0 ? x0_o & ~32'sd1 : x0_o) <<< PosF) - cu_q;
+  assign dv0 = ((Align != 0 ? y0_o & ~32'sd1 : y0_o) <<< PosF) - cv_q;
   logic signed [63:0] qa_q, qb_q, qc_q;
   logic signed [31:0] du0_q, dv0_q;
   always_comb begin

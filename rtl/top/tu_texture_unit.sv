@@ -61,6 +61,10 @@ module tu_texture_unit #(
   // 1: AF with parallax visibility (tu_afvis, docs/blocks/afvis.md) beside tu_ewa in the EWA slot:
   // a shifted pixel of a material with afv takes it; its depth reads use the a_* port
   parameter int HasAfvis   = {31'b0, tu_unit_cfg_pkg::HasAfvis},
+  // EWA texels per clock (tu_ewa Lanes: 1, or 4 = a 2 x 2 block over four bank ports, the texel
+  // port and texk_* for banks 1..3) and its set-up units (EwaSetups: 1, or 2 with 4 lanes)
+  parameter int EwaLanes  = 1,
+  parameter int EwaSetups = 1,
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -148,6 +152,11 @@ module tu_texture_unit #(
   output logic                                  tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   tex_addr_o,
   input  logic [31:0]                           tex_data_i,
+  // EWA bank ports 1..3 (EwaLanes = 4; 1-cycle read latency; EwaLanes = 1: unused, req 0); the
+  // texel port is bank 0 then
+  output logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)-1:0]                         texk_req_o,
+  output logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)*tu_formats_pkg::TexAddrW-1:0] texk_addr_o,
+  input  logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)*32-1:0]                      texk_data_i,
   // pixel output
   output logic                                  out_valid_o,
   input  logic                                  out_ready_i,
@@ -554,18 +563,36 @@ module tu_texture_unit #(
     logic [3:0]    pe_level, av_level;
     logic [tu_formats_pkg::EwaCountW-1:0] pe_visited, pe_inside, av_visited, av_inside;
     logic [4:0]    pe_flags, av_flags;
+    // tu_ewa's texel ports: lane 0 on the texel port, lanes 1..3 (EwaLanes 4) on texk_* (tu_afvis
+    // reads lane 0's port only; the two engines take turns, so never both at once)
+    logic [EwaLanes-1:0]    ewa_req_v;
+    logic [EwaLanes*AW-1:0] ewa_addr_v;
+    logic [EwaLanes*32-1:0] ewa_data_v;
+    assign pe_req  = ewa_req_v[0];
+    assign pe_addr = ewa_addr_v[AW-1:0];
+    if (EwaLanes > 1) begin : g_banks
+      assign ewa_data_v  = {texk_data_i, tex_data_i};
+      assign texk_req_o  = ewa_req_v[EwaLanes-1:1];
+      assign texk_addr_o = ewa_addr_v[EwaLanes*AW-1:AW];
+    end else begin : g_one_port
+      assign ewa_data_v  = tex_data_i;
+      assign texk_req_o  = '0;
+      assign texk_addr_o = '0;
+      logic unused_texk;
+      assign unused_texk = ^texk_data_i;
+    end
     assign f_afv = HasAfvis != 0 && f_afv_side[AfvW-1];
     assign ewa_in_ready = (f_afv ? av_in_ready : pe_in_ready) && (inflight_q == '0 || afv_cur_q == f_afv);
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) afv_cur_q <= 1'b0;
       else if (fire_flt && sel == EngEwa) afv_cur_q <= f_afv;
     end
-    tu_ewa #(.HasClip(HasEwaClip), .ClipVariant(EwaClipVariant)) u_ewa (
+    tu_ewa #(.HasClip(HasEwaClip), .ClipVariant(EwaClipVariant), .Lanes(EwaLanes), .Setups(EwaSetups)) u_ewa (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngEwa && !f_afv && ewa_in_ready), .in_ready_o(pe_in_ready),
       .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
       .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
       .wrap_i({f_mat.twrapv, f_mat.twrapu}), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap), .clip_i(f_mat.clip),
-      .tex_req_o(pe_req), .tex_addr_o(pe_addr), .tex_data_i,
+      .tex_req_o(ewa_req_v), .tex_addr_o(ewa_addr_v), .tex_data_i(ewa_data_v),
       .out_valid_o(pe_valid), .out_ready_i(p_ready && os_valid && cur_q == EngEwa && !afv_cur_q),
       .rgba_o(pe_rgba), .level_o(pe_level), .visited_o(pe_visited), .inside_o(pe_inside),
       .flags_o(pe_flags)
@@ -615,6 +642,8 @@ module tu_texture_unit #(
     assign ewa_valid    = 1'b0;
     assign ewa_req      = 1'b0;
     assign ewa_addr     = '0;
+    assign texk_req_o   = '0;
+    assign texk_addr_o  = '0;
     assign ewa_rgba     = '0;
     assign ewa_level    = '0;
     assign ewa_visited  = '0;
@@ -623,7 +652,8 @@ module tu_texture_unit #(
     assign a_req_o      = 1'b0;
     assign a_addr_o     = '0;
     logic unused_ewa;
-    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_mat.wsrc, f_mat.cap, f_mat.clip, a_data_i, f_afv_side};
+    assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_mat.wsrc, f_mat.cap, f_mat.clip, a_data_i, f_afv_side,
+                          texk_data_i};
   end
   if (HasBilinear != 0) begin : g_bilinear
     tu_bilinear u_bil (

@@ -22,6 +22,8 @@ module tu_texture_unit_sim #(
   parameter int HasWater      = {31'b0, tu_unit_cfg_pkg::HasWater},
   parameter int NoiseScheme   = tu_unit_cfg_pkg::NoiseScheme,
   parameter int HasAfvis      = {31'b0, tu_unit_cfg_pkg::HasAfvis},
+  parameter int EwaLanes      = 1,  // tu_texture_unit EwaLanes / EwaSetups (4 / 2: the texel RAM has 4 ports)
+  parameter int EwaSetups     = 1,
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words,
   // the depth RAM also holds the distance maps (the default scene's wall: 1,114,112 words)
   parameter int DepthWords = 2 * Words
@@ -103,9 +105,13 @@ module tu_texture_unit_sim #(
   output logic [tu_formats_pkg::PomNW-1:0]      rsteps_o,  // relief march steps or iterations
   output logic [2:0]                            rflags_o   // relief::ReliefFlag bits
 );
-  logic                                tex_req;
-  logic [tu_formats_pkg::TexAddrW-1:0] tex_addr;
-  logic [31:0]                         tex_data;
+  localparam int KP = EwaLanes > 1 ? EwaLanes - 1 : 1;  // bank ports 1..3
+  logic                                   tex_req;
+  logic [tu_formats_pkg::TexAddrW-1:0]    tex_addr;
+  logic [31:0]                            tex_data;
+  logic [KP-1:0]                          texk_req;
+  logic [KP*tu_formats_pkg::TexAddrW-1:0] texk_addr;
+  logic [KP*32-1:0]                       texk_data;
   localparam int VzW = tu_formats_pkg::PomVzW;
   logic                                view_valid, view_ready, d_req;
   logic [63:0]                         view;
@@ -122,7 +128,7 @@ module tu_texture_unit_sim #(
                     .EllRecurrence(EllRecurrence),
                     .HasEwaClip(HasEwaClip), .EwaClipVariant(EwaClipVariant),
                     .HasNoise(HasNoise), .NoiseDims(NoiseDims), .NoiseCores(NoiseCores), .HasWater(HasWater),
-                    .NoiseScheme(NoiseScheme), .HasAfvis(HasAfvis)) u_tu (
+                    .NoiseScheme(NoiseScheme), .HasAfvis(HasAfvis), .EwaLanes(EwaLanes), .EwaSetups(EwaSetups)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
@@ -139,12 +145,23 @@ module tu_texture_unit_sim #(
     .out_valid_o, .out_ready_i,
     .x_o, .y_o, .rgba_o, .level_o, .visited_o, .inside_o, .flags_o, .eflags_o,
     .pflags_o, .rn_o, .rsteps_o, .rflags_o,
-    .tex_req_o(tex_req), .tex_addr_o(tex_addr), .tex_data_i(tex_data)
+    .tex_req_o(tex_req), .tex_addr_o(tex_addr), .tex_data_i(tex_data),
+    .texk_req_o(texk_req), .texk_addr_o(texk_addr), .texk_data_i(texk_data)
   );
-  tu_texel_ram #(.Words(Words)) u_ram (
-    .clk_i, .rd_en_i(tex_req), .rd_addr_i(tex_addr), .rd_data_o(tex_data),
-    .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
-  );
+  if (EwaLanes > 1) begin : g_banked_ram
+    tu_texel_ram #(.Words(Words), .Ports(EwaLanes)) u_ram (
+      .clk_i, .rd_en_i({texk_req, tex_req}), .rd_addr_i({texk_addr, tex_addr}), .rd_data_o({texk_data, tex_data}),
+      .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
+    );
+  end else begin : g_ram
+    tu_texel_ram #(.Words(Words)) u_ram (
+      .clk_i, .rd_en_i(tex_req), .rd_addr_i(tex_addr), .rd_data_o(tex_data),
+      .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
+    );
+    assign texk_data = '0;
+    logic unused_texk;
+    assign unused_texk = ^{texk_req, texk_addr};
+  end
   // view word: {ok, vx, vy, vz, c} from bit 3 VzW + PomCW down
   tu_texel_ram #(.Words(DepthWords)) u_depth (
     .clk_i, .rd_en_i(d_req), .rd_addr_i(d_addr), .rd_data_o(d_word),

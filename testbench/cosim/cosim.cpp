@@ -21,6 +21,7 @@ std::vector<RtlBlock> rtl_pom_unit();  // pom_unit_rtl.cpp
 RtlBlock rtl_ellipse();     // ellipse_rtl.cpp
 RtlBlock rtl_ellipse_rec(); // ellipse_rtl.cpp
 RtlBlock rtl_ewa();         // ewa_rtl.cpp
+RtlBlock rtl_ewa_k4();      // ewa_rtl.cpp
 RtlBlock rtl_ewa_border();  // ewa_border_rtl.cpp
 RtlBlock rtl_feline();      // feline_rtl.cpp
 RtlBlock rtl_afvis();       // afvis_rtl.cpp
@@ -31,7 +32,7 @@ std::vector<RtlBlock> rtl_perlin();  // perlin_rtl.cpp (incl. the octave-serial 
 
 const RtlBlock& find_rtl(const std::string& name) {
   static const std::vector<RtlBlock> rtl = {rtl_reciprocal(), rtl_persp(), rtl_persp_k4(), rtl_persp_setup(), rtl_texel_depth(), rtl_pom_layers(),
-                                            rtl_pom_march(), rtl_iter_parallax(), rtl_ellipse(), rtl_ellipse_rec(), rtl_ewa(), rtl_feline(),
+                                            rtl_pom_march(), rtl_iter_parallax(), rtl_ellipse(), rtl_ellipse_rec(), rtl_ewa(), rtl_ewa_k4(), rtl_feline(),
                                             rtl_ewa_border(), rtl_afvis(), rtl_objspace_sample(), rtl_texel_addr()};
   for (const auto& r : rtl)
     if (r.name == name) return r;

@@ -8,6 +8,7 @@
 
 #include "block.hpp"
 #include "generated/tu_glue.hpp"  // (build tree) drive_B / sample_B: ports by field name
+#include "texture/texture.hpp"
 #include "harness.hpp"
 #include "vector_file.hpp"
 
@@ -21,6 +22,9 @@ struct RtlBlock {
 };
 
 const RtlBlock& find_rtl(const std::string& name);  // throws std::invalid_argument
+// The multi-texel EWA engine ("ewa_k4") reading texture t instead of the block's (wrap modes,
+// non-square levels: the bank ports' broadcast and border routing; ewa_rtl.cpp).
+RtlBlock rtl_ewa_k4_with(const tex::Texture& t);
 
 // An RtlBlock for the Verilated model V from its `drive` and `sample` functions.
 template <class V, class Drive, class Sample>

@@ -48,6 +48,7 @@ std::vector<ewa::PixelCost> costs_of(const vec::VectorFile& vf) {
     px.b2.lod = static_cast<uint32_t>(in[7]);
     c.push_back(ewa::pixel_cost(px, static_cast<int>(out[4]), static_cast<uint32_t>(out[7]), out[5], 8));
     c.back().clip = in[11] != 0;
+    c.back().blocks = blocks::ewa_lane_blocks(in);
   }
   return c;
 }
@@ -62,6 +63,82 @@ TEST(EwaCosim, CyclesMatchPrediction) {
                 vf.rows.size(), (unsigned long long)rep.sim_cycles, (unsigned long long)predicted,
                 double(rep.sim_cycles) / double(vf.rows.size()));
     EXPECT_EQ(rep.sim_cycles, predicted) << set;
+  }
+}
+
+// The multi-texel engine (tu_ewa Lanes = 4, Setups = 2, border weights in: RTL "ewa_k4") on the
+// block ewa's vectors: the same outputs with 30 % stalls, and stall-free cycles = ewa::stream_cycles
+// with EngineParams lanes 4 (every pixel through the border pipeline's depth: lane_clip).
+ewa::EngineParams lanes4_block_params() {
+  ewa::EngineParams p;
+  p.lanes = 4;
+  p.setup_units = 2;
+  p.lane_clip = true;  // tu_ewa_sim: HasClip = 1
+  return p;
+}
+
+TEST(EwaCosim, Lanes4GoldenStiffRandomWithStalls) {
+  const auto& b = blocks::find("ewa");
+  for (const std::string set : {"golden", "stiff", "random"}) {
+    const auto vf = blocks::generate(b, set, 3000, 2026);
+    auto opt = with_stalls(0.3);
+    opt.rtl = "ewa_k4";
+    const auto rep = cosim::run(vf, opt);
+    SCOPED_TRACE(set);
+    cosim::checks::expect_stream_clean(rep);
+    std::printf("ewa_k4 %s: %s\n", set.c_str(), rep.json().c_str());
+  }
+}
+
+TEST(EwaCosim, Lanes4CyclesMatchPrediction) {
+  for (const std::string set : {"golden", "stiff", "random"}) {
+    const auto vf = blocks::generate(blocks::find("ewa"), set, 2000, 7);
+    auto opt = with_stalls(0);
+    opt.rtl = "ewa_k4";
+    const auto rep = cosim::run(vf, opt);
+    cosim::checks::expect_stream_clean(rep);
+    const auto costs = costs_of(vf);
+    const uint64_t predicted = ewa::stream_cycles(costs, 0, lanes4_block_params());
+    uint64_t box = 0, blk = 0;
+    for (const auto& c : costs) box += c.box, blk += c.blocks;
+    std::printf("ewa_k4 %s: %zu px, %.2f texels and %.2f 2x2 blocks per px, cycles measured %llu predicted %llu "
+                "(%.2f cycles/px; K = 1: %llu)\n",
+                set.c_str(), vf.rows.size(), double(box) / double(costs.size()), double(blk) / double(costs.size()),
+                (unsigned long long)rep.sim_cycles, (unsigned long long)predicted,
+                double(rep.sim_cycles) / double(vf.rows.size()), (unsigned long long)ewa::stream_cycles(costs));
+    EXPECT_EQ(rep.sim_cycles, predicted) << set;
+  }
+}
+
+// The bank ports' broadcast and border routing on the RTL: the multi-texel engine with a 64 x 16
+// texture (levels 4 x 1, 2 x 1, 1 x 1: lanes folding onto one texel along y, then both axes) in
+// each wrap mode, the block ewa's golden, stiff and 1,000 random inputs, 30 % stalls: every output
+// equals the C model's with that texture (the sequential walk's).
+TEST(EwaCosim, Lanes4WrapModesAndThinLevels) {
+  img::Rgba8Image im(64, 16);
+  for (int y = 0; y < im.height; ++y)
+    for (int x = 0; x < im.width; ++x)
+      im.at(x, y) = {static_cast<uint8_t>(x * 37 + y * 11), static_cast<uint8_t>(x * 5 + y * 53),
+                     static_cast<uint8_t>((x ^ y) * 29), static_cast<uint8_t>(255 - x - y)};
+  const auto& b = blocks::find("ewa");
+  std::vector<cosim::Row> rows;
+  for (const std::string set : {"golden", "stiff", "random"})
+    for (const auto& r : b.inputs(set, 1000, 5)) rows.push_back(r);
+  for (auto w : {tex::Wrap::Repeat, tex::Wrap::Mirror, tex::Wrap::Clamp, tex::Wrap::Border, tex::Wrap::MirrorOnce}) {
+    const auto t = tex::Texture::build("thin", im, tex::Addressing{w, w == tex::Wrap::Border ? tex::Wrap::Clamp : w,
+                                                                    {10, 20, 30, 40}});
+    cosim::RunOptions ro;
+    ro.stall_prob = 0.3;
+    ro.seed = 3;
+    const auto rr = cosim::rtl_ewa_k4_with(t).run(rows, ro);
+    SCOPED_TRACE(static_cast<int>(w));
+    ASSERT_FALSE(rr.hung);
+    ASSERT_EQ(rr.outputs.size(), rows.size());
+    EXPECT_EQ(rr.extra_outputs, 0u);
+    size_t bad = 0;
+    for (size_t i = 0; i < rows.size(); ++i)
+      if (rr.outputs[i] != blocks::ewa_model_with(rows[i], t) && bad++ < 3) ADD_FAILURE() << "row " << i;
+    EXPECT_EQ(bad, 0u);
   }
 }
 

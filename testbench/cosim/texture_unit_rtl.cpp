@@ -208,7 +208,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
                                   (o.corridor_unit ? std::string("corridor unit has no EWA border weights")
                                                    : "unit's EWA walk has the clip volume " + o.clip_variant) +
                                   " (render with --clip off or --clip " + o.clip_variant + ")");
-  ewa::EngineParams ep;
+  ewa::EngineParams ep = o.corridor_unit ? corridor_ewa_params() : ewa::EngineParams{};
   ep.clip_variant = ewa::rtl_clip_code(o.clip_variant);
   if (ep.clip_variant < 0) throw std::invalid_argument("render_rtl: clip variant " + o.clip_variant + " has no RTL");
   // B2 variant: the unit with EllRecurrence = 1 (full unit only).
@@ -372,6 +372,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
           const auto& rec = expect.pixels[pix];
           pc = ewa::pixel_cost(in, static_cast<int>(rec.lod), rec.ewa_flags, static_cast<uint64_t>(rec.texels), top);
           pc.afv_walk = rec.afv_clocks;  // tu_afvis (0: tu_ewa)
+          pc.blocks = static_cast<uint64_t>(rec.ewa_blocks);
         }
         pc.engine = eng;
         pc.guard = guard;

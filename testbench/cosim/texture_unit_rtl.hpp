@@ -22,6 +22,7 @@
 #include <optional>
 #include <string>
 
+#include "ewa/ewa_cycles.hpp"
 #include "texunit/render.hpp"
 #include "texunit/scene.hpp"
 #include "texunit/shading.hpp"
@@ -32,7 +33,8 @@ struct RtlRenderOptions {
   bool has_ewa = true;                         // false: the bilinear-only unit (every filter must be bilinear)
   // The unit `texunit plan docs/scenes/corridor.json` writes (testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv:
   // the EWA engine with the 1-D weight table and iterative parallax; no bilinear, trilinear, nearest
-  // or POM march) instead of the full unit.
+  // or POM march) instead of the full unit. Its model is verilated with the multi-texel EWA engine
+  // (EwaLanes = 4, EwaSetups = 2: kCorridorEwa; issue 23), so the corridor unit is the K = 4 unit.
   bool corridor_unit = false;
   std::optional<scene::Filter> filter;         // overrides every material's filter (ewa or bilinear)
   bool relief = false;                         // apply each material's relief (POM or iterative; full unit)
@@ -45,6 +47,16 @@ struct RtlRenderOptions {
   // a material's clip must name this variant (the corridor and bilinear-only units have none).
   std::string clip_variant = "mm_p1";
 };
+
+// The corridor unit model's EWA structure (testbench/cosim/CMakeLists.txt -GEwaLanes=4 -GEwaSetups=2;
+// no border weights): the cycle model's parameters.
+inline ewa::EngineParams corridor_ewa_params() {
+  ewa::EngineParams p;
+  p.lanes = 4;
+  p.setup_units = 2;
+  p.lane_clip = false;
+  return p;
+}
 
 struct RtlRender {
   render::Frame frame;               // RTL pixels

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "texture/texture.hpp"
 #include "texunit/shard.hpp"
 #include "vector_file.hpp"
 
@@ -67,6 +68,11 @@ vec::VectorFile generate(const Block& b, const std::string& set, uint64_t count,
 std::pair<uint64_t, uint64_t> shard_rows(const Block& b, const std::vector<Row>& rows,
                                          const std::vector<int>& in_idx, Shard s);
 
+// Block ewa: the 2 x 2 blocks of an input row's box (ewa::fx::Out::lane_blocks: the K = 4 walk's
+// clocks, ewa::PixelCost::blocks) with the block's texture (ewa_block.cpp).
+uint64_t ewa_lane_blocks(const Row& in);
+// Block ewa: the C model's out codes of an input row with texture t instead of the block's.
+Row ewa_model_with(const Row& in, const tex::Texture& t);
 // Split/join a file row by role.
 Row pick(const Row& row, const std::vector<int>& idx);
 

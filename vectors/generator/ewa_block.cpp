@@ -149,6 +149,18 @@ Row ref_of(const Row& r) {
 }
 }  // namespace
 
+uint64_t ewa_lane_blocks(const Row& in) {
+  const Pixel p = pixel_of(in);
+  return ewa::fx::filter(p.in, texture(), p.cfg).lane_blocks;
+}
+
+Row ewa_model_with(const Row& in, const tex::Texture& t) {
+  const Pixel p = pixel_of(in);
+  const auto o = ewa::fx::filter(p.in, t, p.cfg);
+  return Row{o.color.r, o.color.g, o.color.b, o.color.a, static_cast<uint64_t>(o.level), o.texels_visited,
+             o.texels_inside, o.flags};
+}
+
 Block make_ewa() {
   Block b;
   b.name = "ewa";
@@ -190,12 +202,7 @@ Block make_ewa() {
               field("a_ref", Role::Ref, "f64")};
   b.sets = {"golden", "stiff", "random"};
   b.inputs = standard_sets(golden_inputs, stiff_inputs, random_inputs);
-  b.model = [](const Row& r) {
-    const Pixel p = pixel_of(r);
-    const auto o = ewa::fx::filter(p.in, texture(), p.cfg);
-    return Row{o.color.r, o.color.g, o.color.b, o.color.a, static_cast<uint64_t>(o.level),
-               o.texels_visited, o.texels_inside, o.flags};
-  };
+  b.model = [](const Row& r) { return ewa_model_with(r, texture()); };
   b.ref = ref_of;
   b.error = [](const Row&, const Row& out, const Row& ref) {
     ErrPoint e;

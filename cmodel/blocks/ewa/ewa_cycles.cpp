@@ -40,6 +40,10 @@ int walk_cycles(const PixelCost& c, const EngineParams& p) {
   return 1 + static_cast<int>(c.box) + drain + (c.no_weight ? 3 : fmt::kEwaNormCycles);
 }
 
+int lane_walk_latency(const EngineParams& p) {
+  return fmt::kEwaDrainCycles + fmt::kEwaNormCycles + 1 + (p.lane_clip ? border_latency(p.clip_variant) : 0);
+}
+
 StreamModel::Times StreamModel::add(const PixelCost& c, uint64_t avail) {
   // An engine switch waits for the other engine's last output.
   const bool afv = !c.noise && c.afv_walk > 0;
@@ -91,6 +95,23 @@ StreamModel::Times StreamModel::add(const PixelCost& c, uint64_t avail) {
       break;
     }
     case Engine::Ewa: {
+      if (p_.lanes > 1) {
+        const size_t units = static_cast<size_t>(std::clamp(p_.setup_units, 1, 2));
+        a = std::max({ready, unit_free_[unit_next_], ewa_any_ ? ewa_accept_ + 1 : 0});
+        const uint64_t credit = lane_outs_.size() >= static_cast<size_t>(p_.out_depth) ? lane_outs_.front() + 1 : 0;
+        const uint64_t h = std::max({a + static_cast<uint64_t>(setup_cycles(c, p_)), lane_free_, credit});
+        const uint64_t f = c.guard ? 1 : c.blocks;
+        const uint64_t o = h + f + static_cast<uint64_t>(lane_walk_latency(p_));
+        unit_free_[unit_next_] = h + 1;
+        unit_next_ = (unit_next_ + 1) % units;
+        ewa_accept_ = a;
+        ewa_any_ = true;
+        lane_free_ = h + f;
+        lane_outs_.push_back(o);
+        if (lane_outs_.size() > static_cast<size_t>(p_.out_depth)) lane_outs_.pop_front();
+        last_out_ = o;
+        break;
+      }
       a = std::max(setup_free_, ready);                                               // accept
       const uint64_t h = std::max(a + static_cast<uint64_t>(setup_cycles(c, p_)), walker_free_);
       const uint64_t o = h + static_cast<uint64_t>(walk_cycles(c, p_));                   // output valid and taken

@@ -9,10 +9,21 @@
 //            latency (border_latency) for a pixel with border weights (clip)
 //   B1-guard pixel (texture unit): S = 1, output valid at h_i + 3
 // (I = EwaCordIter CORDIC iterations, U = iterations per clock, R/S = square-root clocks.)
+// Multi-texel engine (EngineParams::lanes = 4: tu_ewa EwaLanes = 4, tu_ewa_walk_lanes; issue 23):
+//   set-up : EngineParams::setup_units set-up units taking pixels in turn (unit i mod n): pixel i
+//            accepted at a_i = max(arrival, a_{i-1} + 1, h_{i-n} + 1)
+//   hand   : h_i = max(a_i + S_i, h_{i-1} + f_{i-1}, o_{i-D} + 1): the walker takes a record in
+//            the clock it issues its last block; at most D = out_depth pixels between hand-over
+//            and output (the output FIFO's credits)
+//   walker : f_i = 2 x 2 blocks of the box (B1 guard: 1) issued at h_i + 1 .. h_i + f_i; the
+//            drain and normalisation are a pipeline, so pixel i+1's blocks follow at once; output
+//            valid at o_i = h_i + f_i + 12 (+ border_latency for every pixel of a unit with
+//            border weights, lane_clip: one pipeline depth for all pixels keeps them in order)
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -29,7 +40,14 @@ struct EngineParams {
   int root_w = 16;  // radicand root bits (tu_ewa_setup RootW)
   int clip_variant = 0;  // tu_ewa ClipVariant (kRtlClipVariants index): the border pipeline's latency
   int noise_slots = 1;   // tu_noise_unit issue clocks per octave sum: 1 pipelined, NoiseCores octave-serial
+  int lanes = 1;         // tu_ewa EwaLanes: 1 (tu_ewa_walk, one texel per clock) or 4 (tu_ewa_walk_lanes, 2 x 2)
+  int setup_units = 1;   // tu_ewa EwaSetups: set-up units taking pixels in turn
+  int out_depth = 8;     // lanes 4: tu_ewa_walk_lanes OutDepth (pixels between hand-over and output)
+  bool lane_clip = false;  // lanes 4: the engine has border weights (HasClip): every pixel pays their latency
 };
+// The multi-texel walker's latency from its last block's issue to the output (lanes 4): the
+// sequential walker's drain and normalisation (EwaDrainCycles + EwaNormCycles + 1).
+int lane_walk_latency(const EngineParams& p);
 
 // The clip-volume variants tu_ewa_border has (its ClipVariant codes 0, 1, 2), by C-model name
 // (gauss::clip); the unit configuration's EwaClipVariant is one of them.
@@ -58,6 +76,7 @@ struct PixelCost {
   // visibility engine, its walker's clocks from the hand-over to output valid (afvis::Out::clocks);
   // the engine has its own EWA set-up (setup_cycles) and takes turns with the others.
   uint64_t afv_walk = 0;
+  uint64_t blocks = 1;     // EWA, lanes 4: 2 x 2 blocks of the box (ewa::fx::Out::lane_blocks)
 };
 
 // Per-pixel counts of the C model's result.
@@ -95,6 +114,12 @@ class StreamModel {
 
  private:
   EngineParams p_;
+  // lanes 4: the set-up units' free cycles (taken in turn), the last acceptance, the walker's
+  // next hand-over, the outputs still holding a credit (the last out_depth)
+  uint64_t unit_free_[2] = {0, 0}, ewa_accept_ = 0, lane_free_ = 0;
+  size_t unit_next_ = 0;
+  bool ewa_any_ = false;
+  std::deque<uint64_t> lane_outs_;
   uint64_t setup_free_ = 0, walker_free_ = 0, bil_free_ = 0, tri_free_ = 0, nst_free_ = 0, noise_free_ = 0, last_out_ = 0;
   uint64_t afv_setup_free_ = 0, afv_walker_free_ = 0;
   bool any_ = false, last_noise_ = false, last_water_ = false, last_afv_ = false;

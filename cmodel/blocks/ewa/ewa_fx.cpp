@@ -319,6 +319,7 @@ Out walk_out(const PixelSetup& su) {
   out.level = su.level;
   out.flags = su.flags;
   out.capped = (su.flags & kCapped) != 0;
+  out.lane_blocks = static_cast<uint32_t>(lane_blocks(su.x0, su.x1, su.y0, su.y1, 4));
   return out;
 }
 

@@ -90,6 +90,7 @@ struct Out {
   uint32_t texels_visited = 0, texels_inside = 0;
   bool capped = false;
   uint32_t flags = 0;
+  uint32_t lane_blocks = 0;  // 2 x 2 blocks of the walked box: the K = 4 walk's clocks (ewa_lanes.hpp)
 };
 
 // Walk extremes, for the width proofs (testbench/unit/ewa_fx_test.cpp).

@@ -30,6 +30,7 @@ struct PixelRecord {
   uint32_t b2_flags = 0;   // C-model engine: B2 flags (ellipse_fx.hpp; kHorizon = B1 guard)
   uint32_t ewa_flags = 0;  // C-model engine, EWA: ewa::fx flags (ewa_fx.hpp)
   int levels = 0;          // C-model engine, EWA: mip levels the set-up tried (ewa::pixel_cost)
+  int ewa_blocks = 0;      // C-model engine, EWA: 2 x 2 blocks of the box (the K = 4 walk's clocks)
   uint32_t tri_flags = 0;  // trilinear: tex::TriFlag (magnify, min/max lod clamp, pyramid clamp)
   uint32_t relief_flags = 0;  // relief materials: relief::ReliefFlag (Vz guard, non-convergence)
   double aniso = 1;          // footprint anisotropy major / minor (after the material's clamp)
@@ -106,6 +107,9 @@ struct CmodelOptions {
   afvis::Rule afvis_rule = afvis::Rule::Row;
   int afvis_pyramid = 0;
   int afvis_bias = afvis::kDefaultBias;  // the trace's bias (depth codes)
+  // EWA walk lanes K (ewa::fx::filter_lanes: 1 sequential, 2, 4): the same frame for every K
+  // (RenderCmodel.EwaLanesGiveTheSameFrame); not applied to AF-with-visibility pixels.
+  int ewa_lanes = 1;
 };
 // The options of the texture path alone (relief off), for comparisons with the RTL top.
 inline CmodelOptions texture_path_only() {
