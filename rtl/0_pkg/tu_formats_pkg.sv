@@ -293,10 +293,10 @@ package tu_formats_pkg;
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
   localparam int MaterialW = 114;  // material fields of a pixel
-  localparam int ReliefW = 94;  // material relief fields
+  localparam int ReliefW = 112;  // material relief fields
   localparam int TriW = 112;  // per-triangle footprint constants
   localparam int ProcW = 338;  // procedural material constants
   localparam int FpixW = 477;  // pixel on its way to the filter
-  localparam int PixW = 571;  // pixel before the relief stage
+  localparam int PixW = 589;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage
