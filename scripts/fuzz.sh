@@ -4,7 +4,7 @@
 # AddressSanitizer + UBSan (preset `fuzz`, clang). A finding is a crash, a sanitizer report or a
 # broken invariant; its input is saved as build/fuzz/artifacts/TARGET-*.
 #   scripts/fuzz.sh          CI: replay every committed corpus (fuzz/corpus/TARGET), then run each
-#                            target for a short time (parsers 10 s, blocks 5 s; nproc at a time)
+#                            target for a short time (parsers 6 s, blocks 3 s; nproc at a time)
 #   scripts/fuzz.sh --long   >= 10,000,000 runs per parser and 1,000,000 per block
 # New inputs go to build/fuzz/corpus/TARGET (not committed); run counts to build/fuzz/logs/.
 set -euo pipefail
@@ -31,7 +31,7 @@ run_one() {
   if [ "$mode" = --long ]; then
     case $t in fuzz_scene|fuzz_vectors) limit=-runs=10000000 ;; *) limit=-runs=1000000 ;; esac
   else
-    case $t in fuzz_scene|fuzz_vectors) limit=-max_total_time=10 ;; *) limit=-max_total_time=5 ;; esac
+    case $t in fuzz_scene|fuzz_vectors) limit=-max_total_time=6 ;; *) limit=-max_total_time=3 ;; esac
   fi
   # -runs=0: replay the committed corpus (every input must pass), then fuzz from it.
   if ! "$bin/$t" -runs=0 "$corpus" >"build/fuzz/logs/$t.replay.log" 2>&1; then
