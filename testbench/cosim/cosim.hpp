@@ -26,15 +26,16 @@ const RtlBlock& find_rtl(const std::string& name);  // throws std::invalid_argum
 // non-square levels: the bank ports' broadcast and border routing; ewa_rtl.cpp).
 RtlBlock rtl_ewa_k4_with(const tex::Texture& t);
 
-// An RtlBlock for the Verilated model V from its `drive` and `sample` functions.
+// An RtlBlock for the Verilated model V from its `drive` and `sample` functions (and an optional
+// preload during reset, e.g. a texture into the RAM model).
 template <class V, class Drive, class Sample>
-RtlBlock make_rtl(const std::string& name, Drive drive, Sample sample) {
+RtlBlock make_rtl(const std::string& name, Drive drive, Sample sample, typename Harness<V>::Init init = {}) {
   RtlBlock b;
   b.name = name;
   b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<V>(drive, sample).run(in, o);
+    return Harness<V>(drive, sample, init).run(in, o);
   };
-  b.timing = [=](const std::vector<Row>& in) { return Harness<V>(drive, sample).measure_timing(in); };
+  b.timing = [=](const std::vector<Row>& in) { return Harness<V>(drive, sample, init).measure_timing(in); };
   return b;
 }
 

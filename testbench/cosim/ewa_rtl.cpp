@@ -15,36 +15,23 @@ namespace tu::cosim {
 namespace {
 template <class V>
 RtlBlock ewa_block(const std::string& name, std::shared_ptr<const tex::Texture> tp) {
+  // The block's fields by name (generated glue), then the texture set-up, which is not a field.
   auto drive = [tp](V& d, const Row& in) {
     const tex::Texture& tex = *tp;
-    d.u_i = static_cast<uint32_t>(in[0]);
-    d.v_i = static_cast<uint32_t>(in[1]);
-    d.ae_i = in[2];
-    d.ce_i = in[3];
-    d.be_i = in[4];
-    d.lmaj_i = static_cast<uint32_t>(in[5]);
-    d.lmin_i = static_cast<uint32_t>(in[6]);
-    d.lod_i = static_cast<uint16_t>(in[7]);
-    d.eflags_i = static_cast<uint8_t>(in[8]);
-    d.wsrc_i = static_cast<uint8_t>(in[9]);
-    d.cap_i = static_cast<uint32_t>(in[10]);
-    d.clip_i = static_cast<uint8_t>(in[11]);
+    glue::drive_ewa(d, in);
     d.base_i = 1;  // after the border word at 0
     d.lw_i = static_cast<uint8_t>(log2_size(tex.levels[0].width));
     d.lh_i = static_cast<uint8_t>(log2_size(tex.levels[0].height));
     d.wrap_i = wrap_code(tex.addressing);
   };
+  // rgba_o packs the four colour out-fields (r least significant).
   auto sample = [](V& d) {
     const uint32_t c = d.rgba_o;
     return Row{c & 0xff, (c >> 8) & 0xff, (c >> 16) & 0xff, c >> 24, d.level_o, d.visited_o, d.inside_o,
                d.flags_o};
   };
   auto init = [words = texture_words(*tp)](V& d, const std::function<void()>& tick) { load_words(d, tick, 0, words); };
-  RtlBlock b;
-  b.name = name;
-  b.run = [=](const std::vector<Row>& in, const RunOptions& o) { return Harness<V>(drive, sample, init).run(in, o); };
-  b.timing = [=](const std::vector<Row>& in) { return Harness<V>(drive, sample, init).measure_timing(in); };
-  return b;
+  return make_rtl<V>(name, drive, sample, init);
 }
 
 std::shared_ptr<const tex::Texture> block_texture() {

@@ -27,9 +27,12 @@ std::string generated_glue() {
         "#pragma once\n\n#include <cstdint>\n#include <type_traits>\n#include <vector>\n\n"
         "namespace tu::cosim::glue {\n\nusing Row = std::vector<uint64_t>;\n";
   for (const Block& b : all()) {
-    for (const auto& [field, port] : b.ports)
+    for (const auto& rename : b.ports) {  // a plain reference: clang 14 (the fuzz build) cannot capture a binding
+      const std::string& field = rename.first;
       if (std::none_of(b.fields.begin(), b.fields.end(), [&](const vec::Field& f) { return f.name == field; }))
-        throw std::logic_error("block " + b.name + ": port rename of unknown field '" + field + "' (to " + port + ")");
+        throw std::logic_error("block " + b.name + ": port rename of unknown field '" + field + "' (to " +
+                               rename.second + ")");
+    }
     if (!is_identifier(b.name)) throw std::logic_error("block name '" + b.name + "' is not an identifier");
     std::ostringstream drive, sample;
     int k_in = 0, k_out = 0;
