@@ -68,9 +68,15 @@ class Harness {
     V dut(ctx.get());
     std::unique_ptr<VerilatedFstC> tfp;
     if (!opt.fst_path.empty()) {
-      tfp = std::make_unique<VerilatedFstC>();
-      dut.trace(tfp.get(), 99);
-      tfp->open(opt.fst_path.c_str());
+      // Models carry tracing only where configured (testbench/cosim/CMakeLists.txt TU_COSIM_TRACE).
+      if constexpr (requires(VerilatedFstC* f) { dut.trace(f, 99); }) {
+        tfp = std::make_unique<VerilatedFstC>();
+        dut.trace(tfp.get(), 99);
+        tfp->open(opt.fst_path.c_str());
+      } else {
+        throw std::invalid_argument("--fst: this block's co-simulation model is built without FST tracing; "
+                                    "reconfigure with cmake --preset default -DTU_COSIM_TRACE=ON");
+      }
     }
     uint64_t t = 0;
     auto tick = [&]() {

@@ -1,10 +1,12 @@
 // texunit: command-line front end (one binary, subcommands).
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 #include <unistd.h>
@@ -17,6 +19,7 @@
 #include "pom/relief_quality.hpp"
 #include "afvis/afvis_quality.hpp"
 #include "cosim.hpp"
+#include "demo_jobs.hpp"
 #include "merge.hpp"
 #include "plan.hpp"
 #include "render_cmd.hpp"
@@ -213,39 +216,58 @@ int cmd_afvis_quality(const std::string& scene_arg, tu::afvis::QualityParams p, 
   return 0;
 }
 
+// Estimated CPU seconds of a demo co-simulation job (100,000 random vectors; measured once,
+// docs/performance.md §6): only the job order depends on it.
+double demo_cosim_cost(const std::string& block, const std::string& set) {
+  if (set != "random") return 0.1;
+  static const std::map<std::string, double> kCost = {{"ewa", 5}};
+  const auto it = kCost.find(block);
+  return it == kCost.end() ? 1 : it->second;
+}
+
 // Main job: every block with RTL co-simulated on its golden, stiff and random sets with 30% stalls
 // (one table), then the default scene rendered through the float reference with every filter.
 // Then the C-model and the RTL render engines (texture-unit top == C model on every pixel).
+// Every co-simulation and render is a job of one pool (tools/texunit/demo_jobs.hpp), the longest
+// first, on every thread; the tables are printed afterwards, then the time each section took.
 int cmd_demo(uint64_t count, const std::string& out_dir, int threads) {
-  std::printf("%-12s %-7s %9s %9s %10s %11s %10s %8s %4s %10s\n", "block", "set", "vectors",
-              "outputs", "mismatch", "max_ulp", "rms_err", "latency", "II", "cycles");
-  // One job per (block, set), run on every thread (each run has its own Verilator context),
-  // printed in the registry's order.
+  const std::string load_before = tu::cli::load_average();
+  const auto t0 = std::chrono::steady_clock::now();
+  const double cpu0 = tu::cli::process_cpu_s();
+  // One job per (block, set) (each run has its own Verilator context), printed in the registry's order.
   struct Job {
     const tu::blocks::Block* block;
     std::string set;  // empty: no RTL co-simulation model
     tu::cosim::Report report;
   };
-  std::vector<Job> jobs;
+  std::vector<Job> cs;
   for (const auto& b : tu::blocks::all()) {
     try {
       tu::cosim::find_rtl(b.name);
     } catch (const std::invalid_argument&) {  // C model and vectors ahead of the block's RTL
-      jobs.push_back({&b, "", {}});
+      cs.push_back({&b, "", {}});
       continue;
     }
-    for (const auto& set : b.sets) jobs.push_back({&b, set, {}});
+    for (const auto& set : b.sets) cs.push_back({&b, set, {}});
   }
-  tu::par::for_each_index(static_cast<int>(jobs.size()), threads, [&](int i) {
-    Job& j = jobs[static_cast<size_t>(i)];
-    if (j.set.empty()) return;
-    const auto vf = tu::blocks::generate(*j.block, j.set, count, 2026, 1);
-    tu::cosim::Options opt;
-    opt.run.stall_prob = 0.3;
-    j.report = tu::cosim::run(vf, opt);
-  });
+  std::vector<tu::cli::DemoJob> jobs;
+  for (auto& j : cs) {
+    if (j.set.empty()) continue;
+    jobs.push_back({"co-simulation", j.block->name + " " + j.set, demo_cosim_cost(j.block->name, j.set), [&j, count] {
+                      const auto vf = tu::blocks::generate(*j.block, j.set, count, 2026, 1);
+                      tu::cosim::Options opt;
+                      opt.run.stall_prob = 0.3;
+                      j.report = tu::cosim::run(vf, opt);
+                    }});
+  }
+  const auto print_renders = tu::cli::demo_render_jobs(out_dir, jobs);
+  tu::cli::run_demo_jobs(jobs, threads);
+  const double jobs_wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto t1 = std::chrono::steady_clock::now();
+  std::printf("%-12s %-7s %9s %9s %10s %11s %10s %8s %4s %10s\n", "block", "set", "vectors",
+              "outputs", "mismatch", "max_ulp", "rms_err", "latency", "II", "cycles");
   bool ok = true;
-  for (const auto& j : jobs) {
+  for (const auto& j : cs) {
     const auto& r = j.report;
     if (j.set.empty()) {
       std::printf("%-12s (C model only: no RTL co-simulation model yet)\n", j.block->name.c_str());
@@ -260,7 +282,9 @@ int cmd_demo(uint64_t count, const std::string& out_dir, int threads) {
   }
   std::printf("%s\n", ok ? "RTL == C model on every vector (30% random stalls, in order, none lost)"
                           : "MISMATCH: RTL and C model disagree (see above)");
-  ok = tu::cli::demo_render(out_dir, threads) && ok;
+  ok = print_renders() && ok;
+  const double print_wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  tu::cli::print_demo_times(jobs, threads, jobs_wall, tu::cli::process_cpu_s() - cpu0, print_wall, load_before);
   return ok ? 0 : 1;
 }
 

@@ -6,10 +6,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <iostream>
 #include <unistd.h>
 
+#include "demo_jobs.hpp"
 #include "gauss/clip.hpp"
 #include "output.hpp"
 #include "texture_unit_rtl.hpp"
@@ -297,205 +299,220 @@ std::string db(double v) {
   std::snprintf(b, sizeof b, std::isinf(v) ? "reference" : "%.2f dB", v);
   return b;
 }
-// The demo's C-model rows: every filter (EWA with each weight source) against both references.
-void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
-void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads);
-// The procedural scene (noise unit): footprint-limited octaves against all octaves.
-void demo_render_procedural(const std::string& out_dir, int threads);
-// The demo's RTL rows: the texture-unit top == the C-model engine on every pixel.
-// `relief`, `relief_refs`: the scene with its relief and its references (the relief row); `s`,
-// `refs`: the texture path.
-bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
-                     const std::string& out_dir, int threads);
-bool demo_render_shaded(const std::string& out_dir, int threads);
-}  // namespace
+// A render timed by the CPU time of the thread that runs it (the demo's jobs run one per thread).
+template <class F>
+render::Frame timed(double* cpu_s, F&& f) {
+  const double c0 = thread_cpu_s();
+  render::Frame fr = f();
+  *cpu_s = thread_cpu_s() - c0;
+  return fr;
+}
 
-bool demo_render(const std::string& out_dir, int threads) {
-  const scene::Scene s = scene::default_scene();
-  const scene::Filter filters[] = {scene::Filter::Nearest, scene::Filter::Bilinear,
-                                   scene::Filter::Trilinear, scene::Filter::Ewa};
-  std::vector<render::Frame> frames;
-  std::vector<double> seconds;
-  for (auto f : filters) {
-    const auto t0 = std::chrono::steady_clock::now();
-    frames.push_back(render::render_ref(s, f));
-    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+// The default scene's C-model rows: every filter (EWA with each weight source) against both references.
+struct CmodelRow {
+  const char* name;
+  scene::Filter filter;
+  scene::WeightSource weights;
+};
+constexpr CmodelRow kCmodelRows[] = {{"nearest", scene::Filter::Nearest, scene::WeightSource::Formula},
+                                     {"bilinear", scene::Filter::Bilinear, scene::WeightSource::Formula},
+                                     {"trilinear", scene::Filter::Trilinear, scene::WeightSource::Formula},
+                                     {"ewa_formula", scene::Filter::Ewa, scene::WeightSource::Formula},
+                                     {"ewa_table1d", scene::Filter::Ewa, scene::WeightSource::Table1d},
+                                     {"ewa_table2d", scene::Filter::Ewa, scene::WeightSource::Table2d}};
+constexpr int kCmodelN = sizeof kCmodelRows / sizeof kCmodelRows[0];
+// The RTL rows: the full unit with every span on EWA, with ground on bilinear (per-material
+// filters: the engines take turns), and the bilinear-only unit.
+struct RtlRow {
+  const char* name;
+  bool has_ewa;  // false: the bilinear-only unit
+  std::optional<scene::Filter> filter;
+  std::optional<scene::WeightSource> weights;
+  bool relief = false;  // each material's relief through the unit's relief stage
+  double cost;          // estimated CPU seconds (the job order)
+};
+const RtlRow kRtlRows[] = {{"ewa_formula", true, scene::Filter::Ewa, scene::WeightSource::Formula, false, 6},
+                           {"ewa_table1d", true, scene::Filter::Ewa, scene::WeightSource::Table1d, false, 6},
+                           {"ewa_table2d", true, scene::Filter::Ewa, scene::WeightSource::Table2d, false, 6},
+                           {"trilinear", true, scene::Filter::Trilinear, std::nullopt, false, 2},
+                           {"nearest", true, scene::Filter::Nearest, std::nullopt, false, 2},
+                           {"mixed", true, std::nullopt, scene::WeightSource::Formula, false, 4},
+                           {"bilinear", false, scene::Filter::Bilinear, scene::WeightSource::Formula, false, 2},
+                           {"ewa+relief", true, scene::Filter::Ewa, std::nullopt, true, 7}};
+constexpr int kRtlN = sizeof kRtlRows / sizeof kRtlRows[0];
+constexpr scene::Filter kRefFilters[] = {scene::Filter::Nearest, scene::Filter::Bilinear, scene::Filter::Trilinear,
+                                         scene::Filter::Ewa};
+constexpr int kRefN = sizeof kRefFilters / sizeof kRefFilters[0];
+
+// Every render of the demo (each job fills one slot).
+struct DemoData {
+  std::string out_dir;
+  scene::Scene s, flat, mixed, proc, proc_all;  // default scene, without relief, ground bilinear; procedural
+  std::optional<scene::Scene> shaded;           // docs/scenes/shaded_sphere.json (run from the repository root)
+  render::Frame ref[kRefN], truth, ewa_flat, truth_flat;
+  double ref_s[kRefN] = {}, truth_s = 0;
+  render::Frame cm[kCmodelN], relief;
+  double cm_s[kCmodelN] = {}, relief_s = 0;
+  render::Frame proc_truth, proc_ref, proc_ref_all, proc_cm, proc_cm_all;
+  cosim::RtlRender rtl[kRtlN];
+  render::Frame shaded_ref, shaded_fx;
+  cosim::RtlRender shaded_rtl;
+};
+
+render::CmodelOptions one_thread() {
+  render::CmodelOptions o;
+  o.threads = 1;  // the jobs already share the cores
+  return o;
+}
+void write_png(const DemoData& d, const std::string& name, const img::Rgba8Image& im) {
+  img::write_png_rgba((std::filesystem::path(d.out_dir) / name).string(), im);
+}
+std::string png_path(const DemoData& d, const std::string& name) {
+  return (std::filesystem::path(d.out_dir) / name).string();
+}
+
+void add_jobs(const std::shared_ptr<DemoData>& dp, std::vector<DemoJob>& jobs) {
+  DemoData& d = *dp;
+  auto add = [&](const char* section, std::string name, double cost, std::function<void()> f) {
+    jobs.push_back({section, std::move(name), cost, std::move(f)});
+  };
+  for (int i = 0; i < kRefN; ++i)
+    add("float reference", std::string("ref ") + std::string(scene::to_string(kRefFilters[i])),
+        kRefFilters[i] == scene::Filter::Ewa ? 1.5 : 0.3, [dp, &d, i] {
+          d.ref[i] = timed(&d.ref_s[i], [&] { return render::render_ref(d.s, kRefFilters[i]); });
+        });
+  add("truth", "truth", 3, [dp, &d] { d.truth = timed(&d.truth_s, [&] { return render::render_truth(d.s); }); });
+  add("float reference", "ref ewa flat", 1.5, [dp, &d] { d.ewa_flat = render::render_ref(d.flat, scene::Filter::Ewa); });
+  add("truth", "truth flat", 3, [dp, &d] { d.truth_flat = render::render_truth(d.flat); });
+  for (int i = 0; i < kCmodelN; ++i)
+    add("C model", std::string("cmodel ") + kCmodelRows[i].name, kCmodelRows[i].filter == scene::Filter::Ewa ? 0.8 : 0.2,
+        [dp, &d, i] {
+          render::CmodelOptions opt = one_thread();
+          opt.weights = kCmodelRows[i].weights;
+          d.cm[i] = timed(&d.cm_s[i], [&] { return render::render_cmodel(d.flat, kCmodelRows[i].filter, opt); });
+        });
+  add("C model", "cmodel ewa+relief", 1, [dp, &d] {
+    d.relief = timed(&d.relief_s, [&] { return render::render_cmodel(d.s, scene::Filter::Ewa, one_thread()); });
+  });
+  add("procedural", "procedural truth", 2, [dp, &d] { d.proc_truth = render::render_truth(d.proc); });
+  add("procedural", "procedural ref", 1, [dp, &d] { d.proc_ref = render::render_ref(d.proc); });
+  add("procedural", "procedural ref all octaves", 1, [dp, &d] { d.proc_ref_all = render::render_ref(d.proc_all); });
+  add("procedural", "procedural cmodel", 0.5,
+      [dp, &d] { d.proc_cm = render::render_cmodel(d.proc, std::nullopt, one_thread()); });
+  add("procedural", "procedural cmodel all octaves", 0.5,
+      [dp, &d] { d.proc_cm_all = render::render_cmodel(d.proc_all, std::nullopt, one_thread()); });
+  for (int i = 0; i < kRtlN; ++i)
+    add("RTL renders", std::string("rtl ") + kRtlRows[i].name, kRtlRows[i].cost, [dp, &d, i] {
+      const RtlRow& r = kRtlRows[i];
+      cosim::RtlRenderOptions o;
+      o.has_ewa = r.has_ewa;
+      o.filter = r.filter;
+      o.weights = r.weights;
+      o.relief = r.relief;
+      o.threads = 1;
+      d.rtl[i] = cosim::render_rtl(r.relief ? d.s : r.filter ? d.flat : d.mixed, o);
+    });
+  if (d.shaded) {
+    add("shaded", "shaded ref", 0.5, [dp, &d] { d.shaded_ref = render::render_ref(*d.shaded); });
+    add("shaded", "shaded cmodel", 0.5, [dp, &d] { d.shaded_fx = render::render_cmodel(*d.shaded, std::nullopt, one_thread()); });
+    add("shaded", "shaded rtl", 3, [dp, &d] {
+      cosim::RtlRenderOptions o;
+      o.threads = 1;
+      d.shaded_rtl = cosim::render_rtl(*d.shaded, o);
+    });
   }
-  std::filesystem::create_directories(out_dir);
-  const auto& ewa = frames.back();
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto truth = render::render_truth(s);
-  const double truth_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  img::write_png_rgba((std::filesystem::path(out_dir) / "truth.png").string(), truth.image);
-  const auto rel = render::relief_pixels(s);
+}
+
+void print_reference(const DemoData& d) {
+  const auto& ewa = d.ref[kRefN - 1];
+  write_png(d, "truth.png", d.truth.image);
+  const auto rel = render::relief_pixels(d.s);
   std::printf("\ndefault scene (%dx%d, %zu covered pixels), float reference engine; PSNR over covered pixels "
               "against the float EWA and the ground truth (16 x 16 samples per pixel, box, exact relief "
               "intersection; %.1f s), the wall's relief pixels alone in the last column:\n",
-              s.camera.width, s.camera.height, ewa.pixels.size(), truth_s);
+              d.s.camera.width, d.s.camera.height, ewa.pixels.size(), d.truth_s);
   std::printf("%-10s %14s %14s %14s %14s %10s  %s\n", "filter", "PSNR vs EWA", "vs truth", "relief vs truth",
               "texels/pixel", "seconds", "image");
-  for (size_t i = 0; i < frames.size(); ++i) {
-    const auto name = std::string(scene::to_string(filters[i]));
-    const auto png = (std::filesystem::path(out_dir) / ("ref_" + name + ".png")).string();
-    img::write_png_rgba(png, frames[i].image);
-    if (i + 1 < frames.size())
-      img::write_png_rgba((std::filesystem::path(out_dir) / ("heat_" + name + "_vs_ewa.png")).string(),
-                          render::error_heatmap(frames[i].image, ewa.image, 64));
+  for (int i = 0; i < kRefN; ++i) {
+    const auto name = std::string(scene::to_string(kRefFilters[i]));
+    const auto png = png_path(d, "ref_" + name + ".png");
+    img::write_png_rgba(png, d.ref[i].image);
+    if (i + 1 < kRefN) write_png(d, "heat_" + name + "_vs_ewa.png", render::error_heatmap(d.ref[i].image, ewa.image, 64));
     double texels = 0;
-    for (const auto& p : frames[i].pixels) texels += p.texels;
-    std::printf("%-10s %14s %14s %14s %14.2f %10.3f  %s\n", name.c_str(),
-                db(render::psnr_covered(frames[i], ewa)).c_str(), db(render::psnr_covered(frames[i], truth)).c_str(),
-                db(render::psnr_covered(frames[i], truth, rel)).c_str(),
-                texels / static_cast<double>(std::max<size_t>(1, frames[i].pixels.size())),
-                seconds[i], png.c_str());
+    for (const auto& p : d.ref[i].pixels) texels += p.texels;
+    std::printf("%-10s %14s %14s %14s %14.2f %10.3f  %s\n", name.c_str(), db(render::psnr_covered(d.ref[i], ewa)).c_str(),
+                db(render::psnr_covered(d.ref[i], d.truth)).c_str(), db(render::psnr_covered(d.ref[i], d.truth, rel)).c_str(),
+                texels / static_cast<double>(std::max<size_t>(1, d.ref[i].pixels.size())), d.ref_s[i], png.c_str());
   }
-  // The filters are measured on the texture path (relief off on both sides); the relief method is
-  // measured on its own rows (C model and RTL) against the float reference's 256-layer march.
-  const scene::Scene flat = scene::without_relief(s);
-  const auto ewa_flat = render::render_ref(flat, scene::Filter::Ewa);
-  const auto truth_flat = render::render_truth(flat);
-  const Refs flat_refs{ewa_flat, truth_flat}, relief_refs{ewa, truth};
-  demo_render_cmodel(flat, flat_refs, out_dir, threads);
-  demo_render_relief(s, relief_refs, out_dir, threads);
-  demo_render_procedural(out_dir, threads);
-  const bool rtl_ok = demo_render_rtl(s, relief_refs, flat, flat_refs, out_dir, threads);
-  return demo_render_shaded(out_dir, threads) && rtl_ok;
 }
 
-namespace {
-void demo_render_cmodel(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads) {
-  const auto& ewa_ref = refs.ewa;
-  struct Row {
-    const char* name;
-    scene::Filter filter;
-    scene::WeightSource weights;
-  };
-  const Row rows[] = {{"nearest", scene::Filter::Nearest, scene::WeightSource::Formula},
-                      {"bilinear", scene::Filter::Bilinear, scene::WeightSource::Formula},
-                      {"trilinear", scene::Filter::Trilinear, scene::WeightSource::Formula},
-                      {"ewa_formula", scene::Filter::Ewa, scene::WeightSource::Formula},
-                      {"ewa_table1d", scene::Filter::Ewa, scene::WeightSource::Table1d},
-                      {"ewa_table2d", scene::Filter::Ewa, scene::WeightSource::Table2d}};
+// The filters are measured on the texture path (relief off on both sides); the relief method is
+// measured on its own rows (C model and RTL) against the float reference's 256-layer march.
+void print_cmodel(const DemoData& d, const Refs& refs) {
   std::printf("\ndefault scene, bit-accurate C-model engine (B1 persp -> B2 ellipse -> filter), "
-              "against the float EWA reference, texture path (relief off on both):\n");
+              "against the float EWA reference, texture path (relief off on both; pixels/s: per core):\n");
   std::printf("%-12s %12s %12s %13s %13s %12s  %s\n", "filter", "PSNR vs EWA", "vs truth", "texels/pixel",
               "inside/pixel", "pixels/s", "image");
-  for (const auto& r : rows) {
-    render::CmodelOptions opt;
-    opt.weights = r.weights;  // each render takes ~0.5 s: no progress bar
-    opt.threads = threads;
-    const auto t0 = std::chrono::steady_clock::now();
-    const auto fr = render::render_cmodel(s, r.filter, opt);
-    const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const auto dir = std::filesystem::path(out_dir);
-    const auto png = (dir / (std::string("cmodel_") + r.name + ".png")).string();
+  for (int i = 0; i < kCmodelN; ++i) {
+    const CmodelRow& r = kCmodelRows[i];
+    const render::Frame& fr = d.cm[i];
+    const auto png = png_path(d, std::string("cmodel_") + r.name + ".png");
     img::write_png_rgba(png, fr.image);
-    img::write_png_rgba((dir / (std::string("heat_cmodel_") + r.name + "_vs_ewa.png")).string(),
-                        render::error_heatmap(fr.image, ewa_ref.image, 64));
+    write_png(d, std::string("heat_cmodel_") + r.name + "_vs_ewa.png", render::error_heatmap(fr.image, refs.ewa.image, 64));
     double texels = 0, inside = 0;
     for (const auto& p : fr.pixels) texels += p.texels, inside += p.texels_inside;
     const double n = static_cast<double>(std::max<size_t>(1, fr.pixels.size()));
     char inside_txt[32] = "-";
     if (r.filter == scene::Filter::Ewa) std::snprintf(inside_txt, sizeof inside_txt, "%.2f", inside / n);
-    std::printf("%-12s %12s %12s %13.2f %13s %12.0f  %s\n", r.name, db(render::psnr_covered(fr, ewa_ref)).c_str(),
-                db(render::psnr_covered(fr, refs.truth)).c_str(), texels / n, inside_txt, n / sec, png.c_str());
+    std::printf("%-12s %12s %12s %13.2f %13s %12.0f  %s\n", r.name, db(render::psnr_covered(fr, refs.ewa)).c_str(),
+                db(render::psnr_covered(fr, refs.truth)).c_str(), texels / n, inside_txt, n / d.cm_s[i], png.c_str());
   }
 }
 
-void demo_render_relief(const scene::Scene& s, const Refs& refs, const std::string& out_dir, int threads) {
-  const auto& ewa_ref = refs.ewa;
-  const auto t0 = std::chrono::steady_clock::now();
-  render::CmodelOptions opt;
-  opt.threads = threads;
-  const auto fr = render::render_cmodel(s, scene::Filter::Ewa, opt);
-  const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const auto png = (std::filesystem::path(out_dir) / "cmodel_ewa_relief.png").string();
-  img::write_png_rgba(png, fr.image);
-  img::write_png_rgba((std::filesystem::path(out_dir) / "heat_cmodel_ewa_relief_vs_ewa.png").string(),
-                      render::error_heatmap(fr.image, ewa_ref.image, 64));
-  const auto rel = render::relief_pixels(s);
+void print_relief(const DemoData& d, const Refs& refs) {
+  const auto png = png_path(d, "cmodel_ewa_relief.png");
+  img::write_png_rgba(png, d.relief.image);
+  write_png(d, "heat_cmodel_ewa_relief_vs_ewa.png", render::error_heatmap(d.relief.image, refs.ewa.image, 64));
+  const auto rel = render::relief_pixels(d.s);
   std::printf("\nwith relief (each material's method, fixed point) against the float EWA with the 256-layer "
               "relief march and the truth (exact intersection), over covered pixels / the relief pixels alone:\n"
               "%-12s %12s %12s   relief pixels: %s vs EWA, %s vs truth %12.0f px/s  %s\n",
-              "ewa+relief", db(render::psnr_covered(fr, ewa_ref)).c_str(), db(render::psnr_covered(fr, refs.truth)).c_str(),
-              db(render::psnr_covered(fr, ewa_ref, rel)).c_str(), db(render::psnr_covered(fr, refs.truth, rel)).c_str(),
-              double(fr.pixels.size()) / sec, png.c_str());
+              "ewa+relief", db(render::psnr_covered(d.relief, refs.ewa)).c_str(), db(render::psnr_covered(d.relief, refs.truth)).c_str(),
+              db(render::psnr_covered(d.relief, refs.ewa, rel)).c_str(), db(render::psnr_covered(d.relief, refs.truth, rel)).c_str(),
+              double(d.relief.pixels.size()) / d.relief_s, png.c_str());
 }
 
-void demo_render_procedural(const std::string& out_dir, int threads) {
-  const scene::Scene s = scene::procedural_scene();
-  scene::Scene all = s;
-  for (auto& [name, m] : all.materials) m.procedural->footprint_limit = false;
-  const auto truth = render::render_truth(s);
-  const auto ref = render::render_ref(s);
+void print_procedural(const DemoData& d) {
   std::printf("\nprocedural scene (docs/scenes/procedural.json, %dx%d: fBm ground, smoke wall; noise unit, "
               "docs/blocks/noise.md §5), PSNR over covered pixels against the float reference with the "
               "footprint limit and the truth (16 x 16 samples of the unfiltered field):\n",
-              s.camera.width, s.camera.height);
+              d.proc.camera.width, d.proc.camera.height);
   std::printf("%-22s %12s %12s  %s\n", "engine", "vs ref", "vs truth", "image");
-  render::CmodelOptions opt;
-  opt.threads = threads;
-  struct Row {
-    const char* name;
-    render::Frame frame;
-  };
-  const Row rows[] = {{"ref_limited", ref},
-                      {"ref_all_octaves", render::render_ref(all)},
-                      {"cmodel_limited", render::render_cmodel(s, std::nullopt, opt)},
-                      {"cmodel_all_octaves", render::render_cmodel(all, std::nullopt, opt)},
-                      {"truth", truth}};
-  for (const auto& r : rows) {
-    const auto png = (std::filesystem::path(out_dir) / (std::string("procedural_") + r.name + ".png")).string();
-    img::write_png_rgba(png, r.frame.image);
-    std::printf("%-22s %12s %12s  %s\n", r.name, db(render::psnr_covered(r.frame, ref)).c_str(),
-                db(render::psnr_covered(r.frame, truth)).c_str(), png.c_str());
+  const std::pair<const char*, const render::Frame*> rows[] = {{"ref_limited", &d.proc_ref},
+                                                               {"ref_all_octaves", &d.proc_ref_all},
+                                                               {"cmodel_limited", &d.proc_cm},
+                                                               {"cmodel_all_octaves", &d.proc_cm_all},
+                                                               {"truth", &d.proc_truth}};
+  for (const auto& [name, fr] : rows) {
+    const auto png = png_path(d, std::string("procedural_") + name + ".png");
+    img::write_png_rgba(png, fr->image);
+    std::printf("%-22s %12s %12s  %s\n", name, db(render::psnr_covered(*fr, d.proc_ref)).c_str(),
+                db(render::psnr_covered(*fr, d.proc_truth)).c_str(), png.c_str());
   }
 }
 
-bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const scene::Scene& s, const Refs& refs,
-                     const std::string& out_dir, int threads) {
-  struct Row {
-    const char* name;
-    bool has_ewa;  // false: the bilinear-only unit
-    std::optional<scene::Filter> filter;
-    std::optional<scene::WeightSource> weights;
-    bool relief = false;  // each material's relief through the unit's relief stage
-  };
-  // The full unit with every span on EWA, with ground on bilinear (per-material filters: the
-  // engines take turns), and the bilinear-only unit.
-  const Row rows[] = {{"ewa_formula", true, scene::Filter::Ewa, scene::WeightSource::Formula},
-                      {"ewa_table1d", true, scene::Filter::Ewa, scene::WeightSource::Table1d},
-                      {"ewa_table2d", true, scene::Filter::Ewa, scene::WeightSource::Table2d},
-                      {"trilinear", true, scene::Filter::Trilinear, std::nullopt},
-                      {"nearest", true, scene::Filter::Nearest, std::nullopt},
-                      {"mixed", true, std::nullopt, scene::WeightSource::Formula},
-                      {"bilinear", false, scene::Filter::Bilinear, scene::WeightSource::Formula},
-                      {"ewa+relief", true, scene::Filter::Ewa, std::nullopt, true}};
-  scene::Scene mixed = s;
-  mixed.materials.at("ground").filter = scene::Filter::Bilinear;
+// The RTL rows: the texture-unit top == the C-model engine on every pixel.
+bool print_rtl(const DemoData& d, const Refs& relief_refs, const Refs& refs) {
   std::printf("\ndefault scene through the Verilated texture unit (rtl/top/tu_texture_unit.sv: spans ->"
               " B1 -> B2 -> relief -> filter), every pixel compared with the C-model engine, no stalls:\n");
   std::printf("%-12s %8s %10s %11s %11s %13s %13s %9s %12s  %s\n", "filter", "pixels", "mismatch",
               "PSNR vs EWA", "vs truth", "cycles/pixel", "predicted", "error", "RTL pixel/s", "image");
-  // The rows on every thread (each simulation has its own Verilator context), printed in order.
-  constexpr int kRows = sizeof rows / sizeof rows[0];
-  std::vector<cosim::RtlRender> results(kRows);
-  par::for_each_index(kRows, threads, [&](int i) {
-    const Row& r = rows[i];
-    cosim::RtlRenderOptions o;
-    o.has_ewa = r.has_ewa;
-    o.filter = r.filter;
-    o.weights = r.weights;
-    o.relief = r.relief;
-    o.threads = 1;  // the rows already share the cores
-    results[static_cast<size_t>(i)] = cosim::render_rtl(r.relief ? relief : r.filter ? s : mixed, o);
-  });
   bool ok = true;
-  for (int i = 0; i < kRows; ++i) {
-    const Row& r = rows[i];
-    const auto& res = results[static_cast<size_t>(i)];
+  for (int i = 0; i < kRtlN; ++i) {
+    const RtlRow& r = kRtlRows[i];
+    const auto& res = d.rtl[i];
     ok = ok && res.ok();
-    const auto png = (std::filesystem::path(out_dir) / (std::string("rtl_") + r.name + ".png")).string();
+    const auto png = png_path(d, std::string("rtl_") + r.name + ".png");
     img::write_png_rgba(png, res.frame.image);
     const double n = static_cast<double>(std::max<size_t>(1, res.frame.pixels.size()));
     char pred[32] = "-", err[32] = "-";  // relief streams: not predicted
@@ -511,7 +528,7 @@ bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const 
                 db(render::psnr_covered(res.frame, rf.truth)).c_str(), double(res.cycles) / n, pred, err,
                 n / res.sim_wall_s, png.c_str());
     if (r.relief) {
-      const auto rel = render::relief_pixels(relief);
+      const auto rel = render::relief_pixels(d.s);
       std::printf("%-12s relief pixels alone: %s vs EWA, %s vs truth\n", "", db(render::psnr_covered(res.frame, rf.ewa, rel)).c_str(),
                   db(render::psnr_covered(res.frame, rf.truth, rel)).c_str());
     }
@@ -524,34 +541,60 @@ bool demo_render_rtl(const scene::Scene& relief, const Refs& relief_refs, const 
 
 // The shaded scene (docs/scenes/shaded_sphere.json: one point light, diffuse + the unit's F_MSH
 // highlight on a checkered sphere with vertex normals) through the three engines.
-bool demo_render_shaded(const std::string& out_dir, int threads) {
+bool print_shaded(const DemoData& d) {
   const char* path = "docs/scenes/shaded_sphere.json";
-  if (!std::filesystem::exists(path)) {
+  if (!d.shaded) {
     std::printf("\nshaded scene: %s not found (run the demo from the repository root): skipped\n", path);
     return true;
   }
-  const scene::Scene s = scene::load(path);
-  const auto ref = render::render_ref(s);
-  render::CmodelOptions copt;
-  copt.threads = threads;
-  const auto fx = render::render_cmodel(s, std::nullopt, copt);
-  cosim::RtlRenderOptions o;
-  o.threads = threads;
-  const auto rtl = cosim::render_rtl(s, o);
-  const auto dir = std::filesystem::path(out_dir);
-  img::write_png_rgba((dir / "shaded_ref.png").string(), ref.image);
-  img::write_png_rgba((dir / "shaded_cmodel.png").string(), fx.image);
-  img::write_png_rgba((dir / "shaded_rtl.png").string(), rtl.frame.image);
+  const auto& rtl = d.shaded_rtl;
+  write_png(d, "shaded_ref.png", d.shaded_ref.image);
+  write_png(d, "shaded_cmodel.png", d.shaded_fx.image);
+  write_png(d, "shaded_rtl.png", rtl.frame.image);
   const double n = static_cast<double>(std::max<size_t>(1, rtl.frame.pixels.size()));
   std::printf("\nshaded scene %s (%zu covered pixels; one light, diffuse + %s highlight after the filter):\n"
               "  C model %s vs the float reference; RTL: %llu mismatches against the C model, %.3f cycles/pixel, "
               "predicted %.3f (%+.3f %%); images %s/shaded_{ref,cmodel,rtl}.png\n",
-              path, rtl.frame.pixels.size(), brdf::name(o.shade_model).c_str(), db(render::psnr_covered(fx, ref)).c_str(),
-              (unsigned long long)rtl.mismatches, double(rtl.cycles) / n, double(rtl.predicted_cycles) / n,
-              100.0 * (double(rtl.predicted_cycles) / double(std::max<uint64_t>(1, rtl.cycles)) - 1), out_dir.c_str());
+              path, rtl.frame.pixels.size(), brdf::name(cosim::RtlRenderOptions{}.shade_model).c_str(),
+              db(render::psnr_covered(d.shaded_fx, d.shaded_ref)).c_str(), (unsigned long long)rtl.mismatches,
+              double(rtl.cycles) / n, double(rtl.predicted_cycles) / n,
+              100.0 * (double(rtl.predicted_cycles) / double(std::max<uint64_t>(1, rtl.cycles)) - 1), d.out_dir.c_str());
   if (!rtl.ok()) std::printf("  first mismatch: %s\n", rtl.first_mismatch.c_str());
   return rtl.ok() && rtl.cycles == rtl.predicted_cycles;
 }
 }  // namespace
+
+std::function<bool()> demo_render_jobs(const std::string& out_dir, std::vector<DemoJob>& jobs) {
+  auto dp = std::make_shared<DemoData>();
+  DemoData& d = *dp;
+  d.out_dir = out_dir;
+  d.s = scene::default_scene();
+  d.flat = scene::without_relief(d.s);
+  d.mixed = d.flat;
+  d.mixed.materials.at("ground").filter = scene::Filter::Bilinear;
+  d.proc = scene::procedural_scene();
+  d.proc_all = d.proc;
+  for (auto& [name, m] : d.proc_all.materials) m.procedural->footprint_limit = false;
+  if (const char* path = "docs/scenes/shaded_sphere.json"; std::filesystem::exists(path)) d.shaded = scene::load(path);
+  std::filesystem::create_directories(out_dir);
+  add_jobs(dp, jobs);
+  return [dp] {
+    const DemoData& d = *dp;
+    const Refs flat_refs{d.ewa_flat, d.truth_flat}, relief_refs{d.ref[kRefN - 1], d.truth};
+    print_reference(d);
+    print_cmodel(d, flat_refs);
+    print_relief(d, relief_refs);
+    print_procedural(d);
+    const bool rtl_ok = print_rtl(d, relief_refs, flat_refs);
+    return print_shaded(d) && rtl_ok;
+  };
+}
+
+bool demo_render(const std::string& out_dir, int threads) {
+  std::vector<DemoJob> jobs;
+  const auto print = demo_render_jobs(out_dir, jobs);
+  run_demo_jobs(jobs, threads);
+  return print();
+}
 
 }  // namespace tu::cli
