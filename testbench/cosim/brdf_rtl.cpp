@@ -1,5 +1,5 @@
 // RTL bindings of the BRDF specular models (rtl/brdf/tu_brdf_<model>.sv): every top has the same
-// ports (c_i, n_i, ccut_i -> f_o, flag_o).
+// ports (c_i, n_i, ccut_i -> f_o, flag_o), named after the brdf blocks' fields (generated glue).
 #include "Vtu_brdf_blinn.h"
 #include "Vtu_brdf_dsh.h"
 #include "Vtu_brdf_msh.h"
@@ -13,15 +13,10 @@
 namespace tu::cosim {
 
 namespace {
+// Every model's block has the blinn block's fields (c, n, ccut -> f, flag).
 template <class V>
 RtlBlock brdf_binding(const std::string& name) {
-  auto drive = [](V& d, const Row& in) {
-    d.c_i = static_cast<uint32_t>(in[0]);
-    d.n_i = static_cast<uint16_t>(in[1]);
-    d.ccut_i = static_cast<uint32_t>(in[2]);
-  };
-  auto sample = [](V& d) { return Row{d.f_o, d.flag_o}; };
-  return make_rtl<V>(name, drive, sample);
+  return make_rtl<V>(name, glue::drive_brdf_blinn<V>, glue::sample_brdf_blinn<V>);
 }
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "block.hpp"
+#include "generated/tu_glue.hpp"  // (build tree) drive_B / sample_B: ports by field name
 #include "harness.hpp"
 #include "vector_file.hpp"
 

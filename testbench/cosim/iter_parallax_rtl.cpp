@@ -1,4 +1,5 @@
-// RTL binding of the iterative parallax engine (rtl/pom/tu_iter_parallax.sv).
+// RTL binding of the iterative parallax engine (rtl/pom/tu_iter_parallax.sv): ports named after
+// the block's fields (generated glue); the iteration cap is a port, not a field.
 #include "Vtu_iter_parallax.h"
 #include "cosim.hpp"
 #include "texunit/formats.hpp"
@@ -7,17 +8,10 @@ namespace tu::cosim {
 
 RtlBlock rtl_iter_parallax() {
   auto drive = [](Vtu_iter_parallax& d, const Row& in) {
-    d.u_i = static_cast<uint32_t>(in[0]);
-    d.v_i = static_cast<uint32_t>(in[1]);
-    d.su_i = static_cast<uint32_t>(in[2]);
-    d.sv_i = static_cast<uint32_t>(in[3]);
-    d.sh_i = static_cast<uint32_t>(in[4]);
+    glue::drive_iter_parallax(d, in);
     d.cap_i = fmt::kIpxCap;  // the block's vectors use the default cap
   };
-  auto sample = [](Vtu_iter_parallax& d) {
-    return Row{d.u_o, d.v_o, d.iters_o, d.nonconv_o};
-  };
-  return make_rtl<Vtu_iter_parallax>("iter_parallax", drive, sample);
+  return make_rtl<Vtu_iter_parallax>("iter_parallax", drive, glue::sample_iter_parallax<Vtu_iter_parallax>);
 }
 
 }  // namespace tu::cosim

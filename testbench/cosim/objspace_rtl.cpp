@@ -14,31 +14,8 @@
 namespace tu::cosim {
 
 RtlBlock rtl_objspace_sample() {
-  auto drive = [](Vtu_objspace_sample& d, const Row& in) {
-    d.a_i = in[0];
-    d.b_i = in[1];
-    d.c_i = in[2];
-    d.d_i = in[3];
-    d.e_i = in[4];
-    d.f_i = in[5];
-    d.g_i = in[6];
-    d.h_i = in[7];
-    d.i_i = in[8];
-    d.gi_i = static_cast<uint16_t>(in[9]);
-    d.gj_i = static_cast<uint16_t>(in[10]);
-  };
-  auto sample = [](Vtu_objspace_sample& d) {
-    return Row{d.x_o, d.y_o, d.w00_o, d.w10_o, d.w01_o, d.w11_o, d.guard_o};
-  };
-  RtlBlock b;
-  b.name = "objspace_sample";
-  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<Vtu_objspace_sample>(drive, sample).run(in, o);
-  };
-  b.timing = [=](const std::vector<Row>& in) {
-    return Harness<Vtu_objspace_sample>(drive, sample).measure_timing(in);
-  };
-  return b;
+  return make_rtl<Vtu_objspace_sample>("objspace_sample", glue::drive_objspace_sample<Vtu_objspace_sample>,
+                                       glue::sample_objspace_sample<Vtu_objspace_sample>);
 }
 
 ObjspaceRtlRender render_objspace_rtl(const scene::Scene& s, const objspace::Options& opt,

@@ -12,45 +12,14 @@
 
 namespace tu::cosim {
 
-namespace {
-template <class V>
-RtlBlock bind(const std::string& name) {
-  auto drive = [](V& d, const Row& in) {
-    d.pu0_i = in[0];
-    d.pv0_i = in[1];
-    d.q0_i = in[2];
-    d.a_i = in[3];
-    d.d_i = in[4];
-    d.g_i = in[5];
-    d.n_i = static_cast<uint16_t>(in[6]);
-  };
-  auto sample = [](V& d) { return Row{d.u_o, d.v_o, d.flag_o}; };
-  RtlBlock b;
-  b.name = name;
-  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<V>(drive, sample).run(in, o);
-  };
-  b.timing = [=](const std::vector<Row>& in) {
-    return Harness<V>(drive, sample).measure_timing(in);
-  };
-  return b;
+RtlBlock rtl_persp() { return make_rtl<Vtu_persp>("persp", glue::drive_persp<Vtu_persp>, glue::sample_persp<Vtu_persp>); }
+RtlBlock rtl_persp_direct() {
+  return make_rtl<Vtu_persp_direct>("persp", glue::drive_persp<Vtu_persp_direct>, glue::sample_persp<Vtu_persp_direct>);
 }
-}  // namespace
-
-RtlBlock rtl_persp() { return bind<Vtu_persp>("persp"); }
-RtlBlock rtl_persp_direct() { return bind<Vtu_persp_direct>("persp"); }
 
 // k-lane unit (K = 4): one transaction = 4 pixels; outputs per lane j: u_j, v_j, flag_j.
 RtlBlock rtl_persp_k4() {
-  auto drive = [](Vtu_persp_klane& d, const Row& in) {
-    d.pu0_i = in[0];
-    d.pv0_i = in[1];
-    d.q0_i = in[2];
-    d.a_i = in[3];
-    d.d_i = in[4];
-    d.g_i = in[5];
-    d.n_i = static_cast<uint16_t>(in[6]);
-  };
+  // Outputs are per-lane port arrays (u_o[j], v_o[j], flag_o bit j), the file's out-fields lane by lane.
   auto sample = [](Vtu_persp_klane& d) {
     Row r;
     for (int j = 0; j < 4; ++j) {
@@ -60,59 +29,19 @@ RtlBlock rtl_persp_k4() {
     }
     return r;
   };
-  RtlBlock b;
-  b.name = "persp_k4";
-  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<Vtu_persp_klane>(drive, sample).run(in, o);
-  };
-  b.timing = [=](const std::vector<Row>& in) {
-    return Harness<Vtu_persp_klane>(drive, sample).measure_timing(in);
-  };
-  return b;
+  return make_rtl<Vtu_persp_klane>("persp_k4", glue::drive_persp_k4<Vtu_persp_klane>, sample);
 }
 
 // Per-scanline set-up (rtl/persp/tu_persp_setup.sv): one transaction = one span.
 RtlBlock rtl_persp_setup() {
-  auto drive = [](Vtu_persp_setup& d, const Row& in) {
-    d.a_i = in[0];
-    d.b_i = in[1];
-    d.c_i = in[2];
-    d.d_i = in[3];
-    d.e_i = in[4];
-    d.f_i = in[5];
-    d.g_i = in[6];
-    d.h_i = in[7];
-    d.i_i = in[8];
-    d.x0_i = static_cast<uint16_t>(in[9]);
-    d.x1_i = static_cast<uint16_t>(in[10]);
-    d.y_i = static_cast<uint16_t>(in[11]);
-  };
-  auto sample = [](Vtu_persp_setup& d) { return Row{d.pu_o, d.pv_o, d.q_o, d.ovf_o}; };
-  RtlBlock b;
-  b.name = "persp_setup";
-  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<Vtu_persp_setup>(drive, sample).run(in, o);
-  };
-  b.timing = [=](const std::vector<Row>& in) {
-    return Harness<Vtu_persp_setup>(drive, sample).measure_timing(in);
-  };
-  return b;
+  return make_rtl<Vtu_persp_setup>("persp_setup", glue::drive_persp_setup<Vtu_persp_setup>,
+                                   glue::sample_persp_setup<Vtu_persp_setup>);
 }
 
 // Texel-depth per-pixel datapath: one transaction = one pixel with its span record.
 RtlBlock rtl_texel_depth() {
-  auto drive = [](Vtu_texel_depth& d, const Row& in) {
-    d.q1_i = in[0];
-    d.q2_i = in[1];
-    d.t1u_i = static_cast<uint32_t>(in[2]);
-    d.t1v_i = static_cast<uint32_t>(in[3]);
-    d.t2u_i = static_cast<uint32_t>(in[4]);
-    d.t2v_i = static_cast<uint32_t>(in[5]);
-    d.m2_i = static_cast<uint16_t>(in[6]);
-    d.m_i = static_cast<uint16_t>(in[7]);
-  };
-  auto sample = [](Vtu_texel_depth& d) { return Row{d.u_o, d.v_o, d.flag_o}; };
-  return make_rtl<Vtu_texel_depth>("texel_depth", drive, sample);
+  return make_rtl<Vtu_texel_depth>("texel_depth", glue::drive_texel_depth<Vtu_texel_depth>,
+                                   glue::sample_texel_depth<Vtu_texel_depth>);
 }
 
 // The same RTL on persp_texel_depth rows (B1's seeds): each row becomes its span record first

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -31,6 +32,9 @@ struct Block {
   std::string name;
   std::string description;
   std::vector<vec::Field> fields;  // in, out and ref fields, in file order
+  // RTL port base names where they differ from the field's name (port = base + "_i" / "_o"): a
+  // file cannot hold an in- and an out-field of one name, a port list can (the generated glue).
+  std::map<std::string, std::string> ports;
   std::vector<std::string> sets;   // e.g. golden, stiff, random
   // Input rows (one raw code per in-field) for a set; count/seed used by random sets.
   std::function<std::vector<Row>(const std::string& set, uint64_t count, uint64_t seed)> inputs;

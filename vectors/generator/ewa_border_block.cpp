@@ -117,6 +117,7 @@ Block make_ewa_border() {
               field("kyv", vec::Role::In, "s18.16"), field("w", vec::Role::In, "u17.16"),
               field("zone", vec::Role::Out, "u2.0"), field("d", vec::Role::Out, "s13.12"),
               field("wo", vec::Role::Out, "u17.16"), field("ref", vec::Role::Ref, "f64")};
+  b.ports = {{"wo", "w"}};  // tu_ewa_border's w_o (w_i is the interior weight)
   b.sets = {"golden", "stiff", "random"};
   b.inputs = standard_sets([] { return walk_rows(64, 1); }, [] { return edge_rows(); },
                            [](uint64_t count, uint64_t seed) { return walk_rows(count, seed); });

@@ -68,6 +68,7 @@ Block make_iter_parallax() {
               F("tv", vec::Role::Out, "u16.16"),    F("iters", vec::Role::Out, "u5.0"),
               F("nonconv", vec::Role::Out, "u1.0"), F("ref_u", vec::Role::Ref, "f64"),
               F("ref_v", vec::Role::Ref, "f64")};
+  b.ports = {{"tu", "u"}, {"tv", "v"}};  // tu_iter_parallax's u_o / v_o
   b.sets = {"golden", "stiff", "random"};
   b.inputs = standard_sets(golden_inputs, stiff_inputs, random_inputs);
   b.model = [](const Row& in) {

@@ -65,6 +65,7 @@ Block make_pom_march() {
               F("tv", vec::Role::Out, "s32.16"),   F("steps", vec::Role::Out, "u6.0"),
               F("a", vec::Role::Out, "u16.0"),     F("den", vec::Role::Out, "u16.0"),
               F("ref_steps", vec::Role::Ref, "f64")};
+  b.ports = {{"tu", "u"}, {"tv", "v"}};  // tu_pom_march's u_o / v_o (u_i / v_i are the start)
   b.sets = {"golden", "stiff", "random"};
   b.inputs = standard_sets(golden_inputs, stiff_inputs, random_inputs);
   b.model = [](const Row& in) {

@@ -99,6 +99,7 @@ Block make_setup() {
               F("s", In, "u16.16"),      F("n", In, "u6.0"),         F("du", Out, "s32.16"),
               F("dv", Out, "s32.16"),    F("n_out", Out, "u6.0"),    F("back", Out, "u1.0"),
               F("clamped", Out, "u1.0"), F("ref_du", Ref, "f64"),    F("ref_dv", Ref, "f64")};
+  b.ports = {{"n_out", "n"}};  // tu_pom_setup's n_o (n_i is the requested count)
   b.sets = {"golden", "stiff", "random"};
   b.inputs = standard_sets(
       [] {
@@ -167,6 +168,7 @@ Block make_refine() {
               F("den", In, "u16.0"),      F("wrap", In, "u1.0"),     F("u", Out, "s32.16"),
               F("v", Out, "s32.16"),      F("steps_out", Out, "u6.0"), F("w", Out, "u17.16"),
               F("discard", Out, "u1.0"),  F("ref_u", Ref, "f64"),    F("ref_v", Ref, "f64")};
+  b.ports = {{"tu", "u"}, {"tv", "v"}, {"steps_out", "steps"}};  // tu_pom_refine's u_i / u_o, ...
   b.sets = {"golden", "stiff", "random"};
   b.inputs = standard_sets(
       [] {
@@ -241,6 +243,7 @@ Block make_unit() {
               F("tv", Out, "s32.16"),     F("steps", Out, "u6.0"),  F("w", Out, "u17.16"),
               F("discard", Out, "u1.0"),  F("back", Out, "u1.0"),   F("clamped", Out, "u1.0"),
               F("ref_u", Ref, "f64"),     F("ref_v", Ref, "f64")};
+  b.ports = {{"tu", "u"}, {"tv", "v"}};  // tu_pom_unit's u_o / v_o
   b.sets = {"golden", "stiff", "random"};
   b.inputs = standard_sets(
       [] { return golden_pixels(unit_row); },
