@@ -11,10 +11,16 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 tu=${TU_TEXUNIT:-build/default/tools/texunit/texunit}
 if [ "${1:-}" = --table ]; then
-  exec python3 - docs/report/stdcell_cache.json <<'PY'
-import json, sys
+  exec python3 - docs/report/stdcell_cache.json "$tu" <<'PY'
+import json, os, subprocess, sys
 d = json.load(open(sys.argv[1]))
 import math
+def current(t):
+    """The entry's hash against the top's key now (texunit rtl-files --key stdcell); None: cannot tell."""
+    if not os.access(sys.argv[2], os.X_OK) or d[t].get("hash", "").startswith("n/a"):
+        return None
+    r = subprocess.run([sys.argv[2], "rtl-files", t, "--key", "stdcell"], capture_output=True, text=True)
+    return r.returncode == 0 and r.stdout.strip() == d[t].get("hash")
 # Register overhead of a stage: DFFPOSX1 clock-to-Q (0.749 ns) + set-up (0.187 ns), as OpenSTA
 # reports them on tu_reciprocal's critical path; logic left per stage at 150 MHz: 6.667 - 0.936 ns.
 ovh, budget = 0.936, 1000 / 150 - 0.936
@@ -25,6 +31,9 @@ for t in sorted(d, key=lambda t: d[t]["area_um2"]):
     mem = ", ".join("%s %d" % (m["kind"], m["bits"]) for m in e["memories"]) or "-"
     ok = "yes" if e["fmax_mhz"] >= 150 else "no (%.0f%% slower)" % (100 * (e["period_ns"] / (1000 / 150) - 1))
     stages = max(1, math.ceil((e["period_ns"] - ovh) / budget))
+    cur = current(t)
+    if cur is False:  # the RTL or the flow changed since this run: an old figure, marked
+        ok = "stale: RTL or flow changed since this run"
     print("| %s | %.0f | %d | %d | %s | %.2f | %s -> %s | %.1f | %s | %d | %s |" % (t, e["area_um2"], e["cells"], e["flip_flops"], mem,
           e["period_ns"], e["path_from"], e["path_to"], e["fmax_mhz"], ok, stages, e.get("flow_seconds", "-")))
 PY

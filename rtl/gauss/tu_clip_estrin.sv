@@ -1,7 +1,8 @@
 // Clip volume, degree-3 polynomial (mm_p3 coefficients), parallel / Estrin form (II = 1):
-//   stage 1: a2 = floor(a * a), u = floor(c3 * a), w = floor(c1 * a)   (three multipliers)
-//   stage 2: t = floor((c2 + u) * a2), s = c0 + w                      (one multiplier)
-//   stage 3: v = fold(round(s + t))
+//   stage 1: a2 = floor(a * a), u = c2 + floor(c3 * a), w = c0 + floor(c1 * a)  (three multipliers)
+//   stage 2: t = w + floor(u * a2)                                        (one multiplier)
+//   stage 3: v = fold(round(t))
+// (each coefficient and w join a product's carry-save tree: one carry chain per stage)
 // Four multipliers, latency ClipEstrinLatency = 3 (one less than Horner).
 `include "tu_assert.svh"
 module tu_clip_estrin (
@@ -30,27 +31,30 @@ module tu_clip_estrin (
 
   logic [AW-1:0] a;
   logic neg, neg_q1, neg_q2;
+  localparam int A2W = 2 * AW - (2 * tu_formats_pkg::ClipInF - F);  // floor(a * a) to F bits
+  localparam int HW  = 2 * AccW;
   logic [2*AW-1:0] a2_full;
-  logic signed [AccW-1:0] a2, u, w, a2_q1, u_q1, w_q1, hi, t, s, t_q2, s_q2, acc;
-  logic signed [2*AccW-1:0] hp;
+  logic [A2W-1:0] a2, a2_q1;
+  logic signed [AccW-1:0] u, w, u_q1, w_q1, t, t_q2;
+  logic signed [HW-1:0] hp;
   logic [tu_formats_pkg::ClipOutW-1:0] v_d, v_q3;
   tu_clip_abs u_abs (.d_i, .a_o(a), .neg_o(neg));
   // a * a has 2 * ClipInF fraction bits; floor to ClipCoefF (a^2 <= 1/4, no wrap).
   assign a2_full = a * a;
-  assign a2 = AccW'(a2_full >> (2 * tu_formats_pkg::ClipInF - F));
-  tu_clip_mulfloor u_mu (.x_i(AccW'(c3)), .a_i(a), .y_o(u));
-  tu_clip_mulfloor u_mw (.x_i(AccW'(c1)), .a_i(a), .y_o(w));
-  assign hi  = AccW'(c2) + u_q1;
-  assign hp  = (2*AccW)'(hi) * (2*AccW)'(a2_q1);
-  assign t   = AccW'(hp >>> F);
-  assign s   = AccW'(c0) + w_q1;
-  assign acc = s_q2 + t_q2;
-  tu_clip_fold u_fold (.acc_i(acc), .neg_i(neg_q2), .v_o(v_d));
+  assign a2 = A2W'(a2_full >> (2 * tu_formats_pkg::ClipInF - F));
+  // u = c2 + floor(c3 a), w = c0 + floor(c1 a): the coefficients inside the multiply-adds
+  tu_clip_mulfloor u_mu (.x_i(AccW'(c3)), .a_i(a), .c_i(AccW'(c2)), .y_o(u));
+  tu_clip_mulfloor u_mw (.x_i(AccW'(c1)), .a_i(a), .c_i(AccW'(c0)), .y_o(w));
+  // t = w + floor(u a2) = floor((u a2 + w 2^F) / 2^F): one multiply-add, wrapped to ClipAccW
+  // (the same sum as s + t of the straight form: c0 + w and (c2 + u) a2 added in two stages)
+  assign hp = HW'(u_q1) * HW'($signed({1'b0, a2_q1})) + (HW'(w_q1) <<< F);
+  assign t  = AccW'(hp >>> F);
+  tu_clip_fold u_fold (.acc_i(t_q2), .neg_i(neg_q2), .v_o(v_d));
 
   always_ff @(posedge clk_i) begin
     if (en) begin
       a2_q1 <= a2;  u_q1 <= u;  w_q1 <= w;  neg_q1 <= neg;
-      t_q2  <= t;   s_q2 <= s;              neg_q2 <= neg_q1;
+      t_q2  <= t;                           neg_q2 <= neg_q1;
       v_q3  <= v_d;
     end
   end

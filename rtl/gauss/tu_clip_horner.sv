@@ -1,6 +1,7 @@
 // Clip volume, degree-3 polynomial (variant mm_p3), Horner form, fully pipelined (II = 1):
-//   stage 1: t = floor(c3 * a)          stage 2: t = floor((c2 + t) * a)
-//   stage 3: t = floor((c1 + t) * a)    stage 4: v = fold(round(c0 + t))
+//   stage 1: t = c2 + floor(c3 * a)     stage 2: t = c1 + floor(t * a)
+//   stage 3: t = c0 + floor(t * a)      stage 4: v = fold(round(t))
+// (each stage one multiply-add: the coefficient joins the product's carry-save tree)
 // Three multipliers, latency ClipHornerLatency = 4.
 `include "tu_assert.svh"
 module tu_clip_horner (
@@ -30,10 +31,12 @@ module tu_clip_horner (
   logic signed [AccW-1:0] t1, t2, t3, t_q1, t_q2, t_q3, acc;
   logic [tu_formats_pkg::ClipOutW-1:0] v_d, v_q4;
   tu_clip_abs u_abs (.d_i, .a_o(a), .neg_o(neg));
-  tu_clip_mulfloor u_m1 (.x_i(AccW'(c3)), .a_i(a), .y_o(t1));
-  tu_clip_mulfloor u_m2 (.x_i(AccW'(c2) + t_q1), .a_i(a_q1), .y_o(t2));
-  tu_clip_mulfloor u_m3 (.x_i(AccW'(c1) + t_q2), .a_i(a_q2), .y_o(t3));
-  assign acc = AccW'(c0) + t_q3;
+  // Each stage adds the next coefficient inside its multiply-add (tu_clip_mulfloor's c_i): the
+  // registers hold c2 + t1, c1 + t2, c0 + t3 (the same sums modulo 2^ClipAccW).
+  tu_clip_mulfloor u_m1 (.x_i(AccW'(c3)), .a_i(a), .c_i(AccW'(c2)), .y_o(t1));
+  tu_clip_mulfloor u_m2 (.x_i(t_q1), .a_i(a_q1), .c_i(AccW'(c1)), .y_o(t2));
+  tu_clip_mulfloor u_m3 (.x_i(t_q2), .a_i(a_q2), .c_i(AccW'(c0)), .y_o(t3));
+  assign acc = t_q3;
   tu_clip_fold u_fold (.acc_i(acc), .neg_i(neg_q3), .v_o(v_d));
 
   always_ff @(posedge clk_i) begin

@@ -27,7 +27,7 @@ module tu_clip_p1 (
   logic [tu_formats_pkg::ClipOutW-1:0] v_d, v_q2;
   tu_clip_abs u_abs (.d_i, .a_o(a), .neg_o(neg));
   tu_clip_seg_mm1 u_seg (.a_i(a), .c0_o(c0), .c1_o(c1));
-  tu_clip_mulfloor u_mul (.x_i(AccW'(c1)), .a_i(a), .y_o(m));
+  tu_clip_mulfloor u_mul (.x_i(AccW'(c1)), .a_i(a), .c_i(AccW'(0)), .y_o(m));
   assign acc = c0_q1 + m_q1;
   tu_clip_fold u_fold (.acc_i(acc), .neg_i(neg_q1), .v_o(v_d));
 

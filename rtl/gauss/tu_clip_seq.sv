@@ -24,7 +24,7 @@ module tu_clip_seq (
   logic signed [tu_formats_pkg::ClipCoefW-1:0] c0, c1, c2, c3;
   tu_clip_coef_mm3 u_coef (.c0_o(c0), .c1_o(c1), .c2_o(c2), .c3_o(c3));
   tu_clip_abs u_abs (.d_i, .a_o(a), .neg_o(neg));
-  tu_clip_mulfloor u_mul (.x_i(acc_q), .a_i(a_q), .y_o(prod));  // the one multiplier
+  tu_clip_mulfloor u_mul (.x_i(acc_q), .a_i(a_q), .c_i(AccW'(0)), .y_o(prod));  // the one multiplier
   always_comb begin
     unique case (k_q)
       2'd2:    ck = AccW'(c2);

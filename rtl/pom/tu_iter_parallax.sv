@@ -83,12 +83,16 @@ module tu_iter_parallax #(
     conv = ad < $signed(UvW'(tu_formats_pkg::IpxEps));
     capped = (i_q == cap_q);
     upd = (state_q == Run) && !conv && !capped;
-    pu = 64'(d) * 64'(su_q) + 64'sd32768;
-    pv = 64'(d) * 64'(sv_q) + 64'sd32768;
-    ph = 64'(d) * 64'(sh_q) + 64'sd32768;
-    nu = tu_q - UvW'(pu >>> 16);
-    nv = tv_q - UvW'(pv >>> 16);
-    nd = d_acc_q + UvW'(ph >>> 16);
+    // T - floor((d s + 2^15) / 2^16) = floor((T 2^16 - d s + 2^15 - 1) / 2^16) and
+    // D + floor((d sh + 2^15) / 2^16) = floor((D 2^16 + d sh + 2^15) / 2^16): each update one
+    // multiply-add (T or D inside the product's carry-save tree), no adder behind the multiplier
+    // on the loop d -> T -> depth address -> h -> d (wrapped to UvW bits as before).
+    pu = (64'(tu_q) <<< 16) - 64'(d) * 64'(su_q) + 64'sd32767;
+    pv = (64'(tv_q) <<< 16) - 64'(d) * 64'(sv_q) + 64'sd32767;
+    ph = (64'(d_acc_q) <<< 16) + 64'(d) * 64'(sh_q) + 64'sd32768;
+    nu = UvW'(pu >>> 16);
+    nv = UvW'(pv >>> 16);
+    nd = UvW'(ph >>> 16);
     if (state_q == Idle) begin
       ax = u_i[TexLsb +: 5];
       ay = v_i[TexLsb +: 5];

@@ -120,11 +120,16 @@ module tu_pom_refine #(
   logic signed [UvW-1:0] tu, tv;
   logic                  out_of_range;
   localparam logic signed [UvW-1:0] One = UvW'(1 << UvF);
+  // T_k + round_half_up(w dT / 2^WF) = floor((w dT + T_k 2^WF + 2^(WF-1)) / 2^WF): one
+  // multiply-add (T_k and the rounding term in the product's carry-save tree), wrapped to UvW
+  // bits as the straight form T_k + (the rounded product) is.
   always_comb begin
-    su = ($signed({1'b0, w_q}) * ShW'($signed(du_q[Lat-2])) + (ShW'(1) <<< (WF - 1))) >>> WF;
-    sv = ($signed({1'b0, w_q}) * ShW'($signed(dv_q[Lat-2])) + (ShW'(1) <<< (WF - 1))) >>> WF;
-    tu = $signed(u_q[Lat-2]) + UvW'(su);
-    tv = $signed(v_q[Lat-2]) + UvW'(sv);
+    su = ($signed({1'b0, w_q}) * ShW'($signed(du_q[Lat-2])) + (ShW'($signed(u_q[Lat-2])) <<< WF)
+          + (ShW'(1) <<< (WF - 1))) >>> WF;
+    sv = ($signed({1'b0, w_q}) * ShW'($signed(dv_q[Lat-2])) + (ShW'($signed(v_q[Lat-2])) <<< WF)
+          + (ShW'(1) <<< (WF - 1))) >>> WF;
+    tu = UvW'(su);
+    tv = UvW'(sv);
     out_of_range = tu < 0 || tv < 0 || tu > One || tv > One;
   end
 
@@ -148,7 +153,7 @@ module tu_pom_refine #(
   assign discard_o = discard_q;
   assign side_o    = side_q[Lat-1];
 
-  // |w*dT| <= |dT| < 2^(UvW-1): the top bits of the product are sign copies.
+  // T'' wraps to UvW bits (as T_k + the rounded product does): the sum's top bits are unused.
   logic unused_bits;
   assign unused_bits = ^{stage_valid, su[ShW-1:UvW], sv[ShW-1:UvW]};
 
