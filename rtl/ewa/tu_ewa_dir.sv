@@ -73,10 +73,10 @@ module tu_ewa_dir #(
   end
   function automatic logic signed [CsW-1:0] cs_round(input logic signed [XW-1:0] v);
     /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [XW-1:0] t;  // high bits: sign copies
+    logic signed [XW-1:0] tr;  // high bits: sign copies
     /* verilator lint_on UNUSEDSIGNAL */
-    t = (v + $signed(XW'(1) << (RotF - CsF - 1))) >>> (RotF - CsF);
-    cs_round = CsW'(t);
+    tr = (v + $signed(XW'(1) << (RotF - CsF - 1))) >>> (RotF - CsF);
+    cs_round = CsW'(tr);
   endfunction
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
