@@ -72,14 +72,14 @@ TEST(AfvisCosim, CyclesMatchPrediction) {
 }  // namespace
 
 // Inside the texture-unit top (the full unit, HasAfvis = 1): docs/scenes/af_visibility.json at
-// 40 x 30 with relief, every pixel == render_cmodel (colour, level, texel counts, flags, relief
+// 32 x 24 with relief, every pixel == render_cmodel (colour, level, texel counts, flags, relief
 // results) with 30 % stalls; without stalls the cycles are the unit's cycle model
 // (ewa::texture_unit_cycles with PixelCost::afv_walk). Visibility is really on: most pixels go
 // through tu_afvis and the C model's picture without visibility differs from the unit's.
 TEST(TextureUnitRtl, AfVisibilitySceneEqualsCModelWithCyclesPredicted) {
   auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/af_visibility.json");
-  s.camera.width = 40;
-  s.camera.height = 30;
+  s.camera.width = 32;
+  s.camera.height = 24;
   render::CmodelOptions co;
   const render::Frame c = render::render_cmodel(s, std::nullopt, co);
   co.afvis = render::AfvisMode::Off;
@@ -100,7 +100,7 @@ TEST(TextureUnitRtl, AfVisibilitySceneEqualsCModelWithCyclesPredicted) {
   const auto r0 = cosim::render_rtl(s, o);
   EXPECT_TRUE(r0.ok()) << r0.first_mismatch;
   EXPECT_EQ(r0.cycles, r0.predicted_cycles);
-  std::printf("af_visibility 40x30: %zu px, %zu through tu_afvis, %zu differ from plain EWA (C model); cycles measured "
+  std::printf("af_visibility 32x24: %zu px, %zu through tu_afvis, %zu differ from plain EWA (C model); cycles measured "
               "%llu predicted %llu (%.1f per px)\n",
               r0.frame.pixels.size(), afv, differ, (unsigned long long)r0.cycles, (unsigned long long)r0.predicted_cycles,
               double(r0.cycles) / double(r0.frame.pixels.size()));

@@ -120,7 +120,7 @@ case $case in
     # The package lints (-Wall) as the RTL top would read it.
     cat >"$tmp/tu_cfg_user.sv" <<'SV'
 module tu_cfg_user (
-  output logic [13:0] has_o,
+  output logic [14:0] has_o,
   output logic [2:0]  wsrc_o,
   output logic [31:0] sizes_o,
   output logic [4:0]  wrap_o
@@ -129,7 +129,7 @@ module tu_cfg_user (
   assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasTriFilter, tu_unit_cfg_pkg::HasNearest, tu_unit_cfg_pkg::HasRelief,
                   tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax, tu_unit_cfg_pkg::HasShading, tu_unit_cfg_pkg::EllRecurrence,
                   tu_unit_cfg_pkg::HasEwaClip, tu_unit_cfg_pkg::HasNoise, tu_unit_cfg_pkg::HasDistanceMap,
-                  tu_unit_cfg_pkg::HasWater};
+                  tu_unit_cfg_pkg::HasWater, tu_unit_cfg_pkg::HasAfvis};
   assign wsrc_o = tu_unit_cfg_pkg::WeightSources;
   assign sizes_o = tu_unit_cfg_pkg::PomMaxLayers + tu_unit_cfg_pkg::WtabLog2N + tu_unit_cfg_pkg::Wtab2dLog2N +
                    tu_unit_cfg_pkg::PerspLanes + tu_unit_cfg_pkg::ShadeModel + tu_unit_cfg_pkg::EwaClipVariant +
