@@ -424,6 +424,10 @@ module tu_texture_unit #(
   // stay in order and only one engine drives the texel port. Switches happen at material changes
   // only (ewa::stream_cycles counts the drain).
   localparam int OsW = 2 * XW + 2 + 5 + RrW;
+  // Pixels in flight in an engine: 2 (a set-up and a walk), the K = 4 EWA engine up to its two
+  // set-up units + OutDepth (8) between hand-over and output: 16 (the FIFO never throttles it)
+  localparam int OsDepth = EwaLanes > 1 ? 16 : 2;
+  localparam int IfW = $clog2(OsDepth + 1);
   // the filtered pixel before the shading stage
   logic          p_valid, p_ready;
   logic [XW-1:0] p_x, p_y;
@@ -439,7 +443,7 @@ module tu_texture_unit #(
                                     (HasBilinear != 0) ? EngBil : EngNst;
   logic          os_in_ready, os_valid, flt_valid, eng_ready, can_go, fire_flt, fire_out;
   logic [1:0]    sel, cur_q;
-  logic [1:0]    inflight_q;  // <= 2: the sideband FIFO's depth bounds the pixels in flight
+  logic [IfW-1:0] inflight_q;  // <= OsDepth: the sideband FIFO's depth bounds the pixels in flight
   logic [OsW-1:0] os_data;
   logic          ewa_in_ready, ewa_valid, bil_in_ready, bil_valid, tri_in_ready, tri_valid;
   logic          nst_in_ready, nst_valid;
@@ -477,7 +481,7 @@ module tu_texture_unit #(
   assign eng_ready = in_ready_of[sel];
   assign fq_ready  = f_noise ? inflight_q == '0 && nz_in_ready : can_go && eng_ready && os_in_ready;
   assign fire_flt  = fq_valid && fq_ready && !f_noise;
-  tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
+  tu_fifo #(.Width(OsW), .Depth(OsDepth)) u_osb (
     .clk_i, .rst_ni, .in_valid_i(fq_valid && !f_noise && can_go && eng_ready), .in_ready_o(os_in_ready),
     .in_data_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rr}), .out_valid_o(os_valid),
     .out_ready_i(p_ready && flt_valid), .out_data_o(os_data)
@@ -501,7 +505,7 @@ module tu_texture_unit #(
       inflight_q <= '0;
     end else begin
       if (fire_flt) cur_q <= sel;
-      inflight_q <= inflight_q + {1'b0, fire_flt} - {1'b0, fire_out};
+      inflight_q <= inflight_q + IfW'(fire_flt) - IfW'(fire_out);
     end
   end
 
