@@ -464,6 +464,11 @@ module tu_texture_unit #(
   // stay in order and only one engine drives the texel port. Switches happen at material changes
   // only (ewa::stream_cycles counts the drain).
   localparam int OsW = 2 * XW + 2 + 5 + RrW;
+  // Pixels in flight in an engine: 2 (a set-up and a walk), Feline 3 (set-up, prober, normaliser),
+  // the K = 4 EWA engine up to its two set-up units + OutDepth (8) between hand-over and output: 16
+  // (the FIFO never throttles it)
+  localparam int OsDepth = EwaLanes > 1 ? 16 : HasFeline != 0 ? 4 : 2;
+  localparam int IfW = $clog2(OsDepth + 1);
   // the filtered pixel before the shading stage
   logic          p_valid, p_ready;
   logic [XW-1:0] p_x, p_y;
@@ -479,11 +484,9 @@ module tu_texture_unit #(
                             EngFel = tu_formats_pkg::EngFeline;
   localparam logic [EW-1:0] EngFirst = (HasEwa != 0) ? EngEwa : (HasTriFilter != 0) ? EngTri :
                                        (HasBilinear != 0) ? EngBil : (HasNearest != 0) ? EngNst : EngFel;
-  // Pixels in flight: <= 2 in every engine but Feline (set-up, prober, normaliser: 3).
-  localparam int OsDepth = HasFeline != 0 ? 4 : 2;
   logic          os_in_ready, os_valid, flt_valid, eng_ready, can_go, fire_flt, fire_out;
   logic [EW-1:0] sel, cur_q;
-  logic [2:0]    inflight_q;  // <= OsDepth: the sideband FIFO's depth bounds the pixels in flight
+  logic [IfW-1:0] inflight_q;  // <= OsDepth: the sideband FIFO's depth bounds the pixels in flight
   logic [OsW-1:0] os_data;
   logic          ewa_in_ready, ewa_valid, bil_in_ready, bil_valid, tri_in_ready, tri_valid;
   logic          nst_in_ready, nst_valid, fel_in_ready, fel_valid;
@@ -547,7 +550,7 @@ module tu_texture_unit #(
       inflight_q <= '0;
     end else begin
       if (fire_flt) cur_q <= sel;
-      inflight_q <= inflight_q + 3'(fire_flt) - 3'(fire_out);
+      inflight_q <= inflight_q + IfW'(fire_flt) - IfW'(fire_out);
     end
   end
 
