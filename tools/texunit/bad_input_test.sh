@@ -156,11 +156,10 @@ PY
     expect 2 "clip.json: /materials/panel/clip" "$tu" render "$tmp/clip.json" --out "$tmp/o"
     expect 2 "/materials/panel/clip: mm_p3, but the unit's EWA walk has the clip volume mm_p1" "$tu" render docs/scenes/ui_quad.json --engine rtl --clip mm_p3 --out "$tmp/o"
     [ ! -e "$tmp/o" ] || fail "left output"
-    # af_visibility is a boolean; the RTL unit has no visibility unit yet (docs/blocks/afvis.md).
+    # af_visibility is a boolean.
     sed 's/"af_visibility": true/"af_visibility": "yes"/' docs/scenes/af_visibility.json >"$tmp/afv.json"
     grep -q '"af_visibility": "yes"' "$tmp/afv.json" || fail "edit"
     expect 2 "afv.json: /materials/.*/relief/af_visibility: expected true or false" "$tu" render "$tmp/afv.json" --out "$tmp/o"
-    expect 2 "/relief/af_visibility: the RTL unit has no visibility unit yet" "$tu" render docs/scenes/af_visibility.json --engine rtl --out "$tmp/o"
     [ ! -e "$tmp/o" ] || fail "left output"
     ;;
   degenerate_triangle)

@@ -42,7 +42,7 @@ case $case in
     grep -q "other_e;" "$pkg" || fail "test edit of the package"
     [ "$(key tu_reciprocal yosys)" = "$k_rec" ] || fail "an unused constant or enum changed tu_reciprocal's key"
     [ "$(key tu_texture_unit stdcell)" = "$k_top" ] || fail "an unused constant or enum changed tu_texture_unit's key"
-    sed -i 's/EngNearest = 2.d3/EngNearest = 2'"'"'d2/' "$pkg"
+    sed -i 's/EngNearest = \([0-9]*\).d3/EngNearest = \1'"'"'d2/' "$pkg"
     [ "$(key tu_texture_unit stdcell)" != "$k_top" ] || fail "a changed engine code kept tu_texture_unit's key"
     [ "$(key tu_reciprocal yosys)" = "$k_rec" ] || fail "the engine enum changed tu_reciprocal's key"
     sed -i 's/localparam int RecipIdxW = [0-9]*;/localparam int RecipIdxW = 9;/' "$pkg"
@@ -120,13 +120,13 @@ case $case in
     # The package lints (-Wall) as the RTL top would read it.
     cat >"$tmp/tu_cfg_user.sv" <<'SV'
 module tu_cfg_user (
-  output logic [14:0] has_o,
+  output logic [15:0] has_o,
   output logic [2:0]  wsrc_o,
   output logic [31:0] sizes_o,
   output logic [4:0]  wrap_o
 );
   assign wrap_o = tu_unit_cfg_pkg::WrapModes;
-  assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasTriFilter, tu_unit_cfg_pkg::HasNearest, tu_unit_cfg_pkg::HasRelief,
+  assign has_o = {tu_unit_cfg_pkg::HasTrilinear, tu_unit_cfg_pkg::HasEwa, tu_unit_cfg_pkg::HasBilinear, tu_unit_cfg_pkg::HasTriFilter, tu_unit_cfg_pkg::HasNearest, tu_unit_cfg_pkg::HasFeline, tu_unit_cfg_pkg::HasRelief,
                   tu_unit_cfg_pkg::HasPom, tu_unit_cfg_pkg::HasIterParallax, tu_unit_cfg_pkg::HasShading, tu_unit_cfg_pkg::EllRecurrence,
                   tu_unit_cfg_pkg::HasEwaClip, tu_unit_cfg_pkg::HasNoise, tu_unit_cfg_pkg::HasDistanceMap,
                   tu_unit_cfg_pkg::HasWater, tu_unit_cfg_pkg::HasAfvis};
