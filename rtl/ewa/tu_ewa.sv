@@ -18,7 +18,7 @@ module tu_ewa #(
   parameter int HasClip     = 0,
   parameter int ClipVariant = 0,
   parameter int Lanes       = 1,  // texels per clock: 1 or 4 (2 x 2)
-  parameter int Setups      = 1,  // set-up units: 1 or 2
+  parameter int Setups      = 1,  // set-up units: 1, or 2 .. 4 with Lanes = 4
   parameter int OutDepth    = 8   // Lanes = 4: pixels between hand-over and output
 ) (
   input  logic                                  clk_i,
@@ -59,13 +59,14 @@ module tu_ewa #(
   localparam int NW  = tu_formats_pkg::EwaCountW;
   localparam int WrW = 2 * tu_formats_pkg::WrapW;
   `TU_ASSERT_PARAM(g_lanes, Lanes == 1 || Lanes == 4, "Lanes must be 1 or 4")
-  `TU_ASSERT_PARAM(g_setups, Setups == 1 || (Setups == 2 && Lanes == 4),
-                   "Setups must be 1, or 2 with Lanes = 4 (the cycle model's configurations)")
+  `TU_ASSERT_PARAM(g_setups, Setups == 1 || (Setups >= 2 && Setups <= 4 && Lanes == 4),
+                   "Setups must be 1, or 2 .. 4 with Lanes = 4 (the cycle model's configurations)")
+  localparam int SW = Setups > 1 ? $clog2(Setups) : 1;  // set-up unit index
   logic clip_on;
   assign clip_on = HasClip != 0 && clip_i;
 
   // ---- set-up units, fed in turn (wr_q) and read in turn (rd_q): records stay in order
-  logic wr_q, rd_q;
+  logic [SW-1:0] wr_q, rd_q;
   logic [Setups-1:0] s_in_ready, s_rec_valid;
   logic              rec_valid, rec_ready;
   // per unit: its record and the pixel's texture / weight configuration (held with its pixel)
@@ -84,7 +85,7 @@ module tu_ewa #(
   logic                 u_clip [Setups];
   for (genvar j = 0; j < Setups; j++) begin : g_setup
     logic sel_in, acc;
-    assign sel_in = Setups == 1 || wr_q == 1'(j);
+    assign sel_in = Setups == 1 || wr_q == SW'(j);
     assign acc = in_valid_i && sel_in && s_in_ready[j];
     always_ff @(posedge clk_i) begin
       if (acc) begin
@@ -99,24 +100,24 @@ module tu_ewa #(
     tu_ewa_setup #(.CordUnroll(CordUnroll), .SqrtStep(SqrtStep), .Align(Lanes == 4 ? 1 : 0)) u_setup (
       .clk_i, .rst_ni, .in_valid_i(in_valid_i && sel_in), .in_ready_o(s_in_ready[j]), .u_i, .v_i, .ae_i,
       .ce_i, .be_i, .lmaj_i, .lmin_i, .lod_i, .eflags_i, .guard_i, .top_i(lw_i > lh_i ? lw_i : lh_i), .cap_i,
-      .clip_i(clip_on), .rec_valid_o(s_rec_valid[j]), .rec_ready_i(rec_ready && (Setups == 1 || rd_q == 1'(j))),
+      .clip_i(clip_on), .rec_valid_o(s_rec_valid[j]), .rec_ready_i(rec_ready && (Setups == 1 || rd_q == SW'(j))),
       .level_o(u_level[j]), .flags_o(u_flags[j]), .guard_o(u_guard[j]), .x0_o(u_x0[j]), .x1_o(u_x1[j]),
       .y0_o(u_y0[j]), .y1_o(u_y1[j]), .box_o(u_box[j]), .cu_o(u_cu[j]), .cv_o(u_cv[j]), .xi0_o(u_xi0[j]),
       .eta0_o(u_eta0[j]), .dxi_o(u_dxi[j]), .deta_o(u_deta[j]), .dxiy_o(u_dxiy[j]), .detay_o(u_detay[j]),
       .q0_o(u_q0[j]), .dq0_o(u_dq0[j]), .ddq_o(u_ddq[j]), .ey0_o(u_ey0[j]), .ddqy_o(u_ddqy[j]), .dqy_o(u_dqy[j])
     );
   end
-  logic rs;  // the unit whose record is next
-  assign rs         = Setups == 1 ? 1'b0 : rd_q;
-  assign in_ready_o = s_in_ready[Setups == 1 ? 1'b0 : wr_q];
+  logic [SW-1:0] rs;  // the unit whose record is next
+  assign rs         = Setups == 1 ? '0 : rd_q;
+  assign in_ready_o = s_in_ready[Setups == 1 ? '0 : wr_q];
   assign rec_valid  = s_rec_valid[rs];
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      wr_q <= 1'b0;
-      rd_q <= 1'b0;
+      wr_q <= '0;
+      rd_q <= '0;
     end else begin
-      if (Setups > 1 && in_valid_i && in_ready_o) wr_q <= !wr_q;
-      if (Setups > 1 && rec_valid && rec_ready) rd_q <= !rd_q;
+      if (Setups > 1 && in_valid_i && in_ready_o) wr_q <= wr_q == SW'(Setups - 1) ? '0 : wr_q + 1'b1;
+      if (Setups > 1 && rec_valid && rec_ready) rd_q <= rd_q == SW'(Setups - 1) ? '0 : rd_q + 1'b1;
     end
   end
 

@@ -62,7 +62,7 @@ module tu_texture_unit #(
   // a shifted pixel of a material with afv takes it; its depth reads use the a_* port
   parameter int HasAfvis   = {31'b0, tu_unit_cfg_pkg::HasAfvis},
   // EWA texels per clock (tu_ewa Lanes: 1, or 4 = a 2 x 2 block over four bank ports, the texel
-  // port and texk_* for banks 1..3) and its set-up units (EwaSetups: 1, or 2 with 4 lanes)
+  // port and texk_* for banks 1..3) and its set-up units (EwaSetups: 1, or 2 .. 4 with 4 lanes)
   parameter int EwaLanes  = 1,
   parameter int EwaSetups = 1,
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
@@ -465,7 +465,7 @@ module tu_texture_unit #(
   // only (ewa::stream_cycles counts the drain).
   localparam int OsW = 2 * XW + 2 + 5 + RrW;
   // Pixels in flight in an engine: 2 (a set-up and a walk), Feline 3 (set-up, prober, normaliser),
-  // the K = 4 EWA engine up to its two set-up units + OutDepth (8) between hand-over and output: 16
+  // the K = 4 EWA engine up to its set-up units (<= 4) + OutDepth (8) between hand-over and output: 16
   // (the FIFO never throttles it)
   localparam int OsDepth = EwaLanes > 1 ? 16 : HasFeline != 0 ? 4 : 2;
   localparam int IfW = $clog2(OsDepth + 1);

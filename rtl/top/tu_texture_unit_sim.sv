@@ -22,7 +22,7 @@ module tu_texture_unit_sim #(
   parameter int HasWater      = {31'b0, tu_unit_cfg_pkg::HasWater},
   parameter int NoiseScheme   = tu_unit_cfg_pkg::NoiseScheme,
   parameter int HasAfvis      = {31'b0, tu_unit_cfg_pkg::HasAfvis},
-  parameter int EwaLanes      = 1,  // tu_texture_unit EwaLanes / EwaSetups (4 / 2: the texel RAM has 4 ports)
+  parameter int EwaLanes      = 1,  // tu_texture_unit EwaLanes / EwaSetups (4 / 2 .. 4: the texel RAM has 4 ports)
   parameter int EwaSetups     = 1,
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words,
   // the depth RAM also holds the distance maps (the default scene's wall: 1,114,112 words)

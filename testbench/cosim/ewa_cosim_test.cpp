@@ -504,6 +504,24 @@ TEST(TextureUnitRtl, CorridorPlannedUnitEqualsCModelWithCyclesPredicted) {
   EXPECT_THROW(cosim::render_rtl(s, o), std::invalid_argument);
 }
 
+// Issue 23's goal: the default scene's EWA (texture path, the corridor unit's 1-D weight table) on
+// the K = 4 engine (tu_ewa_walk_lanes, three set-up units) in <= 20 clocks per pixel, every pixel
+// equal to the C model's sequential walk, stall-free cycles = ewa::texture_unit_cycles. The same
+// frame on the one-texel walk costs 64.3 clocks per pixel (docs/blocks/ewa.md).
+TEST(TextureUnitRtl, DefaultSceneOnTheFourLaneEngineWithinTwentyClocksPerPixel) {
+  cosim::RtlRenderOptions o;
+  o.corridor_unit = true;
+  o.filter = scene::Filter::Ewa;
+  o.weights = scene::WeightSource::Table1d;
+  const auto r = cosim::render_rtl(scene::default_scene(), o);
+  ASSERT_TRUE(r.ok()) << r.first_mismatch;
+  EXPECT_EQ(r.cycles, r.predicted_cycles);
+  const double per_px = double(r.cycles) / double(r.frame.pixels.size());
+  std::printf("default scene, K = 4 EWA (3 set-up units): %zu px, %llu cycles = predicted %llu, %.2f clocks/px\n",
+              r.frame.pixels.size(), (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles, per_px);
+  EXPECT_LE(per_px, 20.0);
+}
+
 // docs/scenes/ui_quad.json (no relief, no minification): `texunit plan` writes a bilinear-only
 // unit without relief hardware (HasEwa = 0, HasRelief = 0; TexunitCli.plan_ui_quad, and the Yosys
 // cells drop: TexunitCli.plan_area_ui_quad). That unit renders the scene bit-exactly as the full

@@ -34,7 +34,7 @@ struct RtlRenderOptions {
   // The unit `texunit plan docs/scenes/corridor.json` writes (testbench/cosim/rtl/corridor/tu_unit_cfg_pkg.sv:
   // the EWA engine with the 1-D weight table and iterative parallax; no bilinear, trilinear, nearest
   // or POM march) instead of the full unit. Its model is verilated with the multi-texel EWA engine
-  // (EwaLanes = 4, EwaSetups = 2: kCorridorEwa; issue 23), so the corridor unit is the K = 4 unit.
+  // (EwaLanes = 4, EwaSetups = 3: kCorridorEwa; issue 23), so the corridor unit is the K = 4 unit.
   bool corridor_unit = false;
   std::optional<scene::Filter> filter;         // overrides every material's filter (ewa or bilinear)
   bool relief = false;                         // apply each material's relief (POM or iterative; full unit)
@@ -48,15 +48,9 @@ struct RtlRenderOptions {
   std::string clip_variant = "mm_p1";
 };
 
-// The corridor unit model's EWA structure (testbench/cosim/CMakeLists.txt -GEwaLanes=4 -GEwaSetups=2;
+// The corridor unit model's EWA structure (testbench/cosim/CMakeLists.txt -GEwaLanes=4 -GEwaSetups=3;
 // no border weights): the cycle model's parameters.
-inline ewa::EngineParams corridor_ewa_params() {
-  ewa::EngineParams p;
-  p.lanes = 4;
-  p.setup_units = 2;
-  p.lane_clip = false;
-  return p;
-}
+inline ewa::EngineParams corridor_ewa_params() { return ewa::four_lane_engine(); }
 
 struct RtlRender {
   render::Frame frame;               // RTL pixels

@@ -69,7 +69,9 @@ TEST(ObjspaceAccum, LanesGainOnlyOnDisjointBanks) {
   const std::vector<AccumSample> guarded(1000, AccumSample::of(0, 0, true));
   EXPECT_EQ(sysmodel::estimate_accumulation(scheme(4, 2, 2), guarded, 1).issue_clocks, 250u);
   EXPECT_EQ(sysmodel::estimate_accumulation(scheme(4, 2, 2), {}, 10).total_cycles, 13u);
-  if (kRunSystemC) EXPECT_EQ(sysmodel::simulate_accumulation(scheme(4, 2, 2), {}, 10).total_cycles, 13u);
+  if (kRunSystemC) {
+    EXPECT_EQ(sysmodel::simulate_accumulation(scheme(4, 2, 2), {}, 10).total_cycles, 13u);
+  }
 }
 
 TEST(ObjspaceAccum, MalformedSchemesAreRejected) {

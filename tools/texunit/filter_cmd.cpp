@@ -65,13 +65,15 @@ int run_filter_compare(const FilterCompareArgs& a) {
   const auto ewa_ref = render::render_ref(s, scene::Filter::Ewa);
   const double n = static_cast<double>(std::max<size_t>(1, truth.pixels.size()));
   std::vector<Row> rows;
-  auto measure = [&](const std::string& name, const scene::Scene& si, scene::Filter f) {
+  auto measure = [&](const std::string& name, const scene::Scene& si, scene::Filter f, const ewa::EngineParams& ep = {}) {
     const auto fr = render::render_cmodel(si, f, render::texture_path_only());
     Row r{name, render::psnr_covered(fr, truth), render::psnr_covered(fr, ewa_ref)};
     for (const auto& p : fr.pixels) r.probes += p.probes, r.texels += p.texels;
     r.probes /= n;
     r.texels /= n;
-    r.clocks = double(plan::scene_stream_cycles(si, [f](const scene::Material&) { return f; }, false)) / n;
+    r.clocks = double(plan::scene_stream_cycles(si, [f](const scene::Material&) { return f; }, false, std::nullopt,
+                                                false, 0, {}, nullptr, {}, 1, ep)) /
+               n;
     rows.push_back(r);
   };
   for (const scene::Filter f : {scene::Filter::Nearest, scene::Filter::Bilinear, scene::Filter::Trilinear})
@@ -82,6 +84,9 @@ int run_filter_compare(const FilterCompareArgs& a) {
     measure("feline N<=" + std::to_string(cap), si, scene::Filter::Feline);
   }
   measure("ewa", s, scene::Filter::Ewa);
+  // The multi-texel engine (tu_ewa Lanes = 4: a 2 x 2 block per clock, three set-up units; the
+  // corridor unit model's, co-simulated = this cycle model): the same pixels, fewer clocks.
+  measure("ewa K=4", s, scene::Filter::Ewa, ewa::four_lane_engine());
   std::printf("%s: %dx%d, %zu covered pixels, texture path (relief off), C model; truth %d x %d samples per pixel, box\n",
               s.source.c_str(), s.camera.width, s.camera.height, truth.pixels.size(), a.ss, a.ss);
   std::printf("%-14s %12s %14s %11s %11s %11s %12s %12s\n", "filter", "PSNR truth", "PSNR float EWA", "probes/px",
@@ -91,7 +96,7 @@ int run_filter_compare(const FilterCompareArgs& a) {
                 r.psnr_ewa, r.probes, r.texels, r.clocks, r.texels / r.clocks,
                 std::max(1.0, r.texels / 4));
   std::printf("clocks/px: the RTL texture unit's exact cycle model (ewa::stream_cycles, = Verilator; Feline: "
-              "tu_feline, its probes through one tu_trilinear); 4/clk bound: texels / 4, the clocks of a datapath "
+              "tu_feline, its probes through one tu_trilinear; ewa K=4: tu_ewa_walk_lanes, 2x2 blocks, 3 set-up units); 4/clk bound: texels / 4, the clocks of a datapath "
               "reading a 2x2 texel block per clock (a GPU's bilinear probe)\n");
   if (!a.plot.empty()) write_plot(rows, a.plot, s.source + ": PSNR vs clocks per pixel");
   return 0;

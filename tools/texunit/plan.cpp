@@ -458,7 +458,8 @@ AfvisPlan plan_afvis(const scene::Scene& s) {
 uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::Filter(const scene::Material&)>& filter_of,
                            bool relief_stage, std::optional<scene::WeightSource> weights, bool ell_recurrence,
                            int clip_variant, const std::vector<bool>& noise_objects, size_t* covered,
-                           const std::vector<bool>& water_objects, int noise_slots) {
+                           const std::vector<bool>& water_objects, int noise_slots,
+                           const ewa::EngineParams& engine) {
   scene::Scene t = scene::without_relief(s);
   t.footprint = ell_recurrence ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
   for (auto& [name, m] : t.materials) m.filter = filter_of(m);
@@ -488,11 +489,12 @@ uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::F
       c.probes = c.guard ? 1 : rec.probes;
       c.one_level = ewa::trilinear_one_level(c.guard, static_cast<int>(std::floor(rec.lod)), top_level[obj]);
     }
+    c.blocks = static_cast<uint64_t>(rec.ewa_blocks);  // the K = 4 walk's clocks (engine.lanes 4)
     c.noise = obj < noise_objects.size() && noise_objects[obj];
     c.water = obj < water_objects.size() && water_objects[obj];
     costs.push_back(c);
   }
-  ewa::EngineParams ep;
+  ewa::EngineParams ep = engine;
   ep.clip_variant = clip_variant;
   ep.noise_slots = noise_slots;
   // Noise-unit pixels (II 1) can outrun the relief stage's pass-through, which only the

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "ewa/ewa_cycles.hpp"
 #include "texunit/scene.hpp"
 
 namespace tu::plan {
@@ -46,6 +47,7 @@ uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::F
                              bool relief_stage, std::optional<scene::WeightSource> weights = std::nullopt,
                              bool ell_recurrence = false, int clip_variant = 0,
                              const std::vector<bool>& noise_objects = {}, size_t* covered = nullptr,
-                             const std::vector<bool>& water_objects = {}, int noise_slots = 1);
+                             const std::vector<bool>& water_objects = {}, int noise_slots = 1,
+                             const ewa::EngineParams& engine = {});
 
 }  // namespace tu::plan

@@ -96,7 +96,7 @@ StreamModel::Times StreamModel::add(const PixelCost& c, uint64_t avail) {
     }
     case Engine::Ewa: {
       if (p_.lanes > 1) {
-        const size_t units = static_cast<size_t>(std::clamp(p_.setup_units, 1, 2));
+        const size_t units = static_cast<size_t>(std::clamp(p_.setup_units, 1, kMaxSetupUnits));
         a = std::max({ready, unit_free_[unit_next_], ewa_any_ ? ewa_accept_ + 1 : 0});
         const uint64_t credit = lane_outs_.size() >= static_cast<size_t>(p_.out_depth) ? lane_outs_.front() + 1 : 0;
         const uint64_t h = std::max({a + static_cast<uint64_t>(setup_cycles(c, p_)), lane_free_, credit});

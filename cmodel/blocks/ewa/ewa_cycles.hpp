@@ -33,6 +33,9 @@
 
 namespace tu::ewa {
 
+// Set-up units tu_ewa can have (its Setups parameter, with Lanes = 4).
+inline constexpr int kMaxSetupUnits = 4;
+
 // RTL structure parameters (tu_ewa CordUnroll, SqrtStep) and the fixed stage counts.
 struct EngineParams {
   int cord_unroll = 2;
@@ -41,10 +44,19 @@ struct EngineParams {
   int clip_variant = 0;  // tu_ewa ClipVariant (kRtlClipVariants index): the border pipeline's latency
   int noise_slots = 1;   // tu_noise_unit issue clocks per octave sum: 1 pipelined, NoiseCores octave-serial
   int lanes = 1;         // tu_ewa EwaLanes: 1 (tu_ewa_walk, one texel per clock) or 4 (tu_ewa_walk_lanes, 2 x 2)
-  int setup_units = 1;   // tu_ewa EwaSetups: set-up units taking pixels in turn
+  int setup_units = 1;   // tu_ewa EwaSetups: set-up units taking pixels in turn (1 .. kMaxSetupUnits)
   int out_depth = 8;     // lanes 4: tu_ewa_walk_lanes OutDepth (pixels between hand-over and output)
   bool lane_clip = false;  // lanes 4: the engine has border weights (HasClip): every pixel pays their latency
 };
+// The multi-texel engine as the unit builds it (tu_texture_unit EwaLanes = 4, EwaSetups = 3, no
+// border weights; the corridor unit model): three set-up units keep up with the 2 x 2 walk on the
+// default scene (two leave it set-up bound: docs/blocks/ewa.md).
+inline EngineParams four_lane_engine() {
+  EngineParams p;
+  p.lanes = 4;
+  p.setup_units = 3;
+  return p;
+}
 // The multi-texel walker's latency from its last block's issue to the output (lanes 4): the
 // sequential walker's drain and normalisation (EwaDrainCycles + EwaNormCycles + 1).
 int lane_walk_latency(const EngineParams& p);
@@ -116,7 +128,7 @@ class StreamModel {
   EngineParams p_;
   // lanes 4: the set-up units' free cycles (taken in turn), the last acceptance, the walker's
   // next hand-over, the outputs still holding a credit (the last out_depth)
-  uint64_t unit_free_[2] = {0, 0}, ewa_accept_ = 0, lane_free_ = 0;
+  uint64_t unit_free_[kMaxSetupUnits] = {}, ewa_accept_ = 0, lane_free_ = 0;
   size_t unit_next_ = 0;
   bool ewa_any_ = false;
   std::deque<uint64_t> lane_outs_;
