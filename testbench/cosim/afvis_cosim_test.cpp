@@ -21,22 +21,10 @@
 namespace {
 using namespace tu;
 
-cosim::Options with_stalls(double p) {
-  cosim::Options opt;
-  opt.run.stall_prob = p;
-  opt.run.seed = 99;
-  return opt;
-}
+using cosim::checks::with_stalls;
 
 TEST(AfvisCosim, GoldenStiffRandomWithStalls) {
-  const auto& b = blocks::find("afvis");
-  for (const std::string set : {"golden", "stiff", "random"}) {
-    const auto vf = blocks::generate(b, set, 600, 2026);
-    const auto rep = cosim::run(vf, with_stalls(0.3));
-    SCOPED_TRACE(set);
-    cosim::checks::expect_stream_clean(rep);
-    std::printf("afvis %s: %s\n", set.c_str(), rep.json().c_str());
-  }
+  cosim::checks::for_each_set_with_stalls(blocks::find("afvis"), [](const vec::VectorFile&, const cosim::Report&) {}, 600);
 }
 
 TEST(AfvisCosim, DetectsACorruptedExpectedValue) { cosim::checks::expect_corruption_detected("afvis"); }

@@ -19,20 +19,29 @@ inline void expect_stream_clean(const Report& r) {
   EXPECT_FALSE(r.hung);
 }
 
-// Golden, stiff and 100,000 random vectors (seed 2026) with 30% random stalls (seed 99); `check`
-// receives each set's vector file and report after the stream checks.
+// The suite's stall pattern: an input bubble and output back-pressure with probability p per
+// cycle (seed 99).
+inline Options with_stalls(double p) {
+  Options opt;
+  opt.run.stall_prob = p;
+  opt.run.seed = 99;
+  return opt;
+}
+
+// Golden, stiff and `random` random vectors (seed 2026) with 30% random stalls (seed 99), on the
+// block's RTL or the named one (Options::rtl); `check` receives each set's vector file and report
+// after the stream checks.
 template <class Check>
-void for_each_set_with_stalls(const blocks::Block& b, Check check) {
+void for_each_set_with_stalls(const blocks::Block& b, Check check, size_t random = 100000, const std::string& rtl = "") {
   for (const std::string set : {"golden", "stiff", "random"}) {
-    const auto vf = blocks::generate(b, set, 100000, 2026);
-    Options opt;
-    opt.run.stall_prob = 0.3;
-    opt.run.seed = 99;
+    const auto vf = blocks::generate(b, set, random, 2026);
+    Options opt = with_stalls(0.3);
+    opt.rtl = rtl;
     const auto rep = run(vf, opt);
     SCOPED_TRACE(set);
     expect_stream_clean(rep);
     check(vf, rep);
-    std::printf("%s %s: %s\n", b.name.c_str(), set.c_str(), rep.json().c_str());
+    std::printf("%s %s: %s\n", rtl.empty() ? b.name.c_str() : rtl.c_str(), set.c_str(), rep.json().c_str());
   }
 }
 

@@ -18,22 +18,10 @@
 namespace {
 using namespace tu;
 
-cosim::Options with_stalls(double p) {
-  cosim::Options opt;
-  opt.run.stall_prob = p;
-  opt.run.seed = 99;
-  return opt;
-}
+using cosim::checks::with_stalls;
 
 TEST(EwaCosim, GoldenStiffRandomWithStalls) {
-  const auto& b = blocks::find("ewa");
-  for (const std::string set : {"golden", "stiff", "random"}) {
-    const auto vf = blocks::generate(b, set, 3000, 2026);
-    const auto rep = cosim::run(vf, with_stalls(0.3));
-    SCOPED_TRACE(set);
-    cosim::checks::expect_stream_clean(rep);
-    std::printf("ewa %s: %s\n", set.c_str(), rep.json().c_str());
-  }
+  cosim::checks::for_each_set_with_stalls(blocks::find("ewa"), [](const vec::VectorFile&, const cosim::Report&) {}, 3000);
 }
 
 TEST(EwaCosim, DetectsACorruptedExpectedValue) { cosim::checks::expect_corruption_detected("ewa"); }
@@ -78,16 +66,8 @@ ewa::EngineParams lanes4_block_params() {
 }
 
 TEST(EwaCosim, Lanes4GoldenStiffRandomWithStalls) {
-  const auto& b = blocks::find("ewa");
-  for (const std::string set : {"golden", "stiff", "random"}) {
-    const auto vf = blocks::generate(b, set, 3000, 2026);
-    auto opt = with_stalls(0.3);
-    opt.rtl = "ewa_k4";
-    const auto rep = cosim::run(vf, opt);
-    SCOPED_TRACE(set);
-    cosim::checks::expect_stream_clean(rep);
-    std::printf("ewa_k4 %s: %s\n", set.c_str(), rep.json().c_str());
-  }
+  cosim::checks::for_each_set_with_stalls(blocks::find("ewa"), [](const vec::VectorFile&, const cosim::Report&) {}, 3000,
+                                          "ewa_k4");
 }
 
 TEST(EwaCosim, Lanes4CyclesMatchPrediction) {

@@ -516,6 +516,7 @@ std::vector<Spec> registry_specs() {
                        b.name.rfind("brdf_", 0) == 0 ||
                        b.name == "gauss_weight" ||
                        b.name == "texel_depth" ||  // its RTL is row persp/texel_depth (on B1's seeds)
+                       b.name == "afvis" ||        // its rows: report_relief.cpp (afvis_rows)
                        std::any_of(v.begin(), v.end(), [&](const Spec& x) { return x.block == b.name; });
     if (!known) v.push_back({b.name, b.name, b.name, rtl_or_null(b.name), "tu_" + b.name, b.err_metric});
   }
