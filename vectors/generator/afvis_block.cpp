@@ -19,6 +19,7 @@
 #include "afvis/afvis_ref.hpp"
 #include "afvis_block.hpp"
 #include "block.hpp"
+#include "ewa_pixel_fields.hpp"
 #include "ewa/ewa_fx.hpp"
 #include "pom/relief_quality.hpp"
 
@@ -36,8 +37,6 @@ const img::Gray8& afvis_depth() {
 namespace {
 namespace efx = ellipse::fx;
 
-uint64_t bits(int64_t v, int w) { return static_cast<uint64_t>(v) & (w == 64 ? ~0ull : ((1ull << w) - 1)); }
-
 struct Pixel {
   ewa::fx::In in;
   ewa::fx::Config cfg;
@@ -47,27 +46,14 @@ struct Pixel {
 };
 
 Row row_of(const Pixel& p) {
-  const auto& o = p.in.b2;
-  return {bits(p.in.u, fmt::kPerspUvW), bits(p.in.v, fmt::kPerspUvW), o.ae, o.ce,
-          static_cast<uint64_t>(o.be), bits(o.lmaj, fmt::kEllLogW), bits(o.lmin, fmt::kEllLogW), o.lod,
-          o.flags, static_cast<uint64_t>(p.cfg.weights), p.cfg.max_texels,
-          bits(p.view.vx, fmt::kPomVzW), bits(p.view.vy, fmt::kPomVzW), bits(p.view.vz, fmt::kPomVzW),
-          p.view.scale, static_cast<uint64_t>(p.dmin), static_cast<uint64_t>(p.bias), static_cast<uint64_t>(p.rule)};
+  Row r = ewa_pixel_row(p.in, p.cfg);
+  r.insert(r.end(), {field_bits(p.view.vx, fmt::kPomVzW), field_bits(p.view.vy, fmt::kPomVzW), field_bits(p.view.vz, fmt::kPomVzW),
+          p.view.scale, static_cast<uint64_t>(p.dmin), static_cast<uint64_t>(p.bias), static_cast<uint64_t>(p.rule)});
+  return r;
 }
 Pixel pixel_of(const Row& r) {
   Pixel p;
-  p.in.u = vec::sext(r[0], fmt::kPerspUvW);
-  p.in.v = vec::sext(r[1], fmt::kPerspUvW);
-  p.in.b2.ae = r[2];
-  p.in.b2.ce = r[3];
-  p.in.b2.be = static_cast<int64_t>(r[4]);
-  p.in.b2.lmaj = static_cast<int32_t>(vec::sext(r[5], fmt::kEllLogW));
-  p.in.b2.lmin = static_cast<int32_t>(vec::sext(r[6], fmt::kEllLogW));
-  p.in.b2.lod = static_cast<uint32_t>(r[7]);
-  p.in.b2.flags = static_cast<uint32_t>(r[8]);
-  if (r[9] > 2) throw std::invalid_argument("afvis: field wsrc = " + std::to_string(r[9]) + " (0..2)");
-  p.cfg.weights = static_cast<ewa::fx::Weights>(r[9]);
-  p.cfg.max_texels = static_cast<uint32_t>(r[10]);
+  ewa_pixel_of(r, "afvis", p.in, p.cfg);
   p.view.vx = static_cast<int32_t>(vec::sext(r[11], fmt::kPomVzW));
   p.view.vy = static_cast<int32_t>(vec::sext(r[12], fmt::kPomVzW));
   p.view.vz = static_cast<int32_t>(vec::sext(r[13], fmt::kPomVzW));

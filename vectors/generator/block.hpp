@@ -17,6 +17,11 @@ namespace tu::blocks {
 
 using Row = std::vector<uint64_t>;
 
+// Low w bits (1..64) of a two's-complement value: a signed field's code in a vector row.
+inline uint64_t field_bits(int64_t v, int w) {
+  return static_cast<uint64_t>(v) & (w == 64 ? ~0ull : ((1ull << w) - 1));
+}
+
 // Error of one output against the float reference, in the block's own units.
 struct ErrPoint {
   double abs = 0;  // absolute error in the block's documented unit

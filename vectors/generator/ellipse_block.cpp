@@ -20,12 +20,10 @@ namespace {
 namespace fx = ellipse::fx;
 constexpr uint32_t kAniso16 = 4u << fmt::kEllLogF;
 
-uint64_t bits(int64_t v, int w) { return static_cast<uint64_t>(v) & (w == 64 ? ~0ull : ((1ull << w) - 1)); }
-
 Row row_of(const fx::In& in) {
-  return {bits(in.nux, fmt::kEllNumW), bits(in.nvx, fmt::kEllNumW), bits(in.nuy, fmt::kEllNumW),
-          bits(in.nvy, fmt::kEllNumW), bits(in.q, fmt::kPerspQW),   bits(in.dm, fmt::kEllDetW),
-          bits(in.dexp, fmt::kEllDetExpW), in.laniso, in.max_lod};
+  return {field_bits(in.nux, fmt::kEllNumW), field_bits(in.nvx, fmt::kEllNumW), field_bits(in.nuy, fmt::kEllNumW),
+          field_bits(in.nvy, fmt::kEllNumW), field_bits(in.q, fmt::kPerspQW),   field_bits(in.dm, fmt::kEllDetW),
+          field_bits(in.dexp, fmt::kEllDetExpW), in.laniso, in.max_lod};
 }
 fx::In in_of(const Row& r) {
   fx::In in;
@@ -84,7 +82,7 @@ std::vector<Row> stiff_inputs() {
   for (int64_t q : {(int64_t(1) << 30) - 1, int64_t(0), int64_t(-5), -(int64_t(1) << 43),
                     int64_t(1) << 30}) {
     Row r = from_local(local(0.001, 900, 3, 0.2));
-    r[4] = bits(q, fmt::kPerspQW);
+    r[4] = field_bits(q, fmt::kPerspQW);
     rows.push_back(r);
   }
   for (double q : {0.002, 0.00098, 0.0011}) rows.push_back(from_local(local(q, 1 / q, 5, 0.9, q / 40, -q / 50)));
@@ -157,12 +155,12 @@ Row out_row(const fx::Out& o) {
              o.ce,
              o.eexp,
              o.fm,
-             bits(o.fexp, fmt::kEllFexpW),
-             bits(o.lmaj, fmt::kEllLogW),
-             bits(o.lmin, fmt::kEllLogW),
+             field_bits(o.fexp, fmt::kEllFexpW),
+             field_bits(o.lmaj, fmt::kEllLogW),
+             field_bits(o.lmin, fmt::kEllLogW),
              o.lod,
              o.flags,
-             bits(o.lrho, fmt::kEllLogW)};
+             field_bits(o.lrho, fmt::kEllLogW)};
 }
 Row footprint_row(const ellipse::Jacobian& j, const fx::In& in) {
   ellipse::FootprintParams p;
@@ -251,9 +249,9 @@ struct RecIn {
   int64_t qg = 0, qh = 0;
 };
 Row rec_row(const fx::In& in, int64_t qg, int64_t qh) {
-  return {bits(in.nux, fmt::kEllNumW), bits(in.nvx, fmt::kEllNumW), bits(in.nuy, fmt::kEllNumW),
-          bits(in.nvy, fmt::kEllNumW), bits(in.q, fmt::kPerspQW),   bits(qg, fmt::kEllRecQW),
-          bits(qh, fmt::kEllRecQW),    in.laniso,                   in.max_lod};
+  return {field_bits(in.nux, fmt::kEllNumW), field_bits(in.nvx, fmt::kEllNumW), field_bits(in.nuy, fmt::kEllNumW),
+          field_bits(in.nvy, fmt::kEllNumW), field_bits(in.q, fmt::kPerspQW),   field_bits(qg, fmt::kEllRecQW),
+          field_bits(qh, fmt::kEllRecQW),    in.laniso,                   in.max_lod};
 }
 RecIn rec_of(const Row& r) {
   RecIn x;

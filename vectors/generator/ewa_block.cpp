@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "block.hpp"
+#include "ewa_pixel_fields.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "ewa/ewa_fx.hpp"
 #include "gauss/clip.hpp"
@@ -27,33 +28,19 @@ using ewa::fx::In;
 // The block's clip volume for clip = 1: tu_ewa_sim's ClipVariant 0.
 const clip::Variant& block_clip() { return clip::variant(ewa::kRtlClipVariants[0]); }
 
-uint64_t bits(int64_t v, int w) { return static_cast<uint64_t>(v) & (w == 64 ? ~0ull : ((1ull << w) - 1)); }
-
 struct Pixel {
   In in;
   ewa::fx::Config cfg;
 };
 
 Row row_of(const Pixel& p) {
-  const auto& o = p.in.b2;
-  return {bits(p.in.u, fmt::kPerspUvW), bits(p.in.v, fmt::kPerspUvW), o.ae, o.ce,
-          static_cast<uint64_t>(o.be), bits(o.lmaj, fmt::kEllLogW), bits(o.lmin, fmt::kEllLogW), o.lod,
-          o.flags, static_cast<uint64_t>(p.cfg.weights), p.cfg.max_texels, p.cfg.clip != nullptr};
+  Row r = ewa_pixel_row(p.in, p.cfg);
+  r.push_back(p.cfg.clip != nullptr);
+  return r;
 }
 Pixel pixel_of(const Row& r) {
   Pixel p;
-  p.in.u = vec::sext(r[0], fmt::kPerspUvW);
-  p.in.v = vec::sext(r[1], fmt::kPerspUvW);
-  p.in.b2.ae = r[2];
-  p.in.b2.ce = r[3];
-  p.in.b2.be = static_cast<int64_t>(r[4]);
-  p.in.b2.lmaj = static_cast<int32_t>(vec::sext(r[5], fmt::kEllLogW));
-  p.in.b2.lmin = static_cast<int32_t>(vec::sext(r[6], fmt::kEllLogW));
-  p.in.b2.lod = static_cast<uint32_t>(r[7]);
-  p.in.b2.flags = static_cast<uint32_t>(r[8]);
-  if (r[9] > 2) throw std::invalid_argument("ewa: field wsrc = " + std::to_string(r[9]) + " (0..2)");
-  p.cfg.weights = static_cast<ewa::fx::Weights>(r[9]);
-  p.cfg.max_texels = static_cast<uint32_t>(r[10]);
+  ewa_pixel_of(r, "ewa", p.in, p.cfg);
   if (r[11] > 1) throw std::invalid_argument("ewa: field clip = " + std::to_string(r[11]) + " (0, 1)");
   if (r[11]) p.cfg.clip = &block_clip();
   return p;

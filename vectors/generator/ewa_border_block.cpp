@@ -21,17 +21,15 @@ constexpr int kQF = 2 * (fmt::kEwaKF + fmt::kEwaPosF);
 constexpr int64_t kStep = int64_t(1) << fmt::kEwaPosF;
 const char* const kVariant = "mm_p1";  // tu_ewa_border's default ClipVariant 0 (tu_clip_p1)
 
-uint64_t bits(int64_t v, int w) { return static_cast<uint64_t>(v) & ((uint64_t(1) << w) - 1); }
-
 struct Texel {
   int64_t q = 0, xi = 0, eta = 0;
   int32_t k[4] = {0, 0, 0, 0};  // kxu, kxv, kyu, kyv
   uint32_t w = 0;
 };
 Row row_of(const Texel& t) {
-  return {static_cast<uint64_t>(t.q), bits(t.xi, fmt::kEwaXiW), bits(t.eta, fmt::kEwaXiW),
-          bits(t.k[0], fmt::kEwaKW), bits(t.k[1], fmt::kEwaKW), bits(t.k[2], fmt::kEwaKW),
-          bits(t.k[3], fmt::kEwaKW), t.w};
+  return {static_cast<uint64_t>(t.q), field_bits(t.xi, fmt::kEwaXiW), field_bits(t.eta, fmt::kEwaXiW),
+          field_bits(t.k[0], fmt::kEwaKW), field_bits(t.k[1], fmt::kEwaKW), field_bits(t.k[2], fmt::kEwaKW),
+          field_bits(t.k[3], fmt::kEwaKW), t.w};
 }
 Texel texel_of(const Row& r) {
   Texel t;
@@ -124,7 +122,7 @@ Block make_ewa_border() {
   b.model = [](const Row& in) {
     const Texel t = texel_of(in);
     const efx::Border br = efx::border(frame_of(t), t.q, t.xi, t.eta);
-    return Row{static_cast<uint64_t>(br.zone), bits(br.d, fmt::kClipInW),
+    return Row{static_cast<uint64_t>(br.zone), field_bits(br.d, fmt::kClipInW),
                efx::apply_border(br, t.q, t.w, clip::variant(kVariant))};
   };
   b.ref = [](const Row& in) {

@@ -25,8 +25,6 @@ namespace {
 namespace efx = ellipse::fx;
 using ewa::fx::In;
 
-uint64_t bits(int64_t v, int w) { return static_cast<uint64_t>(v) & (w == 64 ? ~0ull : ((1ull << w) - 1)); }
-
 struct Pixel {
   In in;
   bool guard = false;
@@ -41,9 +39,9 @@ const tex::Texture& texture() {
 Row row_of(const Pixel& p) {
   const auto& o = p.in.b2;
   const auto& l = p.cfg.lod;
-  return {bits(p.in.u, fmt::kPerspUvW), bits(p.in.v, fmt::kPerspUvW), o.ae, o.ce, static_cast<uint64_t>(o.be),
-          bits(o.lmaj, fmt::kEllLogW), bits(o.lmin, fmt::kEllLogW), bits(o.lrho, fmt::kEllLogW), o.flags,
-          p.guard, static_cast<uint64_t>(p.cfg.max_probes), bits(l.bias, fmt::kTexLodBiasW), l.min_lod, l.max_lod,
+  return {field_bits(p.in.u, fmt::kPerspUvW), field_bits(p.in.v, fmt::kPerspUvW), o.ae, o.ce, static_cast<uint64_t>(o.be),
+          field_bits(o.lmaj, fmt::kEllLogW), field_bits(o.lmin, fmt::kEllLogW), field_bits(o.lrho, fmt::kEllLogW), o.flags,
+          p.guard, static_cast<uint64_t>(p.cfg.max_probes), field_bits(l.bias, fmt::kTexLodBiasW), l.min_lod, l.max_lod,
           l.base_level, l.max_level};
 }
 Pixel pixel_of(const Row& r) {
