@@ -16,6 +16,8 @@ typedef struct packed {
   logic [tu_formats_pkg::EngineW-1:0] filt;  // filter engine (Eng* codes)
   logic clip;  // EWA sub-texel border weights (the unit's EwaClipVariant)
   logic [3:0] tlbase;  // colour texture: base level (tex::level_range), nearest and bilinear sample it
+  logic [tu_formats_pkg::TexFmtW-1:0] tfmt;  // colour texture: storage format (TexFmt* codes, tu_texel_decode)
+  logic tsrgb;  // colour texture: sRGB colour channels (decoded to linear by tu_texel_decode)
 } tu_material_t;
 // material relief fields
 typedef struct packed {

@@ -56,6 +56,11 @@ module tu_texture_unit #(
   // noise scheme: 0 pipelined (NoiseCores cores, one octave sum per clock), 1 octave-serial (one
   // core, NoiseCores clocks per sum)
   parameter int NoiseScheme = tu_unit_cfg_pkg::NoiseScheme,
+  // texel decode (tu_texel_decode): the storage formats kept (bit = TexFmt* code), the sRGB
+  // tables, and the texel port's width (the widest stored format kept)
+  parameter logic [6:0] TexFormats = tu_unit_cfg_pkg::TexFormats,
+  parameter int HasSrgb   = {31'b0, tu_unit_cfg_pkg::HasSrgb},
+  parameter int TexelW    = tu_unit_cfg_pkg::TexelW,
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -95,6 +100,8 @@ module tu_texture_unit #(
   input  logic [3:0]                            tlw_i,
   input  logic [3:0]                            tlh_i,
   input  logic [2*tu_formats_pkg::WrapW-1:0]     twrap_i,  // {v, u} Wrap* codes
+  input  logic [tu_formats_pkg::TexFmtW-1:0]    tfmt_i,   // storage format (TexFmt* codes)
+  input  logic                                  tsrgb_i,  // sRGB colour channels
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   input  logic [1:0]                            filt_i,  // material filter: 0 bilinear, 1 EWA, 2 trilinear, 3 nearest
@@ -129,10 +136,10 @@ module tu_texture_unit #(
   input  logic                                  shade_valid_i,
   output logic                                  shade_ready_o,
   input  logic [tu_formats_pkg::ShadeWordW-1:0] shade_i,
-  // texel port (1-cycle read latency)
+  // texel port (1-cycle read latency; a stored word, decoded by tu_texel_decode)
   output logic                                  tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   tex_addr_o,
-  input  logic [31:0]                           tex_data_i,
+  input  logic [TexelW-1:0]                     tex_data_i,
   // pixel output
   output logic                                  out_valid_o,
   input  logic                                  out_ready_i,
@@ -191,6 +198,8 @@ module tu_texture_unit #(
     in_mat.cap     = cap_i;
     in_mat.filt    = filt_i;
     in_mat.clip    = clip_i;
+    in_mat.tfmt    = tfmt_i;
+    in_mat.tsrgb   = tsrgb_i;
     in_rel.rel     = rel_i;
     in_rel.radapt  = radapt_i;
     in_rel.riter   = riter_i;
@@ -414,7 +423,11 @@ module tu_texture_unit #(
   // all its pixels (cur_q: the engine of the pixels in flight, inflight_q: how many), so outputs
   // stay in order and only one engine drives the texel port. Switches happen at material changes
   // only (ewa::stream_cycles counts the drain).
-  localparam int OsW = 2 * XW + 2 + 5 + RrW;
+  // The sideband also carries the pixel's storage format (FkW: TexFmt code, sRGB): every engine
+  // reads texels for its oldest pixel in flight only (one walk at a time, the next after its
+  // output is taken), the sideband FIFO's head, so the texel decode takes the format from there.
+  localparam int FkW = tu_formats_pkg::TexFmtW + 1;
+  localparam int OsW = 2 * XW + 2 + 5 + RrW + FkW;
   // the filtered pixel before the shading stage
   logic          p_valid, p_ready;
   logic [XW-1:0] p_x, p_y;
@@ -470,7 +483,7 @@ module tu_texture_unit #(
   assign fire_flt  = fq_valid && fq_ready && !f_noise;
   tu_fifo #(.Width(OsW), .Depth(2)) u_osb (
     .clk_i, .rst_ni, .in_valid_i(fq_valid && !f_noise && can_go && eng_ready), .in_ready_o(os_in_ready),
-    .in_data_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rr}), .out_valid_o(os_valid),
+    .in_data_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rr, f_mat.tfmt, f_mat.tsrgb}), .out_valid_o(os_valid),
     .out_ready_i(p_ready && flt_valid), .out_data_o(os_data)
   );
   // cur_q is the engine of the oldest pixel in flight (set when it accepted its first).
@@ -480,7 +493,13 @@ module tu_texture_unit #(
   assign p_valid     = nz_busy ? nz_valid : flt_valid && os_valid;
   assign fire_out    = flt_valid && os_valid && p_ready;
   logic [OsW-1:0] nz_side;
-  assign {p_x, p_y, p_pflags, p_eflags, p_rr} = nz_busy ? nz_side : os_data;
+  logic [FkW-1:0] p_fk;  // the format rides with the pixel; the decode reads it at the FIFO's head
+  assign {p_x, p_y, p_pflags, p_eflags, p_rr, p_fk} = nz_busy ? nz_side : os_data;
+  // Texel decode: the stored word of the oldest pixel in flight's texture to RGBA8.
+  logic [31:0] tex_rgba;
+  tu_texel_decode #(.TexelW(TexelW), .Formats(TexFormats), .HasSrgb(HasSrgb)) u_decode (
+    .word_i(tex_data_i), .fmt_i(os_data[FkW-1:1]), .srgb_i(os_data[0]), .rgba_o(tex_rgba)
+  );
   assign p_rgba      = nz_busy ? nz_rgba : cur_rgba;
   // Only the engine with pixels in flight reads texels.
   assign tex_req_o   = req_of[cur_q];
@@ -505,7 +524,7 @@ module tu_texture_unit #(
       .u_i(f_u), .v_i(f_v), .ae_i(f_ae), .ce_i(f_ce), .be_i(f_be), .lmaj_i(f_lmaj), .lmin_i(f_lmin),
       .lod_i(f_lod), .eflags_i(f_eflags), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
       .wrap_i({f_mat.twrapv, f_mat.twrapu}), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap), .clip_i(f_mat.clip),
-      .tex_req_o(ewa_req), .tex_addr_o(ewa_addr), .tex_data_i,
+      .tex_req_o(ewa_req), .tex_addr_o(ewa_addr), .tex_data_i(tex_rgba),
       .out_valid_o(ewa_valid), .out_ready_i(p_ready && os_valid && cur_q == EngEwa),
       .rgba_o(ewa_rgba), .level_o(ewa_level), .visited_o(ewa_visited), .inside_o(ewa_inside),
       .flags_o(ewa_flags)
@@ -527,7 +546,7 @@ module tu_texture_unit #(
     tu_bilinear u_bil (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngBil), .in_ready_o(bil_in_ready),
       .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .level_i(f_mat.tlbase), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
-      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i,
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i(tex_rgba),
       .out_valid_o(bil_valid), .out_ready_i(p_ready && os_valid && cur_q == EngBil), .rgba_o(bil_rgba)
     );
   end else begin : g_no_bilinear
@@ -543,7 +562,7 @@ module tu_texture_unit #(
     tu_trilinear u_tri (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngTri), .in_ready_o(tri_in_ready),
       .u_i(f_u), .v_i(f_v), .lod_i(f_tlod), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
-      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(tri_req), .tex_addr_o(tri_addr), .tex_data_i,
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(tri_req), .tex_addr_o(tri_addr), .tex_data_i(tex_rgba),
       .out_valid_o(tri_valid), .out_ready_i(p_ready && os_valid && cur_q == EngTri), .rgba_o(tri_rgba),
       .level_o(tri_level)
     );
@@ -561,7 +580,7 @@ module tu_texture_unit #(
     tu_nearest u_nst (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngNst), .in_ready_o(nst_in_ready),
       .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .level_i(f_mat.tlbase), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
-      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(nst_req), .tex_addr_o(nst_addr), .tex_data_i,
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(nst_req), .tex_addr_o(nst_addr), .tex_data_i(tex_rgba),
       .out_valid_o(nst_valid), .out_ready_i(p_ready && os_valid && cur_q == EngNst), .rgba_o(nst_rgba)
     );
   end else begin : g_no_nearest
@@ -584,7 +603,7 @@ module tu_texture_unit #(
                     .Serial(NoiseScheme)) u_noise (
       .clk_i, .rst_ni, .in_valid_i(fq_valid && f_noise && inflight_q == '0), .in_ready_o(nz_in_ready),
       .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .lrho_i(f_lrho), .proc_i(f_pix.proc),
-      .side_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rr}),
+      .side_i({f_pix.x, f_pix.y, f_pix.ovf, f_guard, f_eflags, f_rr, f_mat.tfmt, f_mat.tsrgb}),
       .out_valid_o(nz_valid), .out_ready_i(p_ready), .rgba_o(nz_rgba), .side_o(nz_side)
     );
     always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -635,7 +654,7 @@ module tu_texture_unit #(
   end
 
   logic unused;
-  assign unused = ^{b2_eexp, b2_fm, b2_fexp, ex_pix.fpix.x};  // x slot: filled per pixel
+  assign unused = ^{b2_eexp, b2_fm, b2_fexp, ex_pix.fpix.x, p_fk};  // x slot: filled per pixel
 
   // valid/ready protocol checks (rtl/common/tu_assert.svh)
   `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {x_o, y_o, rgba_o, level_o, visited_o, inside_o, flags_o, eflags_o, pflags_o, rn_o, rsteps_o, rflags_o})
@@ -643,7 +662,7 @@ module tu_texture_unit #(
   // one 1,300-bit value under --assert.
   `TU_ASSERT_HANDSHAKE(InHandshakeB1, in_valid_i, in_ready_o, {a_i, b_i, c_i, d_i, e_i, f_i, g_i, h_i, i_i, x0_i, x1_i, y_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeB2, in_valid_i, in_ready_o, {kux_i, kvx_i, kuy_i, kvy_i, m_i, nn_i})
-  `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, twrap_i,
+  `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, twrap_i, tfmt_i, tsrgb_i,
                                                                  wsrc_i, cap_i, filt_i, clip_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
                                                                  hlw_i, hlh_i, rdm_i, dlayers_i, dbase_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeProc, in_valid_i, in_ready_o, {proc_i})

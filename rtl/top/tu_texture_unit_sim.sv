@@ -20,6 +20,9 @@ module tu_texture_unit_sim #(
   parameter int NoiseCores    = tu_unit_cfg_pkg::NoiseCores,
   parameter int HasWater      = {31'b0, tu_unit_cfg_pkg::HasWater},
   parameter int NoiseScheme   = tu_unit_cfg_pkg::NoiseScheme,
+  parameter logic [6:0] TexFormats = tu_unit_cfg_pkg::TexFormats,
+  parameter int HasSrgb       = {31'b0, tu_unit_cfg_pkg::HasSrgb},
+  parameter int TexelW        = tu_unit_cfg_pkg::TexelW,  // the texel RAM's word (stored texel)
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words,
   // the depth RAM also holds the distance maps (the default scene's wall: 1,114,112 words)
   parameter int DepthWords = 2 * Words
@@ -64,6 +67,8 @@ module tu_texture_unit_sim #(
   input  logic [3:0]                            tlw_i,
   input  logic [3:0]                            tlh_i,
   input  logic [2*tu_formats_pkg::WrapW-1:0]     twrap_i,
+  input  logic [tu_formats_pkg::TexFmtW-1:0]    tfmt_i,
+  input  logic                                  tsrgb_i,
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   input  logic [1:0]                            filt_i,
@@ -98,7 +103,7 @@ module tu_texture_unit_sim #(
 );
   logic                                tex_req;
   logic [tu_formats_pkg::TexAddrW-1:0] tex_addr;
-  logic [31:0]                         tex_data;
+  logic [TexelW-1:0]                   tex_data;
   localparam int VzW = tu_formats_pkg::PomVzW;
   logic                                view_valid, view_ready, d_req;
   logic [63:0]                         view;
@@ -112,12 +117,12 @@ module tu_texture_unit_sim #(
                     .EllRecurrence(EllRecurrence),
                     .HasEwaClip(HasEwaClip), .EwaClipVariant(EwaClipVariant),
                     .HasNoise(HasNoise), .NoiseDims(NoiseDims), .NoiseCores(NoiseCores), .HasWater(HasWater),
-                    .NoiseScheme(NoiseScheme)) u_tu (
+                    .NoiseScheme(NoiseScheme), .TexFormats(TexFormats), .HasSrgb(HasSrgb), .TexelW(TexelW)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
     .kuy_i, .kvy_i, .m_i, .nn_i, .dm_i, .dexp_i, .laniso_i, .maxlod_i, .lbias_i, .lminlod_i, .lmaxlod_i, .lbase_i, .ltop_i,
-    .tbase_i, .tlw_i, .tlh_i, .twrap_i, .wsrc_i, .cap_i, .filt_i, .clip_i,
+    .tbase_i, .tlw_i, .tlh_i, .twrap_i, .tfmt_i, .tsrgb_i, .wsrc_i, .cap_i, .filt_i, .clip_i,
     .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i, .rdm_i, .dlayers_i, .dbase_i, .proc_i,
     .view_valid_i(view_valid), .view_ready_o(view_ready), .view_ok_i(view[3 * VzW + tu_formats_pkg::PomCW]),
     .vx_i(view[2 * VzW + tu_formats_pkg::PomCW +: VzW]), .vy_i(view[VzW + tu_formats_pkg::PomCW +: VzW]),
@@ -129,9 +134,9 @@ module tu_texture_unit_sim #(
     .pflags_o, .rn_o, .rsteps_o, .rflags_o,
     .tex_req_o(tex_req), .tex_addr_o(tex_addr), .tex_data_i(tex_data)
   );
-  tu_texel_ram #(.Words(Words)) u_ram (
+  tu_texel_ram #(.Words(Words), .DataW(TexelW)) u_ram (
     .clk_i, .rd_en_i(tex_req), .rd_addr_i(tex_addr), .rd_data_o(tex_data),
-    .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
+    .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i[TexelW-1:0])
   );
   // view word: {ok, vx, vy, vz, c} from bit 3 VzW + PomCW down
   tu_texel_ram #(.Words(DepthWords)) u_depth (
