@@ -14,6 +14,7 @@
 #include "noise/noise_ref.hpp"
 #include "gauss/weight.hpp"
 #include "reciprocal/reciprocal.hpp"
+#include "texture/texel_format.hpp"
 #include "texunit/formats.hpp"
 #include "texunit/schema.hpp"
 
@@ -64,10 +65,13 @@ void schema_decls(std::ostream& os) {
             {TU_WEIGHT_SOURCE_CODES(TU_X)});
   emit_enum("texture wrap mode of one axis (schema.hpp TU_WRAP_CODES)", schema::kWrapW, "Wrap", "wrap_e",
             {TU_WRAP_CODES(TU_X)});
+  emit_enum("texel storage format (schema.hpp TU_TEXEL_FORMAT_CODES)", schema::kTexFmtW, "TexFmt", "texfmt_e",
+            {TU_TEXEL_FORMAT_CODES(TU_X)});
 #undef TU_X
   os << "  localparam int EngineW = " << schema::kEngineW << ";\n"
      << "  localparam int WsrcW = " << schema::kWsrcW << ";\n"
-     << "  localparam int WrapW = " << schema::kWrapW << ";\n";
+     << "  localparam int WrapW = " << schema::kWrapW << ";\n"
+     << "  localparam int TexFmtW = " << schema::kTexFmtW << ";\n";
   os << "  // flag bits (bit indices) of the EWA filter and of the footprint unit\n";
 #define TU_X(name, bit, desc) os << "  localparam int EwaFlag" #name " = " << (bit) << ";  // " << desc << "\n";
   TU_EWA_FLAG_BITS(TU_X)
@@ -322,6 +326,20 @@ std::string noise_perm_rom() {
   os << "      default: p_o = '0;\n    endcase\n  end\nendmodule\n";
   return os.str();
 }
+std::string srgb_rom() {
+  // sRGB decode (docs/blocks/texture.md "Texel formats"): the C model's one table,
+  // tex::srgb_decode_table(), linear = round(255 EOTF(code / 255)).
+  const auto& t = tex::srgb_decode_table();
+  std::ostringstream os;
+  os << kBanner << "// sRGB decode ROM: lin_o = round(255 EOTF(code_i / 255)) (tex::srgb_decode_table).\n"
+     << "module tu_srgb_rom (\n"
+     << "  input  logic [7:0] code_i,\n"
+     << "  output logic [7:0] lin_o\n);\n"
+     << "  always_comb begin\n    unique case (code_i)\n";
+  for (size_t k = 0; k < t.size(); ++k) os << "      " << hex(k, 8) << ": lin_o = " << hex(t[k], 8) << ";\n";
+  os << "      default: lin_o = '0;\n    endcase\n  end\nendmodule\n";
+  return os.str();
+}
 }  // namespace
 
 std::map<std::string, std::string> generated_rtl() {
@@ -335,6 +353,7 @@ std::map<std::string, std::string> generated_rtl() {
           {"rtl/generated/tu_noise_perm_rom.sv", noise_perm_rom()},
           {"rtl/generated/tu_pom_f_rom.sv", pom_f_rom()},
           {"rtl/generated/tu_recip_rom.sv", recip_rom()},
+          {"rtl/generated/tu_srgb_rom.sv", srgb_rom()},
           {"rtl/generated/tu_wtab1d_rom.sv", wtab1d_rom()},
           {"rtl/generated/tu_wtab2d_rom.sv", wtab2d_rom()}};
 }

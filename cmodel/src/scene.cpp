@@ -253,6 +253,9 @@ TextureSpec parse_texture(Node n, const std::string& name, const std::string& ba
   const std::string fm = n.str("format", std::string("rgba8"), formats);
   t.format = static_cast<int>(std::find(formats.begin(), formats.end(), fm) - formats.begin());
   t.srgb = n.has("srgb") ? n.boolean("srgb") : false;
+  const std::vector<std::string> mips(std::begin(tex::kMipFilterNames), std::end(tex::kMipFilterNames));
+  const std::string mf = n.str("mip_filter", std::string("box"), mips);
+  t.mip_filter = static_cast<int>(std::find(mips.begin(), mips.end(), mf) - mips.begin());
   t.addressing.u = wrap_of("wrap_u", both);
   t.addressing.v = wrap_of("wrap_v", both);
   if (n.has("border")) {
@@ -593,10 +596,11 @@ tex::Texture build_texture(const Scene& s, const std::string& name) {
   const std::string where = s.source + ": /textures/" + name;
   try {
     const auto f = static_cast<tex::TexelFormat>(t.format);  // converted on load (texel_format.hpp)
+    const auto mip = static_cast<tex::MipFilter>(t.mip_filter);
     if (t.builtin == "checkerboard")
-      return tex::build_stored(where, tex::checkerboard(t.size, t.cells), t.addressing, f, t.srgb);
-    if (t.builtin == "bricks") return tex::build_stored(where, tex::bricks(t.size).color, t.addressing, f, t.srgb);
-    return tex::build_stored(where + " (" + t.png + ")", img::read_png_rgba(t.png), t.addressing, f, t.srgb);
+      return tex::build_stored(where, tex::checkerboard(t.size, t.cells), t.addressing, f, t.srgb, mip);
+    if (t.builtin == "bricks") return tex::build_stored(where, tex::bricks(t.size).color, t.addressing, f, t.srgb, mip);
+    return tex::build_stored(where + " (" + t.png + ")", img::read_png_rgba(t.png), t.addressing, f, t.srgb, mip);
   } catch (const std::invalid_argument& e) {
     throw SceneError(e.what());
   } catch (const std::runtime_error& e) {

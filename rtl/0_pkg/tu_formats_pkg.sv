@@ -275,9 +275,20 @@ package tu_formats_pkg;
     WrapBorder = 3'd3,  // outside [0, size - 1]: the border colour (GL_CLAMP_TO_BORDER)
     WrapMirrorOnce = 3'd4  // clamp(x < 0 ? -1 - x : x) to [0, size - 1] (GL_MIRROR_CLAMP_TO_EDGE)
   } wrap_e;
+  // texel storage format (schema.hpp TU_TEXEL_FORMAT_CODES)
+  typedef enum logic [2:0] {
+    TexFmtRgba8 = 3'd0,  // 32 bits: A[31:24] B[23:16] G[15:8] R[7:0]
+    TexFmtRgb565 = 3'd1,  // 16 bits: R[15:11] G[10:5] B[4:0], A = 255
+    TexFmtRgba5551 = 3'd2,  // 16 bits: R[15:11] G[10:6] B[5:1] A[0]
+    TexFmtRgba4444 = 3'd3,  // 16 bits: R[15:12] G[11:8] B[7:4] A[3:0]
+    TexFmtL8 = 3'd4,  // 8 bits: L[7:0] -> (L, L, L, 255)
+    TexFmtLa8 = 3'd5,  // 16 bits: A[15:8] L[7:0] -> (L, L, L, A)
+    TexFmtA8 = 3'd6  // 8 bits: A[7:0] -> (0, 0, 0, A)
+  } texfmt_e;
   localparam int EngineW = 3;
   localparam int WsrcW = 2;
   localparam int WrapW = 3;
+  localparam int TexFmtW = 3;
   // flag bits (bit indices) of the EWA filter and of the footprint unit
   localparam int EwaFlagUnitDisc = 0;  // B2 horizon or point footprint (no axes): unit disc at the sampler level
   localparam int EwaFlagAxisClamp = 1;  // log2 major at level L above min(log2 lim_L, EwaAxisMaxLog2): clamped
@@ -292,11 +303,11 @@ package tu_formats_pkg;
   localparam int EllFlagMagnify = 4;  // minor_c < 1 texel: lod = 0
   localparam int EllFlagW = 5;
   // record widths (types tu_<name>_t in rtl/generated/tu_records.svh)
-  localparam int MaterialW = 114;  // material fields of a pixel
+  localparam int MaterialW = 118;  // material fields of a pixel
   localparam int ReliefW = 112;  // material relief fields
   localparam int TriW = 112;  // per-triangle footprint constants
   localparam int ProcW = 338;  // procedural material constants
-  localparam int FpixW = 477;  // pixel on its way to the filter
-  localparam int PixW = 589;  // pixel before the relief stage
+  localparam int FpixW = 481;  // pixel on its way to the filter
+  localparam int PixW = 593;  // pixel before the relief stage
   /* verilator lint_on UNUSEDPARAM */
 endpackage

@@ -32,4 +32,8 @@ package tu_unit_cfg_pkg;
   localparam bit HasWater = 1'b1;  // water back-end of the noise unit (normal, Lambert)
   localparam int NoiseScheme = 0;  // 0 pipelined (NoiseCores cores), 1 octave-serial (one core)
   localparam bit HasAfvis = 1'b1;  // AF with parallax visibility (tu_afvis)
+  // texel decode (tu_texel_decode): bit = tu_formats_pkg::TexFmt* code, 1 = its decode is built
+  localparam logic [6:0] TexFormats = 7'd127;
+  localparam bit HasSrgb = 1'b1;  // sRGB decode tables (tu_srgb_rom)
+  localparam int TexelW = 32;  // texel port and RAM word: the widest stored format
 endpackage

@@ -21,6 +21,8 @@ typedef struct packed {
   logic [tu_formats_pkg::EllLodW-1:0] lmaxlod;  // Feline probe lod: max lod
   logic [3:0] ltop;  // Feline probe lod: the top level of the material's range
   logic [tu_formats_pkg::FelProbeW-1:0] fnmax;  // Feline probe cap Nmax (1..FelNMax)
+  logic [tu_formats_pkg::TexFmtW-1:0] tfmt;  // colour texture: storage format (TexFmt* codes, tu_texel_decode)
+  logic tsrgb;  // colour texture: sRGB colour channels (decoded to linear by tu_texel_decode)
 } tu_material_t;
 // material relief fields
 typedef struct packed {

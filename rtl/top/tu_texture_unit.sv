@@ -65,6 +65,11 @@ module tu_texture_unit #(
   // port and texk_* for banks 1..3) and its set-up units (EwaSetups: 1, or 2 .. 4 with 4 lanes)
   parameter int EwaLanes  = 1,
   parameter int EwaSetups = 1,
+  // texel decode (tu_texel_decode): the storage formats kept (bit = TexFmt* code), the sRGB
+  // tables, and the texel port's width (the widest stored format kept)
+  parameter logic [6:0] TexFormats = tu_unit_cfg_pkg::TexFormats,
+  parameter int HasSrgb   = {31'b0, tu_unit_cfg_pkg::HasSrgb},
+  parameter int TexelW    = tu_unit_cfg_pkg::TexelW,
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -104,6 +109,8 @@ module tu_texture_unit #(
   input  logic [3:0]                            tlw_i,
   input  logic [3:0]                            tlh_i,
   input  logic [2*tu_formats_pkg::WrapW-1:0]     twrap_i,  // {v, u} Wrap* codes
+  input  logic [tu_formats_pkg::TexFmtW-1:0]    tfmt_i,   // storage format (TexFmt* codes)
+  input  logic                                  tsrgb_i,  // sRGB colour channels
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   input  logic [tu_formats_pkg::EngineW-1:0]    filt_i,  // material filter: Eng* codes
@@ -148,15 +155,15 @@ module tu_texture_unit #(
   input  logic                                  shade_valid_i,
   output logic                                  shade_ready_o,
   input  logic [tu_formats_pkg::ShadeWordW-1:0] shade_i,
-  // texel port (1-cycle read latency)
+  // texel port (1-cycle read latency; a stored word, decoded by tu_texel_decode)
   output logic                                  tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   tex_addr_o,
-  input  logic [31:0]                           tex_data_i,
-  // EWA bank ports 1..3 (EwaLanes = 4; 1-cycle read latency; EwaLanes = 1: unused, req 0); the
-  // texel port is bank 0 then
+  input  logic [TexelW-1:0]                     tex_data_i,
+  // EWA bank ports 1..3 (EwaLanes = 4; 1-cycle read latency; stored words as the texel port's;
+  // EwaLanes = 1: unused, req 0); the texel port is bank 0 then
   output logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)-1:0]                         texk_req_o,
   output logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)*tu_formats_pkg::TexAddrW-1:0] texk_addr_o,
-  input  logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)*32-1:0]                      texk_data_i,
+  input  logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)*TexelW-1:0]                  texk_data_i,
   // pixel output
   output logic                                  out_valid_o,
   input  logic                                  out_ready_i,
@@ -220,6 +227,8 @@ module tu_texture_unit #(
     in_mat.cap     = cap_i;
     in_mat.filt    = filt_i;
     in_mat.clip    = clip_i;
+    in_mat.tfmt    = tfmt_i;
+    in_mat.tsrgb   = tsrgb_i;
     in_rel.rel     = rel_i;
     in_rel.radapt  = radapt_i;
     in_rel.riter   = riter_i;
@@ -469,6 +478,11 @@ module tu_texture_unit #(
   // (the FIFO never throttles it)
   localparam int OsDepth = EwaLanes > 1 ? 16 : HasFeline != 0 ? 4 : 2;
   localparam int IfW = $clog2(OsDepth + 1);
+  // The texture's storage format (FkW: TexFmt code, sRGB) of the pixels in flight (fk_q): a pixel
+  // of another format waits until they have left, as at an engine switch (ewa::stream_cycles
+  // counts the drain), so every texel word the engines read decodes with fk_q, whatever engine
+  // and however many pixels it holds.
+  localparam int FkW = tu_formats_pkg::TexFmtW + 1;
   // the filtered pixel before the shading stage
   logic          p_valid, p_ready;
   logic [XW-1:0] p_x, p_y;
@@ -507,7 +521,7 @@ module tu_texture_unit #(
   logic f_noise, nz_busy, nz_in_ready, nz_valid;
   logic [31:0]   nz_rgba;
   assign f_noise   = HasNoise != 0 && f_pix.proc.on;
-  assign can_go    = (inflight_q == '0 || cur_q == sel) && !nz_busy;
+  assign can_go    = (inflight_q == '0 || (cur_q == sel && fk_q == f_fk)) && !nz_busy;
   logic [4:0]    in_ready_of, valid_of, req_of;  // indexed by engine
   logic [AW-1:0] cur_addr;
   logic [31:0]   cur_rgba;
@@ -539,6 +553,28 @@ module tu_texture_unit #(
   assign fire_out    = flt_valid && os_valid && p_ready;
   logic [OsW-1:0] nz_side;
   assign {p_x, p_y, p_pflags, p_eflags, p_rr} = nz_busy ? nz_side : os_data;
+  // Texel decode: the stored words of the pixels in flight's texture (fk_q) to RGBA8, one decoder
+  // per texel port (the K = 4 EWA's bank ports too).
+  logic [FkW-1:0] f_fk, fk_q;
+  assign f_fk = {f_mat.tfmt, f_mat.tsrgb};
+  localparam int KP = EwaLanes > 1 ? EwaLanes - 1 : 1;
+  logic [31:0]    tex_rgba;
+  logic [KP*32-1:0] texk_rgba;
+  tu_texel_decode #(.TexelW(TexelW), .Formats(TexFormats), .HasSrgb(HasSrgb)) u_decode (
+    .word_i(tex_data_i), .fmt_i(fk_q[FkW-1:1]), .srgb_i(fk_q[0]), .rgba_o(tex_rgba)
+  );
+  if (EwaLanes > 1) begin : g_bank_decode
+    for (genvar k = 0; k < KP; k++) begin : g_port
+      tu_texel_decode #(.TexelW(TexelW), .Formats(TexFormats), .HasSrgb(HasSrgb)) u_decode (
+        .word_i(texk_data_i[k*TexelW +: TexelW]), .fmt_i(fk_q[FkW-1:1]), .srgb_i(fk_q[0]),
+        .rgba_o(texk_rgba[k*32 +: 32])
+      );
+    end
+  end else begin : g_no_bank_decode
+    assign texk_rgba = '0;
+    logic unused_texk_data;
+    assign unused_texk_data = ^texk_data_i;
+  end
   assign p_rgba      = nz_busy ? nz_rgba : cur_rgba;
   // Only the engine with pixels in flight reads texels.
   assign tex_req_o   = req_of[cur_q];
@@ -547,9 +583,11 @@ module tu_texture_unit #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       cur_q      <= EngFirst;
+      fk_q       <= '0;
       inflight_q <= '0;
     end else begin
       if (fire_flt) cur_q <= sel;
+      if (fire_flt) fk_q <= f_fk;
       inflight_q <= inflight_q + IfW'(fire_flt) - IfW'(fire_out);
     end
   end
@@ -574,15 +612,15 @@ module tu_texture_unit #(
     assign pe_req  = ewa_req_v[0];
     assign pe_addr = ewa_addr_v[AW-1:0];
     if (EwaLanes > 1) begin : g_banks
-      assign ewa_data_v  = {texk_data_i, tex_data_i};
+      assign ewa_data_v  = {texk_rgba, tex_rgba};
       assign texk_req_o  = ewa_req_v[EwaLanes-1:1];
       assign texk_addr_o = ewa_addr_v[EwaLanes*AW-1:AW];
     end else begin : g_one_port
-      assign ewa_data_v  = tex_data_i;
+      assign ewa_data_v  = tex_rgba;
       assign texk_req_o  = '0;
       assign texk_addr_o = '0;
       logic unused_texk;
-      assign unused_texk = ^texk_data_i;
+      assign unused_texk = ^texk_rgba;
     end
     assign f_afv = HasAfvis != 0 && f_afv_side[AfvW-1];
     assign ewa_in_ready = (f_afv ? av_in_ready : pe_in_ready) && (inflight_q == '0 || afv_cur_q == f_afv);
@@ -617,7 +655,7 @@ module tu_texture_unit #(
         .wrap_i({f_mat.twrapv, f_mat.twrapu}), .wsrc_i(f_mat.wsrc), .cap_i(f_mat.cap),
         .vx_i(a_vx), .vy_i(a_vy), .vz_i(a_vz), .scale_i(a_s), .hbase_i(a_hbase), .hlw_i(a_hlw), .hlh_i(a_hlh),
         .dmin_i(a_dmin), .bias_i(a_bias), .rule_i(a_rule),
-        .tex_req_o(av_req), .tex_addr_o(av_addr), .tex_data_i,
+        .tex_req_o(av_req), .tex_addr_o(av_addr), .tex_data_i(tex_rgba),
         .d_req_o(a_req_o), .d_addr_o(a_addr_o), .d_data_i(a_data_i),
         .out_valid_o(av_valid), .out_ready_i(p_ready && os_valid && cur_q == EngEwa && afv_cur_q),
         .rgba_o(av_rgba), .level_o(av_level), .visited_o(av_visited), .inside_o(av_inside),
@@ -656,13 +694,13 @@ module tu_texture_unit #(
     assign a_addr_o     = '0;
     logic unused_ewa;
     assign unused_ewa = ^{f_ae, f_ce, f_be, f_lmaj, f_lmin, f_lod, f_mat.wsrc, f_mat.cap, f_mat.clip, a_data_i, f_afv_side,
-                          texk_data_i};
+                          texk_rgba};
   end
   if (HasBilinear != 0) begin : g_bilinear
     tu_bilinear u_bil (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngBil), .in_ready_o(bil_in_ready),
       .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .level_i(f_mat.tlbase), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
-      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i,
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(bil_req), .tex_addr_o(bil_addr), .tex_data_i(tex_rgba),
       .out_valid_o(bil_valid), .out_ready_i(p_ready && os_valid && cur_q == EngBil), .rgba_o(bil_rgba)
     );
   end else begin : g_no_bilinear
@@ -678,7 +716,7 @@ module tu_texture_unit #(
     tu_trilinear u_tri (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngTri), .in_ready_o(tri_in_ready),
       .u_i(f_u), .v_i(f_v), .lod_i(f_tlod), .guard_i(f_guard), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
-      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(tri_req), .tex_addr_o(tri_addr), .tex_data_i,
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(tri_req), .tex_addr_o(tri_addr), .tex_data_i(tex_rgba),
       .out_valid_o(tri_valid), .out_ready_i(p_ready && os_valid && cur_q == EngTri), .rgba_o(tri_rgba),
       .level_o(tri_level)
     );
@@ -696,7 +734,7 @@ module tu_texture_unit #(
     tu_nearest u_nst (
       .clk_i, .rst_ni, .in_valid_i(eng_in_valid && sel == EngNst), .in_ready_o(nst_in_ready),
       .u_i(f_u), .v_i(f_v), .guard_i(f_guard), .level_i(f_mat.tlbase), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
-      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(nst_req), .tex_addr_o(nst_addr), .tex_data_i,
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(nst_req), .tex_addr_o(nst_addr), .tex_data_i(tex_rgba),
       .out_valid_o(nst_valid), .out_ready_i(p_ready && os_valid && cur_q == EngNst), .rgba_o(nst_rgba)
     );
   end else begin : g_no_nearest
@@ -719,7 +757,7 @@ module tu_texture_unit #(
       .lrho_i(f_lrho), .eflags_i(f_eflags), .guard_i(f_guard), .nmax_i(f_mat.fnmax),
       .bias_i(f_mat.lbias), .minlod_i(f_mat.lminlod), .maxlod_i(f_mat.lmaxlod), .lbase_i(f_mat.tlbase),
       .ltop_i(f_mat.ltop), .base_i(f_mat.tbase), .lw_i(f_mat.tlw), .lh_i(f_mat.tlh),
-      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(fel_req), .tex_addr_o(fel_addr), .tex_data_i,
+      .wrap_i({f_mat.twrapv, f_mat.twrapu}), .tex_req_o(fel_req), .tex_addr_o(fel_addr), .tex_data_i(tex_rgba),
       .out_valid_o(fel_valid), .out_ready_i(p_ready && os_valid && cur_q == EngFel),
       .rgba_o(fel_rgba), .level_o(fel_level), .texels_o(fel_texels), .probes_o(fel_probes),
       .flags_o(fel_flags_unused)
@@ -811,7 +849,7 @@ module tu_texture_unit #(
   // one 1,300-bit value under --assert.
   `TU_ASSERT_HANDSHAKE(InHandshakeB1, in_valid_i, in_ready_o, {a_i, b_i, c_i, d_i, e_i, f_i, g_i, h_i, i_i, x0_i, x1_i, y_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeB2, in_valid_i, in_ready_o, {kux_i, kvx_i, kuy_i, kvy_i, m_i, nn_i})
-  `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, twrap_i,
+  `TU_ASSERT_HANDSHAKE(InHandshakeMat, in_valid_i, in_ready_o, {dm_i, dexp_i, laniso_i, maxlod_i, tbase_i, tlw_i, tlh_i, twrap_i, tfmt_i, tsrgb_i,
                                                                  wsrc_i, cap_i, filt_i, fnmax_i, clip_i, rel_i, radapt_i, riter_i, rlayers_i, rscale_i, hbase_i,
                                                                  hlw_i, hlh_i, rdm_i, dlayers_i, dbase_i, afv_i, admin_i, abias_i, arule_i})
   `TU_ASSERT_HANDSHAKE(InHandshakeProc, in_valid_i, in_ready_o, {proc_i})

@@ -24,6 +24,9 @@ module tu_texture_unit_sim #(
   parameter int HasAfvis      = {31'b0, tu_unit_cfg_pkg::HasAfvis},
   parameter int EwaLanes      = 1,  // tu_texture_unit EwaLanes / EwaSetups (4 / 2 .. 4: the texel RAM has 4 ports)
   parameter int EwaSetups     = 1,
+  parameter logic [6:0] TexFormats = tu_unit_cfg_pkg::TexFormats,
+  parameter int HasSrgb       = {31'b0, tu_unit_cfg_pkg::HasSrgb},
+  parameter int TexelW        = tu_unit_cfg_pkg::TexelW,  // the texel RAM's word (stored texel)
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words,
   // the depth RAM also holds the distance maps (the default scene's wall: 1,114,112 words)
   parameter int DepthWords = 2 * Words
@@ -68,6 +71,8 @@ module tu_texture_unit_sim #(
   input  logic [3:0]                            tlw_i,
   input  logic [3:0]                            tlh_i,
   input  logic [2*tu_formats_pkg::WrapW-1:0]     twrap_i,
+  input  logic [tu_formats_pkg::TexFmtW-1:0]    tfmt_i,
+  input  logic                                  tsrgb_i,
   input  logic [1:0]                            wsrc_i,
   input  logic [tu_formats_pkg::EwaCountW-1:0]  cap_i,
   input  logic [tu_formats_pkg::EngineW-1:0]    filt_i,
@@ -108,10 +113,10 @@ module tu_texture_unit_sim #(
   localparam int KP = EwaLanes > 1 ? EwaLanes - 1 : 1;  // bank ports 1..3
   logic                                   tex_req;
   logic [tu_formats_pkg::TexAddrW-1:0]    tex_addr;
-  logic [31:0]                            tex_data;
+  logic [TexelW-1:0]                      tex_data;
   logic [KP-1:0]                          texk_req;
   logic [KP*tu_formats_pkg::TexAddrW-1:0] texk_addr;
-  logic [KP*32-1:0]                       texk_data;
+  logic [KP*TexelW-1:0]                   texk_data;
   localparam int VzW = tu_formats_pkg::PomVzW;
   logic                                view_valid, view_ready, d_req;
   logic [63:0]                         view;
@@ -128,12 +133,13 @@ module tu_texture_unit_sim #(
                     .EllRecurrence(EllRecurrence),
                     .HasEwaClip(HasEwaClip), .EwaClipVariant(EwaClipVariant),
                     .HasNoise(HasNoise), .NoiseDims(NoiseDims), .NoiseCores(NoiseCores), .HasWater(HasWater),
-                    .NoiseScheme(NoiseScheme), .HasAfvis(HasAfvis), .EwaLanes(EwaLanes), .EwaSetups(EwaSetups)) u_tu (
+                    .NoiseScheme(NoiseScheme), .HasAfvis(HasAfvis), .EwaLanes(EwaLanes), .EwaSetups(EwaSetups),
+                    .TexFormats(TexFormats), .HasSrgb(HasSrgb), .TexelW(TexelW)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
     .kuy_i, .kvy_i, .m_i, .nn_i, .dm_i, .dexp_i, .laniso_i, .maxlod_i, .lbias_i, .lminlod_i, .lmaxlod_i, .lbase_i, .ltop_i,
-    .tbase_i, .tlw_i, .tlh_i, .twrap_i, .wsrc_i, .cap_i, .filt_i, .fnmax_i, .clip_i,
+    .tbase_i, .tlw_i, .tlh_i, .twrap_i, .tfmt_i, .tsrgb_i, .wsrc_i, .cap_i, .filt_i, .fnmax_i, .clip_i,
     .rel_i, .radapt_i, .riter_i, .rlayers_i, .rscale_i, .hbase_i, .hlw_i, .hlh_i, .rdm_i, .dlayers_i, .dbase_i,
     .afv_i, .admin_i, .abias_i, .arule_i, .proc_i,
     .view_valid_i(view_valid), .view_ready_o(view_ready), .view_ok_i(view[3 * VzW + tu_formats_pkg::PomCW]),
@@ -149,14 +155,14 @@ module tu_texture_unit_sim #(
     .texk_req_o(texk_req), .texk_addr_o(texk_addr), .texk_data_i(texk_data)
   );
   if (EwaLanes > 1) begin : g_banked_ram
-    tu_texel_ram #(.Words(Words), .Ports(EwaLanes)) u_ram (
+    tu_texel_ram #(.Words(Words), .Ports(EwaLanes), .DataW(TexelW)) u_ram (
       .clk_i, .rd_en_i({texk_req, tex_req}), .rd_addr_i({texk_addr, tex_addr}), .rd_data_o({texk_data, tex_data}),
-      .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
+      .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i[TexelW-1:0])
     );
   end else begin : g_ram
-    tu_texel_ram #(.Words(Words)) u_ram (
+    tu_texel_ram #(.Words(Words), .DataW(TexelW)) u_ram (
       .clk_i, .rd_en_i(tex_req), .rd_addr_i(tex_addr), .rd_data_o(tex_data),
-      .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i)
+      .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i[TexelW-1:0])
     );
     assign texk_data = '0;
     logic unused_texk;

@@ -27,13 +27,16 @@ RtlBlock rtl_feline();      // feline_rtl.cpp
 RtlBlock rtl_afvis();       // afvis_rtl.cpp
 RtlBlock rtl_objspace_sample();  // objspace_rtl.cpp
 RtlBlock rtl_texel_addr();  // texel_addr_rtl.cpp
+RtlBlock rtl_texel_decode();  // texel_decode_rtl.cpp
+RtlBlock rtl_bc1_decode();  // bc1_decode_rtl.cpp
 std::vector<RtlBlock> rtl_brdf();  // brdf_rtl.cpp
 std::vector<RtlBlock> rtl_perlin();  // perlin_rtl.cpp (incl. the octave-serial variants)
 
 const RtlBlock& find_rtl(const std::string& name) {
   static const std::vector<RtlBlock> rtl = {rtl_reciprocal(), rtl_persp(), rtl_persp_k4(), rtl_persp_setup(), rtl_texel_depth(), rtl_pom_layers(),
                                             rtl_pom_march(), rtl_iter_parallax(), rtl_ellipse(), rtl_ellipse_rec(), rtl_ewa(), rtl_ewa_k4(), rtl_feline(),
-                                            rtl_ewa_border(), rtl_afvis(), rtl_objspace_sample(), rtl_texel_addr()};
+                                            rtl_ewa_border(), rtl_afvis(), rtl_objspace_sample(), rtl_texel_addr(),
+                                            rtl_texel_decode(), rtl_bc1_decode()};
   for (const auto& r : rtl)
     if (r.name == name) return r;
   static const std::vector<RtlBlock> gauss = rtl_gauss();

@@ -34,5 +34,5 @@ INSTANTIATE_TEST_SUITE_P(Blocks, Cosim, ::testing::Values("reciprocal", "clip_p1
                                            "gauss_weight", "weight_table_1d", "weight_table_2d", "persp", "persp_k4", "persp_setup", "texel_depth",
                                            "pom_layers", "ellipse", "ellipse_rec", "brdf_blinn", "brdf_schlick", "brdf_msh",
                                            "brdf_msh_seq", "brdf_dsh", "brdf_scos2", "brdf_st16", "brdf_qr",
-                                           "ewa_border", "objspace_sample", "texel_addr"));
+                                           "ewa_border", "objspace_sample", "texel_addr", "texel_decode", "bc1_decode"));
 }  // namespace

@@ -20,6 +20,7 @@ inline img::Rgba8 unpack_rgba(uint32_t w) {
   return {uint8_t(w), uint8_t(w >> 8), uint8_t(w >> 16), uint8_t(w >> 24)};
 }
 inline std::vector<uint32_t> texture_words(const tex::Texture& t) {
+  if (!t.words.empty()) return t.words;  // a stored format: its packed words (tu_texel_decode)
   std::vector<uint32_t> w = {pack_rgba(t.addressing.border)};  // at base - 1 (tex::texel_addr)
   for (const auto& lv : t.levels)
     for (const auto& p : lv.px) w.push_back(pack_rgba(p));

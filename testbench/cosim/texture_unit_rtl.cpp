@@ -23,6 +23,7 @@
 #include "noise/noise_proc.hpp"
 #include "pom/relief.hpp"
 #include "texel_ram.hpp"
+#include "texture/texel_format.hpp"
 #include "texture/trilinear_lod.hpp"
 
 namespace tu::cosim {
@@ -41,7 +42,7 @@ uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ul
 enum : size_t {
   kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kWrap,
   kWsrc, kCap, kFilt, kClip, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
-  kRdm, kDlayers, kDbase, kLbase, kLtop, kFnmax, kAfv, kAdmin, kAbias, kArule,
+  kRdm, kDlayers, kDbase, kLbase, kLtop, kFnmax, kAfv, kAdmin, kAbias, kArule, kTfmt, kTsrgb,
   kProc, kProcWords = (schema::kProcW + 63) / 64, kRowSize = kProc + kProcWords  // tu_proc_t, least significant first
 };
 
@@ -107,6 +108,8 @@ void drive(V& d, const Row& r) {
   d.tlw_i = static_cast<uint8_t>(r[kLw]);
   d.tlh_i = static_cast<uint8_t>(r[kLh]);
   d.twrap_i = static_cast<uint8_t>(r[kWrap]);
+  d.tfmt_i = static_cast<uint8_t>(r[kTfmt]);
+  d.tsrgb_i = static_cast<uint8_t>(r[kTsrgb]);
   d.wsrc_i = static_cast<uint8_t>(r[kWsrc]);
   d.cap_i = static_cast<uint32_t>(r[kCap]);
   d.filt_i = static_cast<uint8_t>(r[kFilt]);
@@ -164,12 +167,17 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       throw std::invalid_argument(s.source + ": /materials/" + name +
                                   "/relief/method: the corridor unit's relief stage has the iterative engine only");
   }
-  // Stored formats other than rgba8 need the texel decode stage the RTL does not have yet.
+  // Stored formats: the texel RAM holds each texture's packed words, tu_texel_decode expands them
+  // (the corridor unit's plan keeps rgba8 only; the other units every format).
   for (const auto& [name, t] : s.textures)
+    if (t.format == static_cast<int>(tex::TexelFormat::Bc1))
+      throw std::invalid_argument(s.source + ": /textures/" + name +
+                                  "/format: bc1, but the RTL unit has no BC1 block fetch yet (tu_bc1_decode is co-simulated "
+                                  "on its own, docs/blocks/texture.md); render it with --engine cmodel or ref");
+  for (const auto& [name, t] : o.corridor_unit ? s.textures : decltype(s.textures){})
     if (t.format != 0 || t.srgb)
       throw std::invalid_argument(s.source + ": /textures/" + name + (t.srgb ? "/srgb" : "/format") +
-                                  ": the RTL unit reads rgba8 texels only (no texel decode stage yet); render it "
-                                  "with --engine cmodel or ref");
+                                  ": the corridor unit decodes rgba8 texels only (its plan's TexFormats)");
   if (o.relief && !o.has_ewa)
     throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
   // The noise unit (HasNoise, with HasWater) is in the full unit: fbm, smoke and water.
@@ -318,6 +326,8 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       r[kLw] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].width));
       r[kLh] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].height));
       r[kWrap] = wrap_code(ob.tex.addressing);
+      r[kTfmt] = static_cast<uint64_t>(ob.tex.format);
+      r[kTsrgb] = ob.tex.srgb;
       r[kWsrc] = static_cast<uint64_t>(o.weights.value_or(m.weights));
       r[kCap] = ewa::kDefaultMaxTexels;
       const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(c.object)].material);
@@ -378,6 +388,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         pc.guard = guard;
         pc.clip = r[kClip] != 0;
         pc.noise = ob.proc.has_value();
+        pc.texfmt = ob.tex.format * 2 + (ob.tex.srgb ? 1 : 0);  // a format change drains (fk_q)
         pc.water = ob.proc && ob.proc->water;
         // Trilinear: one bilinear pass for a guard pixel or a lod (GL rule) at the top level.
         const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;

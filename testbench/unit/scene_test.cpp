@@ -126,9 +126,22 @@ TEST(Scene, TextureFormatAndSrgb) {
     EXPECT_EQ(q.b, lin[d.b]);
     EXPECT_EQ(q.a, 255);
   }
-  EXPECT_EQ(error_of(edited(from, from + ", \"format\": \"bc1\"")),
-            "s.json: /textures/checker/format: 'bc1' is not one of: rgba8, rgb565, rgba5551, rgba4444, l8, la8, a8");
+  EXPECT_EQ(error_of(edited(from, from + ", \"format\": \"bc7\"")),
+            "s.json: /textures/checker/format: 'bc7' is not one of: rgba8, rgb565, rgba5551, rgba4444, l8, la8, a8, bc1");
   EXPECT_EQ(error_of(edited(from, from + ", \"srgb\": 1")), "s.json: /textures/checker/srgb: expected true or false");
+}
+
+// Mip generation per texture: "mip_filter" (default box), box | box_linear | lanczos2.
+TEST(Scene, TextureMipFilter) {
+  EXPECT_EQ(default_scene().textures.at("checker").mip_filter, 0);
+  const std::string from = "\"checker\": {\"builtin\": \"checkerboard\", \"size\": 256, \"cells\": 8, \"wrap\": \"repeat\"";
+  const Scene s = parse(edited(from, from + ", \"mip_filter\": \"lanczos2\""), "s.json", ".");
+  EXPECT_EQ(s.textures.at("checker").mip_filter, static_cast<int>(tu::tex::MipFilter::Lanczos2));
+  const auto t = build_texture(s, "checker"), plain = build_texture(default_scene(), "checker");
+  EXPECT_EQ(t.levels[0].px, plain.levels[0].px);
+  EXPECT_NE(t.levels[4].px, plain.levels[4].px);  // 16 x 16: the 8-texel cells seen through 8 x 8 taps
+  EXPECT_EQ(error_of(edited(from, from + ", \"mip_filter\": \"kaiser\"")),
+            "s.json: /textures/checker/mip_filter: 'kaiser' is not one of: box, box_linear, lanczos2");
 }
 
 // The B2 variant: "footprint" (default analytic), one of analytic | recurrence.

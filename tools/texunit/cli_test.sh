@@ -38,7 +38,7 @@ case $case in
     mkdir -p "$tmp/r/scripts"; cp -r rtl "$tmp/r/"; cp scripts/yosys_area.sh scripts/stdcell_flow.sh "$tmp/r/scripts/"
     key() { "$tu" rtl-files "$1" --root "$tmp/r" --key "$2"; }
     k_rec=$(key tu_reciprocal yosys); k_top=$(key tu_texture_unit stdcell); pkg="$tmp/r/rtl/0_pkg/tu_formats_pkg.sv"
-    sed -i 's/^endpackage/  localparam int OtherBlockW = 7;\n  typedef enum logic [1:0] {\n    OtherA = 2'"'"'d0,\n    OtherB = 2'"'"'d1\n  } other_e;\nendpackage/' "$pkg"
+    sed -i 's/^endpackage/  \/\/ another block'"'"'s width and codes\n  localparam int OtherBlockW = 7;\n  typedef enum logic [1:0] {\n    OtherA = 2'"'"'d0,\n    OtherB = 2'"'"'d1\n  } other_e;\nendpackage/' "$pkg"
     grep -q "other_e;" "$pkg" || fail "test edit of the package"
     [ "$(key tu_reciprocal yosys)" = "$k_rec" ] || fail "an unused constant or enum changed tu_reciprocal's key"
     [ "$(key tu_texture_unit stdcell)" = "$k_top" ] || fail "an unused constant or enum changed tu_texture_unit's key"
@@ -133,7 +133,8 @@ module tu_cfg_user (
   assign wsrc_o = tu_unit_cfg_pkg::WeightSources;
   assign sizes_o = tu_unit_cfg_pkg::PomMaxLayers + tu_unit_cfg_pkg::WtabLog2N + tu_unit_cfg_pkg::Wtab2dLog2N +
                    tu_unit_cfg_pkg::PerspLanes + tu_unit_cfg_pkg::ShadeModel + tu_unit_cfg_pkg::EwaClipVariant +
-                   tu_unit_cfg_pkg::NoiseDims + tu_unit_cfg_pkg::NoiseCores + tu_unit_cfg_pkg::NoiseScheme;
+                   tu_unit_cfg_pkg::NoiseDims + tu_unit_cfg_pkg::NoiseCores + tu_unit_cfg_pkg::NoiseScheme +
+                   32'(tu_unit_cfg_pkg::TexFormats) + 32'(tu_unit_cfg_pkg::HasSrgb) + tu_unit_cfg_pkg::TexelW;
 endmodule
 SV
     verilator --lint-only -Wall "$tmp/tu_unit_cfg_pkg.sv" "$tmp/tu_cfg_user.sv" || fail "package does not lint"

@@ -1,5 +1,6 @@
 // `texunit plan`: see plan.hpp and docs/reading-the-report.md.
 #include "plan.hpp"
+#include "plan_formats.hpp"
 #include "plan_pipeline.hpp"
 
 #include "output.hpp"
@@ -24,6 +25,7 @@
 #include "brdf/brdf_shade.hpp"
 #include "ewa/ewa_cycles.hpp"
 #include "pom/relief.hpp"
+#include "texture/texel_format.hpp"
 #include "texunit/shading.hpp"
 #include "texunit/render.hpp"
 #include "texunit/texture_unit_model.hpp"
@@ -365,6 +367,9 @@ struct Config {
   int noise_scheme = 0;  // 0 pipelined, 1 octave-serial (tu_noise_unit Serial)
   bool feline = false;  // Feline probe engine (tu_feline)
   bool afvis = true;  // AF with parallax visibility (tu_afvis beside tu_ewa)
+  int tex_formats = 127;  // tu_texel_decode: bit = TexelFormat code, the formats some texture uses
+  bool srgb = true;       // the sRGB decode tables
+  int texel_w = 32;       // texel port / RAM word: the widest stored format's bits per texel
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -403,6 +408,10 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam bit HasWater = 1'b" << c.water << ";  // water back-end of the noise unit (normal, Lambert)\n"
      << "  localparam int NoiseScheme = " << c.noise_scheme << ";  // 0 pipelined (NoiseCores cores), 1 octave-serial (one core)\n"
      << "  localparam bit HasAfvis = 1'b" << c.afvis << ";  // AF with parallax visibility (tu_afvis)\n"
+     << "  // texel decode (tu_texel_decode): bit = tu_formats_pkg::TexFmt* code, 1 = its decode is built\n"
+     << "  localparam logic [6:0] TexFormats = 7'd" << c.tex_formats << ";\n"
+     << "  localparam bit HasSrgb = 1'b" << c.srgb << ";  // sRGB decode tables (tu_srgb_rom)\n"
+     << "  localparam int TexelW = " << c.texel_w << ";  // texel port and RAM word: the widest stored format\n"
      << "endpackage\n";
   return sv.str();
 }
@@ -468,9 +477,12 @@ uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::F
   const render::Frame fr = render::render_cmodel(t, std::nullopt, o);
   if (covered) *covered = fr.pixels.size();
   const auto wl = sysmodel::scene_workload(t, fr);
-  std::vector<int> top_level;  // per object: its texture's top mip level
-  for (const auto& ob : t.objects)
-    top_level.push_back(scene::build_texture(t, t.materials.at(ob.material).texture).num_levels() - 1);
+  std::vector<int> top_level, texfmt;  // per object: its texture's top mip level and storage format
+  for (const auto& ob : t.objects) {
+    const auto tx = scene::build_texture(t, t.materials.at(ob.material).texture);
+    top_level.push_back(tx.num_levels() - 1);
+    texfmt.push_back(tx.format * 2 + (tx.srgb ? 1 : 0));
+  }
   std::vector<ewa::PixelCost> costs;
   for (size_t i = 0; i < wl.pixels.size(); ++i) {
     const auto& w = wl.pixels[i];
@@ -490,6 +502,7 @@ uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::F
       c.one_level = ewa::trilinear_one_level(c.guard, static_cast<int>(std::floor(rec.lod)), top_level[obj]);
     }
     c.blocks = static_cast<uint64_t>(rec.ewa_blocks);  // the K = 4 walk's clocks (engine.lanes 4)
+    c.texfmt = texfmt[obj];  // a format change drains the engines (tu_texture_unit fk_q)
     c.noise = obj < noise_objects.size() && noise_objects[obj];
     c.water = obj < water_objects.size() && water_objects[obj];
     costs.push_back(c);
@@ -680,6 +693,19 @@ int run(const Options& opt) {
           (f == "bilinear" ? bil : f == "feline" ? feline_frames.at(mat) : *tri).image.at(p.x, p.y);
   }
   const double filter_psnr = render::psnr_covered(planned_frame, ewa);
+  // texels read by the material's filter (texel bandwidth): as render_ref counts them; Feline its
+  // frame's (8 per probe)
+  for (size_t i = 0; i < planned_frame.pixels.size(); ++i) {
+    auto& p = planned_frame.pixels[i];
+    const std::string& mat = s.objects[static_cast<size_t>(p.object)].material;
+    const std::string& f = mat_filter.at(mat);
+    if (f == "feline") {
+      const auto& fp = feline_frames.at(mat).pixels;
+      if (i < fp.size() && fp[i].x == p.x && fp[i].y == p.y) p.texels = fp[i].texels;
+    } else if (f != "ewa") {
+      p.texels = f == "bilinear" ? 4 : 8;
+    }
+  }
   const render::Frame* chosen_frame = filter == "ewa"         ? &ewa
                                       : filter == "feline"    ? &feline_frames.begin()->second
                                       : filter == "trilinear" ? &*tri
@@ -887,6 +913,22 @@ int run(const Options& opt) {
   }
   for (int k = 0; k < 5; ++k)
     if (planned_shaded.wrap_modes >> k & 1) wrap_names.push_back(scene::kWrapNames[k]);
+  // Texel formats (tu_texel_decode): the formats and sRGB of the textures objects sample (rgba8,
+  // the decode's default path, always); the port as wide as the widest of them.
+  planned_shaded.tex_formats = 1;
+  planned_shaded.srgb = false;
+  planned_shaded.texel_w = 0;
+  std::vector<std::string> format_names;
+  for (const auto& o : s.objects) {
+    const auto& t = s.textures.at(s.materials.at(o.material).texture);
+    if (t.format == static_cast<int>(tex::TexelFormat::Bc1)) continue;  // no BC1 block fetch in the unit yet
+    planned_shaded.tex_formats |= 1 << t.format;
+    planned_shaded.srgb = planned_shaded.srgb || t.srgb;
+    planned_shaded.texel_w = std::max(planned_shaded.texel_w, tex::bits_per_texel(static_cast<tex::TexelFormat>(t.format)));
+  }
+  if (planned_shaded.texel_w == 0) planned_shaded.texel_w = 32;
+  for (int k = 0; k < static_cast<int>(std::size(tex::kTexelFormatNames)); ++k)
+    if (planned_shaded.tex_formats >> k & 1) format_names.push_back(tex::kTexelFormatNames[k]);
   planned_shaded.noise = noise.on;
   if (noise.on) planned_shaded.noise_dims = noise.dims, planned_shaded.noise_cores = noise.cores;
   planned_shaded.water = noise.water;
@@ -960,6 +1002,9 @@ int run(const Options& opt) {
               {"shading", shade ? json({{"model", brdf_row->name()}, {"why", shade_why}, {"latency_cycles", brdf_row->latency}})
                                 : json(false)},
               {"wrap_modes", wrap_names},
+              {"texel_formats", {{"formats", format_names}, {"srgb", planned_shaded.srgb},
+                                 {"texel_port_bits", planned_shaded.texel_w}}},
+              {"texture_formats", plan::texel_format_plan(s, planned_frame, s.budget.min_psnr_db)},
               {"noise", noise.on ? json({{"materials", noise.materials}, {"dims", noise.dims}, {"octave_cores", noise.cores},
                                          {"scheme", scheme_json},
                                          {"latency_cycles", tu::fmt::kNoiseUnitLatency},
@@ -1041,6 +1086,11 @@ int run(const Options& opt) {
   std::string wraps;
   for (const auto& w : wrap_names) wraps += (wraps.empty() ? "" : ", ") + w;
   std::printf("wrap modes: %s (the texel addressing leaves out the others)\n", wraps.c_str());
+  for (const auto& [name, t] : out["texture_formats"].items())  // plan_formats.hpp
+    std::printf("texture %s: %s (authored %s), %.2f texels/pixel: saves %.0f bits of memory, %.2f bits/pixel of "
+                "bandwidth\n", name.c_str(), t["picked"].get<std::string>().c_str(), t["authored"].get<std::string>().c_str(),
+                t["texels_per_pixel"].get<double>(), t["memory_bits_saved"].get<double>(),
+                t["bandwidth_bits_per_pixel_saved"].get<double>());
   std::printf("persp: %s, max %.4g texel\n", persp->name().c_str(), persp->max_abs);
   std::printf("shading: %s\n", shade ? (brdf_row->name() + ", " + shade_why).c_str() : shade_why.c_str());
   if (noise.on)

@@ -74,6 +74,9 @@ CLI::App* add_render(CLI::App& app, RenderArgs& a) {
       ->check(CLI::Range(1, 100000));
   r->add_option("--dt", a.dt, "--frames: time step between frames (the procedural materials' time unit)")
       ->check(CLI::Range(-1e6, 1e6));
+  r->add_option("--mip-filter", a.mip_filter,
+                "override every texture's mip generation (box, box_linear, lanczos2; docs/blocks/texture.md)")
+      ->check(CLI::IsMember({"box", "box_linear", "lanczos2"}));
   r->add_option("--footprint", a.footprint,
                 "cmodel / rtl engines: override the scene's B2 variant (analytic tu_ellipse, or the seed's "
                 "recurrences tu_ellipse_rec; docs/blocks/ellipse.md)")
@@ -135,6 +138,9 @@ int run_render(const RenderArgs& a) {
     for (auto& [name, m] : s.materials)
       if (m.procedural) m.procedural->footprint_limit = false;
   if (!a.clip.empty()) s = scene::with_clip(std::move(s), a.clip);
+  if (!a.mip_filter.empty())
+    for (auto& [name, t] : s.textures)
+      t.mip_filter = a.mip_filter == "lanczos2" ? 2 : a.mip_filter == "box_linear" ? 1 : 0;  // tex::MipFilter
   if (!a.footprint.empty())
     s.footprint = a.footprint == "recurrence" ? scene::Footprint::Recurrence : scene::Footprint::Analytic;
   std::optional<scene::Filter> f;

@@ -10,6 +10,7 @@ struct RenderArgs {
   std::string scene, out_dir, dump, engine = "ref", filter, weights, rtl_unit = "full";
   std::string clip;  // overrides every material's EWA border weights (a clip variant or "off")
   std::string footprint;  // overrides the scene's "footprint" (B2 variant): analytic | recurrence
+  std::string mip_filter;  // overrides every texture's "mip_filter" (tex::kMipFilterNames)
   bool no_relief = false;
   int ss = 16;                      // --engine truth: samples per pixel side
   std::string truth_kernel = "box";  // --engine truth: box | gauss

@@ -175,6 +175,10 @@ std::string package_part(const std::string& pkg, const std::string& users) {
       continue;
     }
     if (lp == std::string::npos || eq == std::string::npos || eq < lp) {
+      // Comment-only lines are not design: a comment added with another block's constant or enum
+      // keeps every other top's key.
+      const auto first = line.find_first_not_of(" \t");
+      if (first == std::string::npos || line.compare(first, 2, "//") == 0) continue;
       out += line + "\n";
       continue;
     }

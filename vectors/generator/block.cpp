@@ -26,6 +26,8 @@ Block make_feline();      // feline_block.cpp
 Block make_afvis();       // afvis_block.cpp
 Block make_objspace_sample();  // objspace_block.cpp
 Block make_texel_addr();  // texel_addr_block.cpp
+Block make_texel_decode();  // texel_decode_block.cpp
+Block make_bc1_decode();  // bc1_decode_block.cpp
 std::vector<Block> make_brdf_blocks();  // brdf_block.cpp
 std::vector<Block> make_perlin_blocks();  // perlin_block.cpp
 
@@ -51,6 +53,8 @@ const std::vector<Block>& all() {
     b.push_back(make_afvis());
     b.push_back(make_objspace_sample());
     b.push_back(make_texel_addr());
+    b.push_back(make_texel_decode());
+    b.push_back(make_bc1_decode());
     for (auto& m : make_brdf_blocks()) b.push_back(std::move(m));
     for (auto& p : make_perlin_blocks()) b.push_back(std::move(p));
     return b;

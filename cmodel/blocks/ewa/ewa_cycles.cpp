@@ -47,7 +47,8 @@ int lane_walk_latency(const EngineParams& p) {
 StreamModel::Times StreamModel::add(const PixelCost& c, uint64_t avail) {
   // An engine switch waits for the other engine's last output.
   const bool afv = !c.noise && c.afv_walk > 0;
-  const bool other = last_noise_ != c.noise || (c.noise ? last_water_ != c.water : last_engine_ != c.engine || last_afv_ != afv);
+  const bool other = last_noise_ != c.noise || (c.noise ? last_water_ != c.water
+                                                          : last_engine_ != c.engine || last_afv_ != afv || last_fmt_ != c.texfmt);
   const uint64_t drained = any_ && other ? last_out_ + 1 : 0;
   const uint64_t ready = std::max(drained, avail);
   uint64_t a = 0;
@@ -62,6 +63,7 @@ StreamModel::Times StreamModel::add(const PixelCost& c, uint64_t avail) {
   }
   last_noise_ = false;
   last_afv_ = afv;
+  last_fmt_ = c.texfmt;
   if (afv) {  // tu_afvis: its own set-up and visibility walker, joined as tu_ewa's
     a = std::max(afv_setup_free_, ready);
     const uint64_t h = std::max(a + static_cast<uint64_t>(setup_cycles(c, p_)), afv_walker_free_);

@@ -89,6 +89,9 @@ struct PixelCost {
   // the engine has its own EWA set-up (setup_cycles) and takes turns with the others.
   uint64_t afv_walk = 0;
   uint64_t blocks = 1;     // EWA, lanes 4: 2 x 2 blocks of the box (ewa::fx::Out::lane_blocks)
+  // The texture's storage format (tex::Texture format * 2 + srgb): the unit decodes the texel words
+  // of all pixels in flight with one format, so a change waits like an engine switch.
+  int texfmt = 0;
 };
 
 // Per-pixel counts of the C model's result.
@@ -135,6 +138,7 @@ class StreamModel {
   uint64_t setup_free_ = 0, walker_free_ = 0, bil_free_ = 0, tri_free_ = 0, nst_free_ = 0, noise_free_ = 0, last_out_ = 0;
   uint64_t afv_setup_free_ = 0, afv_walker_free_ = 0;
   bool any_ = false, last_noise_ = false, last_water_ = false, last_afv_ = false;
+  int last_fmt_ = 0;
   Engine last_engine_ = Engine::Ewa;
   feline::EngineModel fel_;  // the Feline engine (feline/feline_cycles.hpp)
 };

@@ -68,6 +68,11 @@ struct Texture {
   std::string name;
   Addressing addressing;
   std::vector<Rgba8Image> levels;
+  // Stored format (texel_format.hpp): the texel RAM's words, the border word (base - 1) then every
+  // level, in the format's packing before decode; empty for an RGBA8 texture (words = levels).
+  int format = 0;  // schema::TexelFormat code
+  bool srgb = false;
+  std::vector<uint32_t> words;
 
   static Texture build(const std::string& name, Rgba8Image base, Addressing a);
   static Texture build(const std::string& name, Rgba8Image base, Wrap wrap) {  // both axes, black border

@@ -91,10 +91,11 @@ struct TextureSpec {
   int cells = 8;
   tex::Addressing addressing;  // fields wrap (both axes), wrap_u, wrap_v, border
   // Storage format (texture/texel_format.hpp): the image is converted on load; srgb: the colour
-  // channels are sRGB-encoded, decoded to linear before filtering. C model and float reference
-  // only until the RTL's texel decode stage exists (--engine rtl refuses them naming the field).
+  // channels are sRGB-encoded, decoded to linear before filtering (RTL: tu_texel_decode; bc1 is
+  // C model and float reference only, --engine rtl refuses it naming the field).
   int format = 0;  // tex::TexelFormat code (kTexelFormatNames)
   bool srgb = false;
+  int mip_filter = 0;  // tex::MipFilter code (kMipFilterNames)
 };
 // Scene names of the wrap modes, indexed by the tex::Wrap code.
 inline constexpr const char* kWrapNames[] = {"repeat", "mirror", "clamp", "border", "mirror_once"};

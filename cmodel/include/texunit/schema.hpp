@@ -34,6 +34,18 @@
   X(Clamp, 2, "clamp to [0, size - 1] (GL_CLAMP_TO_EDGE)")                                \
   X(Border, 3, "outside [0, size - 1]: the border colour (GL_CLAMP_TO_BORDER)")           \
   X(MirrorOnce, 4, "clamp(x < 0 ? -1 - x : x) to [0, size - 1] (GL_MIRROR_CLAMP_TO_EDGE)")
+// Texel storage format of a texture (tex::TexelFormat, the scene's `format`; tu_texel_decode fmt_i;
+// SV tu_formats_pkg::TexFmtRgba8 ...). Bit `code` of tu_unit_cfg_pkg::TexFormats keeps its decode.
+#define TU_TEXEL_FORMAT_CODES(X)                                         \
+  X(Rgba8, 0, "32 bits: A[31:24] B[23:16] G[15:8] R[7:0]")                \
+  X(Rgb565, 1, "16 bits: R[15:11] G[10:5] B[4:0], A = 255")                \
+  X(Rgba5551, 2, "16 bits: R[15:11] G[10:6] B[5:1] A[0]")                   \
+  X(Rgba4444, 3, "16 bits: R[15:12] G[11:8] B[7:4] A[3:0]")                 \
+  X(L8, 4, "8 bits: L[7:0] -> (L, L, L, 255)")                            \
+  X(La8, 5, "16 bits: A[15:8] L[7:0] -> (L, L, L, A)")                     \
+  X(A8, 6, "8 bits: A[7:0] -> (0, 0, 0, A)")
+// (tex::TexelFormat::Bc1 = 7, BC1 blocks, is C++ only until the unit fetches blocks: tu_bc1_decode
+// is co-simulated on its own.)
 
 // ---- flag bits: X(Name, bit, description) ----
 // EWA filter output (ewa::fx::Flag, tu_ewa flags_o; SV tu_formats_pkg::EwaFlagUnitDisc ...).
@@ -71,7 +83,9 @@
   X(lminlod, kEllLodW, "Feline probe lod: min lod")                               \
   X(lmaxlod, kEllLodW, "Feline probe lod: max lod")                               \
   X(ltop, 4, "Feline probe lod: the top level of the material's range")          \
-  X(fnmax, kFelProbeW, "Feline probe cap Nmax (1..FelNMax)")
+  X(fnmax, kFelProbeW, "Feline probe cap Nmax (1..FelNMax)")                     \
+  X(tfmt, kTexFmtW, "colour texture: storage format (TexFmt* codes, tu_texel_decode)") \
+  X(tsrgb, 1, "colour texture: sRGB colour channels (decoded to linear by tu_texel_decode)")
 // Material relief fields, used up by the relief stage.
 #define TU_REC_RELIEF(X)                             \
   X(rel, 1, "POM relief on")                         \
@@ -155,6 +169,7 @@ enum class Wrap { TU_WRAP_CODES(TU_X_ENUM) };
 inline constexpr int kEngineW = 3;
 inline constexpr int kWsrcW = 2;
 inline constexpr int kWrapW = 3;
+inline constexpr int kTexFmtW = 3;
 #define TU_X_COUNT(name, code, desc) +1
 inline constexpr int kEwaFlagW = 0 TU_EWA_FLAG_BITS(TU_X_COUNT);
 inline constexpr int kEllFlagW = 0 TU_ELL_FLAG_BITS(TU_X_COUNT);
@@ -168,6 +183,9 @@ static_assert(true TU_WEIGHT_SOURCE_CODES(TU_X_MAX), "a weight-source code does 
 #undef W
 #define W kWrapW
 static_assert(true TU_WRAP_CODES(TU_X_MAX), "a wrap code does not fit kWrapW");
+#undef W
+#define W kTexFmtW
+static_assert(true TU_TEXEL_FORMAT_CODES(TU_X_MAX), "a texel-format code does not fit kTexFmtW");
 #undef W
 #undef TU_X_MAX
 
