@@ -20,8 +20,10 @@ while [ $# -gt 0 ]; do
 done
 blocks=("$@")
 # Left out of the default list (the CI test), run by name: texel_depth's stiff set takes ~4.6 min
-# under Icarus on a loaded machine (22,115 vectors): `scripts/icarus_all.sh texel_depth`.
-ci_skip=" texel_depth "
+# under Icarus on a loaded machine (22,115 vectors): `scripts/icarus_all.sh texel_depth`; the
+# texel decoders' stiff sets are exhaustive (texel_decode 787,454 and bc1_decode 786,432 vectors,
+# ~9 min under Icarus): `scripts/icarus_all.sh texel_decode bc1_decode` (Verilator runs them in CI).
+ci_skip=" texel_depth texel_decode bc1_decode "
 [ ${#blocks[@]} -gt 0 ] || mapfile -t blocks < <(awk -v skip="$ci_skip" '!/^#/ && NF && index(skip, " " $1 " ") == 0 {print $1}' testbench/icarus/blocks.txt)
 command -v iverilog >/dev/null || { echo "icarus_all.sh: skipped: iverilog not installed (apt-get install iverilog)"; exit 0; }
 tmp=$(mktemp -d)
