@@ -265,6 +265,21 @@ SV
     if "$tu" relief-quality --afvis docs/scenes/ui_quad.json 2>"$tmp/err" >/dev/null; then fail "accepted a scene without relief"; fi
     grep -q "no material has relief" "$tmp/err" || fail "message: $(cat "$tmp/err")"
     ;;
+  report_filters)
+    # The report's filters group: 9 filters x 5 scenes, the same numbers as filter-compare on the
+    # scene (one measurement, two outputs), kept off the error-vs-cost Pareto plots, its own plot.
+    "$tu" report --blocks filters --no-yosys --json "$tmp/r.json" --plots "$tmp/p" --markdown "$tmp/r.md" >/dev/null 2>&1
+    [ "$(val "$tmp/r.json" "len(d)")" = 45 ] || fail "expected 45 rows"
+    [ -s "$tmp/p/filters_psnr_vs_clocks.png" ] || fail "no plot"
+    ! ls "$tmp/p"/filters_error_vs_* 2>/dev/null | grep -q . || fail "filters on a Pareto plot"
+    grep -q "^| ui_quad (6216 px) | ewa K=4 | " "$tmp/r.md" || fail "markdown: $(grep -c filters "$tmp/r.md")"
+    "$tu" filter-compare docs/scenes/ui_quad.json >"$tmp/fc" 2>/dev/null
+    for f in "nearest" "feline N<=8" "ewa K=4"; do
+      want=$(grep -E "^$f +[0-9]" "$tmp/fc" | sed "s/^$f//" | awk '{print $1, $3, $7}')
+      got=$(val "$tmp/r.json" "' '.join('%.2f' % r[k] for r in d if r['scheme'] == 'ui_quad' and r['variant'] == '$f' for k in ('psnr_truth_db', 'psnr_float_ewa_db', 'clocks_per_px'))")
+      [ "$want" = "$got" ] || fail "$f: filter-compare '$want', report '$got'"
+    done
+    ;;
   filter_compare)
     # filter-compare: one row per filter and Feline cap, numbers in every column, the plot; a Feline
     # material through render: probes per pixel printed; a unit without the Feline engine (the

@@ -29,10 +29,7 @@ CLI::App* add_filter_compare(CLI::App& app, FilterCompareArgs& a) {
 }
 
 namespace {
-struct Row {
-  std::string name;
-  double psnr_truth = 0, psnr_ewa = 0, probes = 0, texels = 0, clocks = 0;
-};
+using Row = FilterRow;
 
 void write_plot(const std::vector<Row>& rows, const std::string& dir, const std::string& title) {
   const std::string dat = dir + "/psnr_vs_clocks.dat", gp = dir + "/psnr_vs_clocks.gp";
@@ -55,16 +52,16 @@ void write_plot(const std::vector<Row>& rows, const std::string& dir, const std:
 }
 }  // namespace
 
-int run_filter_compare(const FilterCompareArgs& a) {
-  const scene::Scene s = scene::without_relief(a.scene == "default" ? scene::default_scene() : scene::load(a.scene));
-  if (!a.plot.empty()) std::filesystem::create_directories(a.plot);  // fails before the renders
+FilterComparison compare_filters(const scene::Scene& scene_in, int ss) {
+  const scene::Scene s = scene::without_relief(scene_in);
   render::TruthOptions to;
-  to.ss = a.ss;
+  to.ss = ss;
   to.relief = false;
   const auto truth = render::render_truth(s, to);
   const auto ewa_ref = render::render_ref(s, scene::Filter::Ewa);
   const double n = static_cast<double>(std::max<size_t>(1, truth.pixels.size()));
-  std::vector<Row> rows;
+  FilterComparison out{s.source, s.camera.width, s.camera.height, ss, truth.pixels.size(), {}};
+  std::vector<Row>& rows = out.rows;
   auto measure = [&](const std::string& name, const scene::Scene& si, scene::Filter f, const ewa::EngineParams& ep = {}) {
     const auto fr = render::render_cmodel(si, f, render::texture_path_only());
     Row r{name, render::psnr_covered(fr, truth), render::psnr_covered(fr, ewa_ref)};
@@ -87,8 +84,16 @@ int run_filter_compare(const FilterCompareArgs& a) {
   // The multi-texel engine (tu_ewa Lanes = 4: a 2 x 2 block per clock, three set-up units; the
   // corridor unit model's, co-simulated = this cycle model): the same pixels, fewer clocks.
   measure("ewa K=4", s, scene::Filter::Ewa, ewa::four_lane_engine());
+  return out;
+}
+
+int run_filter_compare(const FilterCompareArgs& a) {
+  if (!a.plot.empty()) std::filesystem::create_directories(a.plot);  // fails before the renders
+  const auto c = compare_filters(a.scene == "default" ? scene::default_scene() : scene::load(a.scene), a.ss);
+  const auto& s = c;
+  const auto& rows = c.rows;
   std::printf("%s: %dx%d, %zu covered pixels, texture path (relief off), C model; truth %d x %d samples per pixel, box\n",
-              s.source.c_str(), s.camera.width, s.camera.height, truth.pixels.size(), a.ss, a.ss);
+              s.source.c_str(), s.width, s.height, s.covered, a.ss, a.ss);
   std::printf("%-14s %12s %14s %11s %11s %11s %12s %12s\n", "filter", "PSNR truth", "PSNR float EWA", "probes/px",
               "texels/px", "clocks/px", "texels/clock", "4/clk bound");
   for (const auto& r : rows)

@@ -2,8 +2,27 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
+
+#include "texunit/scene.hpp"
 
 namespace tu::cli {
+
+// One filter on one scene: PSNR over the covered pixels against the box truth and the float EWA;
+// per pixel: probes, texels read, clocks (the RTL unit's exact cycle model, = Verilator).
+struct FilterRow {
+  std::string name;
+  double psnr_truth = 0, psnr_ewa = 0, probes = 0, texels = 0, clocks = 0;
+};
+struct FilterComparison {
+  std::string source;  // the scene's name
+  int width = 0, height = 0, ss = 0;
+  size_t covered = 0;
+  std::vector<FilterRow> rows;  // nearest, bilinear, trilinear, feline N<=2..16, ewa, ewa K=4
+};
+// The measurement behind `texunit filter-compare` and the report's `filters` group, on the scene's
+// texture path (relief off).
+FilterComparison compare_filters(const scene::Scene& s, int ss);
 
 struct FilterCompareArgs {
   std::string scene;

@@ -3,6 +3,7 @@
 // Gaussian rows use exhaustive C-model statistics; every other block's rows come from the block
 // registry (random + stiff vectors) and its Verilated RTL.
 #include "report.hpp"
+#include "report_filters.hpp"
 #include "report_relief.hpp"
 
 #include <algorithm>
@@ -673,6 +674,12 @@ void markdown(const std::vector<Row>& rs, const Options& opt) {
     std::string unit;
     for (const auto& r : rs)
       if (r.block == grp) unit = r.err_unit;
+    if (grp == "filters") {
+      const bool plot = !opt.plots.empty() && fs::exists(opt.plots + "/filters_psnr_vs_clocks.png");
+      o << "\n## filters: quality against clocks per pixel\n\n"
+        << filters_markdown(rs, plot ? fs::relative(fs::absolute(opt.plots), fs::absolute(opt.markdown).parent_path()).string() : "");
+      continue;
+    }
     o << "\n## " << grp << "\n\nerror unit: " << unit << "\n\n";
     if (!opt.plots.empty() && fs::exists(opt.plots + "/" + grp + "_error_vs_cycles.png")) {
       const auto rel = fs::relative(fs::absolute(opt.plots), fs::absolute(opt.markdown).parent_path()).string();
@@ -772,6 +779,7 @@ std::vector<std::string> groups() {
   g.insert(g.begin() + 3, kGauss.begin(), kGauss.end());  // after reciprocal, persp, ellipse: B1 .. B5 order
   g.push_back("distance_map");  // C model only (report_relief.cpp)
   g.push_back("afvis");         // report_relief.cpp
+  g.push_back("filters");       // report_filters.cpp: quality against clocks per filter and scene
   return g;
 }
 
@@ -794,6 +802,7 @@ std::vector<Row> rows(const Options& opt) {
     else if (g == "gauss_weight") r = weight_rows(opt, cache);
     else if (g == "weight_table") r = table_rows(opt, cache);
     else if (g == "brdf") r = brdf_rows(opt, cache);
+    else if (g == "filters") r = filter_rows(opt.root, [&](Row& x) { area(x, opt, cache); });
     else if (is_relief_block(g)) {
       // report_relief.cpp: the engines' cycles per pixel on the bricks scene stream, pom_unit with
       // its stages pom_setup and pom_refine; area from the same Yosys cache.
@@ -869,6 +878,7 @@ void write(const std::vector<Row>& rs, const Options& opt) {
     if (std::any_of(rs.begin(), rs.end(), [](const Row& r) { return is_relief_block(r.block); }))
       std::cerr << (relief_plot(opt.plots) ? "wrote " + opt.plots + "/relief_psnr_vs_steps.png, relief_psnr_vs_cycles.png\n"
                                             : std::string("gnuplot failed (relief plots skipped)\n"));
+    if (!filters_plot(rs, opt.plots)) throw std::runtime_error("report: gnuplot failed on " + opt.plots + "/filters_psnr_vs_clocks.gp");
   }
   if (!opt.json.empty()) {
     std::ofstream o(opt.json);
