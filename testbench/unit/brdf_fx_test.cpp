@@ -47,7 +47,9 @@ TEST(BrdfFx, GuardsAtTheEdges) {
       const Result big2 = eval(m, {(uint64_t(1) << (fmt::kBrdfCW - 1)) - 1, uint64_t(n), cut});
       EXPECT_EQ(big2.f, want1);
       // Beyond the cut-off the output is 0.
-      if (cut > 0 && cut <= kOne) EXPECT_EQ(eval(m, {cut - 1, uint64_t(n), cut}).f, 0u) << n;
+      if (cut > 0 && cut <= kOne) {
+        EXPECT_EQ(eval(m, {cut - 1, uint64_t(n), cut}).f, 0u) << n;
+      }
     }
     // n = 0 behaves as n = 1, n > 1000 as n = 1000; both flag.
     const uint64_t c = 1019000;

@@ -59,7 +59,9 @@ TEST(EllipseFx, Log2TableExhaustive) {
   }
   for (int b = 0; b < 128; ++b)
     for (const u128 x : {u128(1) << b, (u128(1) << b) + 1, (u128(1) << b) - 1, ~u128(0) >> b})
-      if (x != 0) ASSERT_EQ(fx::log2_fx(x), fx::log2_fx_serial(x)) << b;
+      if (x != 0) {
+        ASSERT_EQ(fx::log2_fx(x), fx::log2_fx_serial(x)) << b;
+      }
 }
 
 // Floating-point estimate + correction equals the bit-serial square root: random inputs of every
