@@ -315,6 +315,9 @@ SV
       [ -s "$tmp/p/$m/psnr_vs_clocks.png" ] || fail "no $m plot"
     done
     [ "$(rows "$tmp/def" "")" = "$(rows "$tmp/all" box)" ] || fail "box rows differ from the default run"
+    "$tu" filter-compare $sc --ss 2 --mip-filter box >"$tmp/box" 2>/dev/null
+    [ "$(rows "$tmp/def" "")" = "$(rows "$tmp/box" box)" ] || fail "--mip-filter box differs from the default run"
+    ! grep -q "^PSNR vs truth" "$tmp/box" || fail "a side-by-side table for one pyramid"
     for m in box_linear lanczos2; do
       # nearest, bilinear: the same PSNR vs truth, probes, texels, clocks (the float EWA column moves)
       for f in nearest bilinear; do

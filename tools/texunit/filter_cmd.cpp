@@ -151,6 +151,7 @@ int run_filter_compare(const FilterCompareArgs& a) {
       write_plot(cs.back().rows, dir, cs.back().source + ": PSNR vs clocks per pixel, mip filter " + cs.back().mip_filter);
     }
   }
+  if (cs.size() < 2) return 0;
   // PSNR vs truth per filter (rows) and pyramid (columns), and whether the truth moved.
   std::printf("PSNR vs truth (dB) per mip filter: %s\n%-14s", cs[0].source.c_str(), "filter");
   for (const auto& c : cs) std::printf(" %11s", c.mip_filter.c_str());
