@@ -81,7 +81,8 @@ tex::Texture texture_of(const scene::Scene& s, const std::string& name) {
   const std::string key = s.source + '\n' + name + '\n' + t.builtin + ' ' + std::to_string(t.size) + ' ' +
                           std::to_string(t.cells) + ' ' + std::to_string(int(a.u)) + ' ' + std::to_string(int(a.v)) + ' ' +
                           std::to_string(a.border.r) + ' ' + std::to_string(a.border.g) + ' ' + std::to_string(a.border.b) +
-                          ' ' + std::to_string(a.border.a) + ' ' + std::to_string(t.format) + ' ' + std::to_string(t.srgb);
+                          ' ' + std::to_string(a.border.a) + ' ' + std::to_string(t.format) + ' ' + std::to_string(t.srgb) + ' ' +
+                          std::to_string(t.mip_filter);
   static std::mutex mu;
   static std::map<std::string, std::shared_ptr<const tex::Texture>> cache;
   {

@@ -294,6 +294,48 @@ SV
     if "$tu" render "$tmp/fel.json" --engine rtl --rtl-unit corridor --out "$tmp/bad" 2>"$tmp/err"; then fail "corridor unit accepted feline"; fi
     grep -q "/materials/panel/filter: feline" "$tmp/err" || fail "message: $(cat "$tmp/err")"
     ;;
+  filter_mip)
+    # filter-compare --mip-filter (docs/blocks/texture.md "Mip generation"): a bad value exits 2
+    # naming the option; the box table equals the run without the option (the scene's textures are
+    # box); on docs/scenes/mip_filters.json (sRGB textures) box_linear and lanczos2 change the
+    # mipmapped engines' rows but not nearest's or bilinear's (level 0 alone) nor the truth; on a
+    # linear scene box_linear is box.
+    set +e; "$tu" filter-compare docs/scenes/ui_quad.json --mip-filter kaiser >"$tmp/out" 2>"$tmp/err"; rc=$?; set -e
+    [ "$rc" = 2 ] || fail "bad --mip-filter: exit $rc, expected 2"
+    grep -q -- "--mip-filter" "$tmp/err" || fail "message does not name --mip-filter: $(cat "$tmp/err")"
+    rows() { awk -v m="$2" '$0 ~ /covered pixels/ {f = (m == "" || index($0, "mip filter " m " (")) ; next} /^$/ {f = 0}
+                           f && /^(nearest|bilinear|trilinear|feline|ewa)/' "$1"; }
+    row() { rows "$1" "$2" | grep -E "^$3 +[0-9]"; }
+    sc=docs/scenes/mip_filters.json
+    "$tu" filter-compare $sc --ss 2 >"$tmp/def" 2>/dev/null
+    "$tu" filter-compare $sc --ss 2 --mip-filter all --plot "$tmp/p" >"$tmp/all" 2>/dev/null
+    [ "$(rows "$tmp/def" "" | wc -l)" = 9 ] || fail "default table: $(cat "$tmp/def")"
+    for m in box box_linear lanczos2; do
+      [ "$(rows "$tmp/all" $m | wc -l)" = 9 ] || fail "$m table: $(cat "$tmp/all")"
+      [ -s "$tmp/p/$m/psnr_vs_clocks.png" ] || fail "no $m plot"
+    done
+    [ "$(rows "$tmp/def" "")" = "$(rows "$tmp/all" box)" ] || fail "box rows differ from the default run"
+    "$tu" filter-compare $sc --ss 2 --mip-filter box >"$tmp/box" 2>/dev/null
+    [ "$(rows "$tmp/def" "")" = "$(rows "$tmp/box" box)" ] || fail "--mip-filter box differs from the default run"
+    ! grep -q "^PSNR vs truth" "$tmp/box" || fail "a side-by-side table for one pyramid"
+    for m in box_linear lanczos2; do
+      # nearest, bilinear: the same PSNR vs truth, probes, texels, clocks (the float EWA column moves)
+      for f in nearest bilinear; do
+        [ "$(row "$tmp/all" box $f | awk '{print $2, $6, $7, $8}')" = "$(row "$tmp/all" $m $f | awk '{print $2, $6, $7, $8}')" ] ||
+          fail "$f changed with $m"
+      done
+      # mipmapped engines: another PSNR vs truth (column 2 for trilinear, 3 after the space of "feline N<=8")
+      for f in trilinear "feline N<=8" ewa; do
+        [ "$(row "$tmp/all" box "$f" | sed "s/^$f//" | awk '{print $1}')" != "$(row "$tmp/all" $m "$f" | sed "s/^$f//" | awk '{print $1}')" ] ||
+          fail "$f: the same PSNR vs truth with $m as with box"
+      done
+    done
+    grep -q "^truth image: identical with every pyramid" "$tmp/all" || fail "truth: $(tail -1 "$tmp/all")"
+    [ "$(grep -cE '^(nearest|bilinear|trilinear|feline N<=(2|4|8|16)|ewa|ewa K=4) +( +[0-9.]+ dB){3}$' "$tmp/all")" = 9 ] ||
+      fail "summary: $(cat "$tmp/all")"
+    "$tu" filter-compare docs/scenes/hud_floor.json --ss 1 --mip-filter box,box_linear >"$tmp/lin" 2>/dev/null
+    [ "$(rows "$tmp/lin" box)" = "$(rows "$tmp/lin" box_linear)" ] || fail "box_linear differs from box on linear textures"
+    ;;
   shard_vectors_cosim)
     # 4 shards == the unsharded run: vector rows tile the set in order; the merged co-simulation
     # (file split by `cosim --shard`, and per-shard vector files) equals the whole file's run

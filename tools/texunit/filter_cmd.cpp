@@ -25,6 +25,11 @@ CLI::App* add_filter_compare(CLI::App& app, FilterCompareArgs& a) {
   c->add_option("SCENE", a.scene, "scene JSON file, or 'default'")->required();
   c->add_option("--ss", a.ss, "ground truth: stratified samples per pixel side")->check(CLI::Range(1, 64));
   c->add_option("--plot", a.plot, "write psnr_vs_clocks.{dat,gp,png} (gnuplot) into this directory");
+  c->add_option("--mip-filter", a.mip_filters,
+                "build every texture's mip pyramid with this filter (box, box_linear, lanczos2; a comma-separated "
+                "list or 'all': one table per pyramid and PSNR vs truth side by side; docs/blocks/texture.md)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"box", "box_linear", "lanczos2", "all"}));
   return c;
 }
 
@@ -52,15 +57,26 @@ void write_plot(const std::vector<Row>& rows, const std::string& dir, const std:
 }
 }  // namespace
 
-FilterComparison compare_filters(const scene::Scene& scene_in, int ss) {
-  const scene::Scene s = scene::without_relief(scene_in);
+FilterComparison compare_filters(const scene::Scene& scene_in, int ss, std::optional<tex::MipFilter> mip) {
+  scene::Scene s = scene::without_relief(scene_in);
+  if (mip)
+    for (auto& [name, t] : s.textures) t.mip_filter = static_cast<int>(*mip);
   render::TruthOptions to;
   to.ss = ss;
   to.relief = false;
   const auto truth = render::render_truth(s, to);
   const auto ewa_ref = render::render_ref(s, scene::Filter::Ewa);
   const double n = static_cast<double>(std::max<size_t>(1, truth.pixels.size()));
-  FilterComparison out{s.source, s.camera.width, s.camera.height, ss, truth.pixels.size(), {}};
+  FilterComparison out;
+  out.source = s.source;
+  out.width = s.camera.width;
+  out.height = s.camera.height;
+  out.ss = ss;
+  out.covered = truth.pixels.size();
+  if (mip) out.mip_filter = tex::kMipFilterNames[static_cast<int>(*mip)];
+  out.truth_hash = 1469598103934665603ull;  // FNV-1a over the truth image's bytes
+  for (const auto& p : truth.image.px)
+    for (const uint8_t b : {p.r, p.g, p.b, p.a}) out.truth_hash = (out.truth_hash ^ b) * 1099511628211ull;
   std::vector<Row>& rows = out.rows;
   auto measure = [&](const std::string& name, const scene::Scene& si, scene::Filter f, const ewa::EngineParams& ep = {}) {
     const auto fr = render::render_cmodel(si, f, render::texture_path_only());
@@ -87,13 +103,14 @@ FilterComparison compare_filters(const scene::Scene& scene_in, int ss) {
   return out;
 }
 
-int run_filter_compare(const FilterCompareArgs& a) {
-  if (!a.plot.empty()) std::filesystem::create_directories(a.plot);  // fails before the renders
-  const auto c = compare_filters(a.scene == "default" ? scene::default_scene() : scene::load(a.scene), a.ss);
+namespace {
+void print_table(const FilterComparison& c, int ss) {
   const auto& s = c;
   const auto& rows = c.rows;
-  std::printf("%s: %dx%d, %zu covered pixels, texture path (relief off), C model; truth %d x %d samples per pixel, box\n",
-              s.source.c_str(), s.width, s.height, s.covered, a.ss, a.ss);
+  std::printf("%s: %dx%d, %zu covered pixels, texture path (relief off), C model; truth %d x %d samples per pixel, box",
+              s.source.c_str(), s.width, s.height, s.covered, ss, ss);
+  if (!c.mip_filter.empty()) std::printf("; mip filter %s (every texture)", c.mip_filter.c_str());
+  std::printf("\n");
   std::printf("%-14s %12s %14s %11s %11s %11s %12s %12s\n", "filter", "PSNR truth", "PSNR float EWA", "probes/px",
               "texels/px", "clocks/px", "texels/clock", "4/clk bound");
   for (const auto& r : rows)
@@ -103,7 +120,51 @@ int run_filter_compare(const FilterCompareArgs& a) {
   std::printf("clocks/px: the RTL texture unit's exact cycle model (ewa::stream_cycles, = Verilator; Feline: "
               "tu_feline, its probes through one tu_trilinear; ewa K=4: tu_ewa_walk_lanes, 2x2 blocks, 3 set-up units); 4/clk bound: texels / 4, the clocks of a datapath "
               "reading a 2x2 texel block per clock (a GPU's bilinear probe)\n");
-  if (!a.plot.empty()) write_plot(rows, a.plot, s.source + ": PSNR vs clocks per pixel");
+}
+}  // namespace
+
+int run_filter_compare(const FilterCompareArgs& a) {
+  if (!a.plot.empty()) std::filesystem::create_directories(a.plot);  // fails before the renders
+  const scene::Scene scene = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  // The pyramids asked for, in kMipFilterNames order, each once ('all': every one).
+  std::vector<tex::MipFilter> mips;
+  for (int i = 0; i < 3; ++i)
+    for (const auto& m : a.mip_filters)
+      if (m == "all" || m == tex::kMipFilterNames[i]) {
+        mips.push_back(static_cast<tex::MipFilter>(i));
+        break;
+      }
+  if (mips.empty()) {
+    const auto c = compare_filters(scene, a.ss);
+    print_table(c, a.ss);
+    if (!a.plot.empty()) write_plot(c.rows, a.plot, c.source + ": PSNR vs clocks per pixel");
+    return 0;
+  }
+  std::vector<FilterComparison> cs;
+  for (const auto m : mips) {
+    cs.push_back(compare_filters(scene, a.ss, m));
+    print_table(cs.back(), a.ss);
+    std::printf("\n");
+    if (!a.plot.empty()) {
+      const std::string dir = a.plot + "/" + cs.back().mip_filter;
+      std::filesystem::create_directories(dir);
+      write_plot(cs.back().rows, dir, cs.back().source + ": PSNR vs clocks per pixel, mip filter " + cs.back().mip_filter);
+    }
+  }
+  if (cs.size() < 2) return 0;
+  // PSNR vs truth per filter (rows) and pyramid (columns), and whether the truth moved.
+  std::printf("PSNR vs truth (dB) per mip filter: %s\n%-14s", cs[0].source.c_str(), "filter");
+  for (const auto& c : cs) std::printf(" %11s", c.mip_filter.c_str());
+  std::printf("\n");
+  for (size_t r = 0; r < cs[0].rows.size(); ++r) {
+    std::printf("%-14s", cs[0].rows[r].name.c_str());
+    for (const auto& c : cs) std::printf(" %8.2f dB", c.rows[r].psnr_truth);
+    std::printf("\n");
+  }
+  bool same = true;
+  for (const auto& c : cs) same = same && c.truth_hash == cs[0].truth_hash;
+  std::printf("truth image: %s with every pyramid (FNV-1a %016llx%s)\n", same ? "identical" : "DIFFERENT",
+              static_cast<unsigned long long>(cs[0].truth_hash), same ? "; it samples level 0 alone" : "");
   return 0;
 }
 
