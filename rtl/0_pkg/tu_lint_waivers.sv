@@ -6,3 +6,10 @@
 // "lint_only").
 `verilator_config
 lint_off -rule MULTITOP
+// A Verilator 5.006 bug mis-elaborates tu_pipe_valid's Depth generate in this one multi-top run:
+// the Depth == 1 branch in tu_texture_unit_sim's instances of Depth 2 .. 43 (a WIDTH warning on
+// `assign valid_d = in_valid_i`), since the blocks' simulation wrappers are gone (issue 21); each
+// top Verilated alone, every co-simulation model, Icarus and Yosys elaborate the right branch.
+// The same bug made tu_texel_decode_sim and tu_bc1_decode_sim write their valid register out.
+// Waived for that message only.
+lint_off -rule WIDTH -file "*/common/tu_pipe_valid.sv" -match "*VARREF 'in_valid_i' generates 1 bits*"

@@ -1,7 +1,6 @@
 // Co-simulation top of the BC1 texel decode (block "bc1_decode"): tu_bc1_decode behind one
-// register stage with a valid/ready interface, so that the vector harness can drive it with
+// register stage with a valid/ready interface (tu_out_reg), so that the vector harness can drive it with
 // stalls; latency 1, II = 1.
-`include "tu_assert.svh"
 module tu_bc1_decode_sim (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -13,25 +12,9 @@ module tu_bc1_decode_sim (
   input  logic        out_ready_i,
   output logic [31:0] rgba_o
 );
-  logic        en, stage_valid;
   logic [31:0] rgba;
-  // one valid register (as tu_pipe_valid Depth 1; written out: Verilator 5.006 mis-elaborates
-  // tu_pipe_valid's Depth generate elsewhere in the tree when these tops instantiate it too)
-  logic valid_q;
-  assign en          = !valid_q || out_ready_i;
-  assign in_ready_o  = en;
-  assign out_valid_o = valid_q;
-  assign stage_valid = valid_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q <= 1'b0;
-    else if (en) valid_q <= in_valid_i;
-  end
   tu_bc1_decode u_dec (.block_i, .texel_i, .rgba_o(rgba));
-  always_ff @(posedge clk_i) begin
-    if (en) rgba_o <= rgba;
-  end
-  logic unused_stage_valid;
-  assign unused_stage_valid = stage_valid;
-
-  `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {rgba_o})
+  tu_out_reg #(.W(32)) u_reg (
+    .clk_i, .rst_ni, .in_valid_i, .in_ready_o, .d_i(rgba), .out_valid_o, .out_ready_i, .q_o(rgba_o)
+  );
 endmodule

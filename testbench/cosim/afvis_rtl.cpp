@@ -1,16 +1,18 @@
-// RTL binding of the visibility engine (rtl/ewa/tu_afvis.sv through tu_afvis_sim with the texel
-// and depth RAM models), block "afvis": the block's texture (bricks colour 256 x 256, repeat) at
-// texel address 0 (border word, level 0 at 1) and its depth map (bricks 64 x 64) at depth
-// address 0, loaded during reset.
-#include "Vtu_afvis_sim.h"
+// RTL binding of the visibility engine (rtl/ewa/tu_afvis.sv, Verilated as the top), block "afvis":
+// the block's texture (bricks colour 256 x 256, repeat) in the texel RAM at address 0 (border
+// word, level 0 at 1; SyncReadRam on tex_*, 1 << 17 words) and its depth map (bricks 64 x 64) in
+// the depth RAM at address 0 (one code per word, the low 8 bits on d_data_i; SyncReadRam on d_*,
+// 1 << 16 words).
+#include "Vtu_afvis.h"
 #include "afvis_block.hpp"
 #include "cosim.hpp"
+#include "sync_read_ram.hpp"
 #include "texel_ram.hpp"
 
 namespace tu::cosim {
 
 RtlBlock rtl_afvis() {
-  auto drive = [](Vtu_afvis_sim& d, const Row& in) {
+  auto drive = [](Vtu_afvis& d, const Row& in) {
     const tex::Texture& tex = blocks::afvis_texture();
     d.u_i = static_cast<uint32_t>(in[0]);
     d.v_i = static_cast<uint32_t>(in[1]);
@@ -38,29 +40,27 @@ RtlBlock rtl_afvis() {
     d.hlw_i = static_cast<uint8_t>(log2_size(blocks::afvis_depth().width));
     d.hlh_i = static_cast<uint8_t>(log2_size(blocks::afvis_depth().height));
   };
-  auto sample = [](Vtu_afvis_sim& d) {
+  auto sample = [](Vtu_afvis& d) {
     const uint32_t c = d.rgba_o;
     return Row{c & 0xff, (c >> 8) & 0xff, (c >> 16) & 0xff, c >> 24, d.level_o, d.visited_o, d.inside_o,
                d.flags_o, d.kept_o, d.traced_o, d.steps_o};
   };
-  auto init = [](Vtu_afvis_sim& d, const std::function<void()>& tick) {
-    static const std::vector<uint32_t> words = texture_words(blocks::afvis_texture());
-    static const std::vector<uint32_t> depth(blocks::afvis_depth().px.begin(), blocks::afvis_depth().px.end());
-    d.ram_sel_i = 0;
-    load_words(d, tick, 0, words);
-    d.ram_sel_i = 1;
-    load_words(d, tick, 0, depth);
-    d.ram_sel_i = 0;
+  auto env = []() {
+    static const auto words = std::make_shared<const SyncReadRam::Image>(texture_words(blocks::afvis_texture()));
+    static const auto depth = std::make_shared<const SyncReadRam::Image>(blocks::afvis_depth().px.begin(),
+                                                                         blocks::afvis_depth().px.end());
+    Env<Vtu_afvis> e;
+    attach_ram<Vtu_afvis>(e, std::make_shared<SyncReadRam>(words, uint64_t(1) << 17),
+                          [](Vtu_afvis& d) -> auto& { return d.tex_req_o; },
+                          [](Vtu_afvis& d) -> auto& { return d.tex_addr_o; },
+                          [](Vtu_afvis& d) -> auto& { return d.tex_data_i; });
+    attach_ram<Vtu_afvis>(e, std::make_shared<SyncReadRam>(depth, uint64_t(1) << 16, 1, fmt::kTexAddrW, 8),
+                          [](Vtu_afvis& d) -> auto& { return d.d_req_o; },
+                          [](Vtu_afvis& d) -> auto& { return d.d_addr_o; },
+                          [](Vtu_afvis& d) -> auto& { return d.d_data_i; });
+    return e;
   };
-  RtlBlock b;
-  b.name = "afvis";
-  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<Vtu_afvis_sim>(drive, sample, init).run(in, o);
-  };
-  b.timing = [=](const std::vector<Row>& in) {
-    return Harness<Vtu_afvis_sim>(drive, sample, init).measure_timing(in);
-  };
-  return b;
+  return make_rtl<Vtu_afvis>("afvis", drive, sample, {}, env);
 }
 
 }  // namespace tu::cosim

@@ -61,7 +61,7 @@ ewa::EngineParams lanes4_block_params() {
   ewa::EngineParams p;
   p.lanes = 4;
   p.setup_units = 2;
-  p.lane_clip = true;  // tu_ewa_sim: HasClip = 1
+  p.lane_clip = true;  // Vtu_ewa_k4: HasClip = 1
   return p;
 }
 

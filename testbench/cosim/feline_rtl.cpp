@@ -1,8 +1,9 @@
-// RTL binding of the Feline engine (rtl/top/tu_feline.sv through the simulation top tu_feline_sim
-// with the texel RAM model), block "feline": the block's fixed texture (bricks colour 256 x 256,
-// repeat) is loaded into the RAM at address 0 during reset (its border word at 0, level 0 at 1).
-#include "Vtu_feline_sim.h"
+// RTL binding of the Feline engine (rtl/top/tu_feline.sv, Verilated as the top), block "feline":
+// the block's fixed texture (bricks colour 256 x 256, repeat) in the texel RAM at address 0 (its
+// border word at 0, level 0 at 1; SyncReadRam on tex_*, 1 << 17 words).
+#include "Vtu_feline.h"
 #include "cosim.hpp"
+#include "sync_read_ram.hpp"
 #include "texel_ram.hpp"
 #include "texture/trilinear_lod.hpp"
 
@@ -10,7 +11,7 @@ namespace tu::cosim {
 
 RtlBlock rtl_feline() {
   static const tex::Texture tex = tex::Texture::build("bricks", tex::bricks(256).color, tex::Wrap::Repeat);
-  auto drive = [](Vtu_feline_sim& d, const Row& in) {
+  auto drive = [](Vtu_feline& d, const Row& in) {
     d.u_i = static_cast<uint32_t>(in[0]);
     d.v_i = static_cast<uint32_t>(in[1]);
     d.ae_i = in[2];
@@ -37,23 +38,20 @@ RtlBlock rtl_feline() {
     d.lh_i = static_cast<uint8_t>(log2_size(tex.levels[0].height));
     d.wrap_i = wrap_code(tex.addressing);
   };
-  auto sample = [](Vtu_feline_sim& d) {
+  auto sample = [](Vtu_feline& d) {
     const uint32_t c = d.rgba_o;
     return Row{c & 0xff, (c >> 8) & 0xff, (c >> 16) & 0xff, c >> 24, d.level_o, d.texels_o, d.probes_o, d.flags_o};
   };
-  auto init = [](Vtu_feline_sim& d, const std::function<void()>& tick) {
-    static const std::vector<uint32_t> words = texture_words(tex);
-    load_words(d, tick, 0, words);
+  auto env = []() {
+    static const auto words = std::make_shared<const SyncReadRam::Image>(texture_words(tex));
+    Env<Vtu_feline> e;
+    attach_ram<Vtu_feline>(e, std::make_shared<SyncReadRam>(words, uint64_t(1) << 17),
+                           [](Vtu_feline& d) -> auto& { return d.tex_req_o; },
+                           [](Vtu_feline& d) -> auto& { return d.tex_addr_o; },
+                           [](Vtu_feline& d) -> auto& { return d.tex_data_i; });
+    return e;
   };
-  RtlBlock b;
-  b.name = "feline";
-  b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<Vtu_feline_sim>(drive, sample, init).run(in, o);
-  };
-  b.timing = [=](const std::vector<Row>& in) {
-    return Harness<Vtu_feline_sim>(drive, sample, init).measure_timing(in);
-  };
-  return b;
+  return make_rtl<Vtu_feline>("feline", drive, sample, {}, env);
 }
 
 }  // namespace tu::cosim

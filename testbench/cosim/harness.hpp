@@ -9,6 +9,8 @@
 //     so it proves one output per input, in order, nothing lost and nothing duplicated (extra
 //     outputs during the drain phase are counted as errors);
 //   * counts cycles, and measures latency and II on a stall-free prefix.
+// What a block's bench adds around it (a RAM on its read ports: sync_read_ram.hpp; an input that
+// follows other inputs) is C++ too, in the optional Env: the block itself is the Verilator top.
 #pragma once
 
 #include <verilated.h>
@@ -43,6 +45,18 @@ struct RunResult {
   bool hung = false;
 };
 
+// The C++ surroundings of a block (what a simulation wrapper around it would hold), fresh for every
+// run. The harness calls, on every clock and every evaluation:
+//   settle(d)  before each eval: inputs that follow other inputs combinationally;
+//   edge(d)    just before each rising clock edge, on the ports as evaluated for this cycle (what a
+//              register samples: e.g. a RAM's read enable and address);
+//   update(d)  just after the edge: registered values onto the block's inputs (the RAM's read data;
+//              the clock's falling-edge eval propagates them, so they cost no extra eval).
+template <class V>
+struct Env {
+  std::vector<std::function<void(V&)>> settle, edge, update;
+};
+
 template <class V>
 class Harness {
  public:
@@ -51,9 +65,11 @@ class Harness {
   // Optional preload during reset (e.g. a texture into a RAM model's write port): may set ports
   // and call tick(); must leave the preload ports idle.
   using Init = std::function<void(V&, const std::function<void()>& tick)>;
+  // The block's surroundings, built afresh for each run (Env).
+  using MakeEnv = std::function<Env<V>()>;
 
-  Harness(Drive drive, Sample sample, Init init = {})
-      : drive_(std::move(drive)), sample_(std::move(sample)), init_(std::move(init)) {}
+  Harness(Drive drive, Sample sample, Init init = {}, MakeEnv make_env = {})
+      : drive_(std::move(drive)), sample_(std::move(sample)), init_(std::move(init)), make_env_(std::move(make_env)) {}
 
   // fanout[i] (default 1): outputs input i produces (e.g. the pixels of a span).
   RunResult run(const std::vector<Row>& inputs, const RunOptions& opt,
@@ -78,13 +94,23 @@ class Harness {
                                     "reconfigure with cmake --preset default -DTU_COSIM_TRACE=ON");
       }
     }
+    const Env<V> env = make_env_ ? make_env_() : Env<V>{};
+    auto eval = [&]() {
+      for (const auto& f : env.settle) f(dut);
+      dut.eval();
+    };
     uint64_t t = 0;
     auto tick = [&]() {
+      for (const auto& f : env.edge) f(dut);
       dut.clk_i = 1;
-      dut.eval();
-      if (tfp) tfp->dump(t * 10 + 5);
+      eval();
+      for (const auto& f : env.update) f(dut);
+      if (tfp) {
+        if (!env.update.empty()) eval();  // the waveform shows the registered values propagated
+        tfp->dump(t * 10 + 5);
+      }
       dut.clk_i = 0;
-      dut.eval();
+      eval();
       if (tfp) tfp->dump(t * 10 + 10);
       ++t;
     };
@@ -94,11 +120,11 @@ class Harness {
     dut.in_valid_i = 0;
     dut.out_ready_i = 0;
     if (!inputs.empty()) drive_(dut, inputs[0]);
-    dut.eval();
+    eval();
     for (int i = 0; i < 4; ++i) tick();
     if (init_) init_(dut, tick);
     dut.rst_ni = 1;
-    dut.eval();
+    eval();
 
     std::mt19937_64 rng(opt.seed);
     std::bernoulli_distribution stall(opt.stall_prob);
@@ -115,7 +141,7 @@ class Harness {
       dut.in_valid_i = offering ? 1 : 0;
       if (offering) drive_(dut, inputs[next]);
       dut.out_ready_i = stall(rng) ? 0 : 1;
-      dut.eval();
+      eval();
       const bool fire_in = offering && dut.in_ready_o;
       const bool fire_out = dut.out_valid_o && dut.out_ready_i;
       Row out;
@@ -145,7 +171,7 @@ class Harness {
     dut.in_valid_i = 0;
     dut.out_ready_i = 1;
     for (uint64_t i = 0; i < opt.drain_cycles; ++i) {
-      dut.eval();
+      eval();
       if (dut.out_valid_o) ++res.extra_outputs;
       tick();
     }
@@ -159,22 +185,29 @@ class Harness {
   std::pair<uint64_t, double> measure_timing(const std::vector<Row>& inputs) {
     auto ctx = std::make_unique<VerilatedContext>();
     V dut(ctx.get());
+    const Env<V> env = make_env_ ? make_env_() : Env<V>{};
+    auto eval = [&]() {
+      for (const auto& f : env.settle) f(dut);
+      dut.eval();
+    };
     auto tick = [&]() {
+      for (const auto& f : env.edge) f(dut);
       dut.clk_i = 1;
-      dut.eval();
+      eval();
+      for (const auto& f : env.update) f(dut);
       dut.clk_i = 0;
-      dut.eval();
+      eval();
     };
     dut.clk_i = 0;
     dut.rst_ni = 0;
     dut.in_valid_i = 0;
     dut.out_ready_i = 1;
     if (!inputs.empty()) drive_(dut, inputs[0]);
-    dut.eval();
+    eval();
     for (int i = 0; i < 4; ++i) tick();
     if (init_) init_(dut, tick);
     dut.rst_ni = 1;
-    dut.eval();
+    eval();
     uint64_t cyc = 0, first_accept = 0, last_accept = 0, first_out = 0;
     size_t next = 0, outs = 0;
     bool got_first_out = false;
@@ -182,7 +215,7 @@ class Harness {
       dut.in_valid_i = next < inputs.size();
       if (next < inputs.size()) drive_(dut, inputs[next]);
       dut.out_ready_i = 1;
-      dut.eval();
+      eval();
       const bool fire_in = dut.in_valid_i && dut.in_ready_o;
       const bool fire_out = dut.out_valid_o;
       tick();
@@ -207,6 +240,7 @@ class Harness {
   Drive drive_;
   Sample sample_;
   Init init_;
+  MakeEnv make_env_;
 };
 
 }  // namespace tu::cosim

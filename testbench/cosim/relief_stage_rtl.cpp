@@ -1,18 +1,25 @@
-// RTL binding of the relief stage (rtl/pom/tu_relief_stage_sim.sv).
+// RTL binding of the relief stage (rtl/pom/tu_relief_stage.sv, Verilated as the top with SideW 20):
+// its depth RAM is a SyncReadRam on d_* (1 << 21 words, the low 8 bits on d_data_i), and its view
+// stream is offered beside the pixel: the row carries the pixel's view word, and view_valid_i
+// follows in_valid_i for relief pixels unless a random bubble holds it back, so the stage sees
+// pixels waiting for their view word (the view word is accepted with its pixel: the scoreboard
+// checks that through in_ready_o).
 #include "relief_stage_rtl.hpp"
 
+#include <memory>
 #include <random>
 
-#include "Vtu_relief_stage_sim.h"
+#include "Vtu_relief_stage.h"
 #include "harness.hpp"
-#include "texel_ram.hpp"
+#include "sync_read_ram.hpp"
 
 namespace tu::cosim {
 
 namespace {
 enum Col { kU, kV, kLw, kLh, kRel, kGuard, kAdaptive, kIter, kLayers, kScale, kHbase, kHlw, kHlh, kSide,
            kOk, kVx, kVy, kVz, kVc, kDm, kDlayers, kDbase, kCols };
-constexpr uint32_t kSideMask = (1u << 20) - 1;  // tu_relief_stage_sim's SideW
+constexpr uint32_t kSideMask = (1u << 20) - 1;  // the model's SideW (testbench/cosim/CMakeLists.txt)
+constexpr uint64_t kRamWords = uint64_t(1) << 21;  // depth RAM (the default scene with its distance map: 1,114,112)
 
 int64_t sext32(uint64_t x) { return static_cast<int32_t>(static_cast<uint32_t>(x)); }
 }  // namespace
@@ -49,7 +56,8 @@ ReliefRun run_relief_stage(const std::vector<ReliefPixel>& px, const std::vector
   }
   std::mt19937_64 rng(seed ^ 0x5eedf00dull);
   std::bernoulli_distribution bubble(view_bubble_prob);
-  auto drive = [&](Vtu_relief_stage_sim& d, const Row& r) {
+  bool held = false;  // this cycle's view word held back
+  auto drive = [&](Vtu_relief_stage& d, const Row& r) {
     d.u_i = static_cast<uint32_t>(r[kU]);
     d.v_i = static_cast<uint32_t>(r[kV]);
     d.lw_i = static_cast<uint8_t>(r[kLw]);
@@ -72,11 +80,19 @@ ReliefRun run_relief_stage(const std::vector<ReliefPixel>& px, const std::vector
     d.dm_i = static_cast<uint8_t>(r[kDm]);
     d.dlayers_i = static_cast<uint8_t>(r[kDlayers]);
     d.dbase_i = static_cast<uint32_t>(r[kDbase]);
-    d.view_bubble_i = view_bubble_prob > 0 && bubble(rng);
+    held = view_bubble_prob > 0 && bubble(rng);
   };
-  auto sample = [](Vtu_relief_stage_sim& d) { return Row{d.u_o, d.v_o, d.n_o, d.side_o, d.steps_o, d.flags_o}; };
-  auto init = [&](Vtu_relief_stage_sim& d, const std::function<void()>& tick) { load_words(d, tick, 0, ram); };
-  Harness<Vtu_relief_stage_sim> h(drive, sample, init);
+  auto sample = [](Vtu_relief_stage& d) { return Row{d.u_o, d.v_o, d.n_o, d.side_o, d.steps_o, d.flags_o}; };
+  auto env = [&, image = std::make_shared<const SyncReadRam::Image>(ram)]() {
+    Env<Vtu_relief_stage> e;
+    e.settle.push_back([&](Vtu_relief_stage& d) { d.view_valid_i = d.in_valid_i && d.rel_i && !held; });
+    attach_ram<Vtu_relief_stage>(e, std::make_shared<SyncReadRam>(image, kRamWords, 1, fmt::kTexAddrW, 8),
+                                 [](Vtu_relief_stage& d) -> auto& { return d.d_req_o; },
+                                 [](Vtu_relief_stage& d) -> auto& { return d.d_addr_o; },
+                                 [](Vtu_relief_stage& d) -> auto& { return d.d_data_i; });
+    return e;
+  };
+  Harness<Vtu_relief_stage> h(drive, sample, {}, env);
   RunOptions o;
   o.stall_prob = stall_prob;
   o.seed = seed;

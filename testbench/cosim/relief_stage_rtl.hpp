@@ -1,5 +1,6 @@
-// The relief stage RTL (rtl/pom/tu_relief_stage.sv through tu_relief_stage_sim, with its depth RAM
-// model) driven by the co-simulation harness: one row per pixel, the view word in the row.
+// The relief stage RTL (rtl/pom/tu_relief_stage.sv; its depth RAM and view stream modelled in C++,
+// relief_stage_rtl.cpp) driven by the co-simulation harness: one row per pixel, the view word in
+// the row.
 #pragma once
 
 #include <cstdint>
@@ -40,7 +41,7 @@ struct ReliefRun {
   bool hung = false;
 };
 
-// ram: depth words (depth in the low 8 bits) written from address 0 during reset. stall_prob:
+// ram: depth words (depth in the low 8 bits), the depth RAM's contents from address 0. stall_prob:
 // input bubbles and output stalls; view_bubble_prob: cycles the view word is held back.
 ReliefRun run_relief_stage(const std::vector<ReliefPixel>& px, const std::vector<uint32_t>& ram,
                            double stall_prob, double view_bubble_prob, uint64_t seed);

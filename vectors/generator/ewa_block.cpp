@@ -2,7 +2,7 @@
 //   in : u, v (s32.8 level-0 texels), B2 outputs ae, ce (u64), be (s64), lmaj, lmin (s18.10),
 //        lod (u12.8), b2flags (u5), weight source wsrc (0 formula, 1 table1d, 2 table2d), cap
 //        (max_texels, u17), clip (1: sub-texel border weights with the block's clip volume mm_p1,
-//        tu_ewa_sim's ClipVariant 0)
+//        the co-simulated tu_ewa's ClipVariant 0)
 //   out: r, g, b, a (u8), level (u4), texels visited (box) and inside (w > 0) (u17), flags (u5)
 //   ref: float EWA (ewa_ref.hpp filter_axes) on the same B2 axes and conic direction (border
 //        weights with the exact Phi when clip), RGBA f64.
@@ -25,7 +25,7 @@ namespace {
 namespace efx = ellipse::fx;
 using ewa::fx::In;
 
-// The block's clip volume for clip = 1: tu_ewa_sim's ClipVariant 0.
+// The block's clip volume for clip = 1: the co-simulated tu_ewa's ClipVariant 0.
 const clip::Variant& block_clip() { return clip::variant(ewa::kRtlClipVariants[0]); }
 
 struct Pixel {
