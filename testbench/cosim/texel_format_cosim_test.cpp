@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <optional>
 #include <set>
+#include <stdexcept>
+#include <string>
 
 #include "texture/texel_format.hpp"
 #include "texture_unit_rtl.hpp"
@@ -44,6 +47,62 @@ TEST(TextureUnitRtl, TexelFormatsSceneEqualsCModelCyclesPredicted) {
   for (size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) differ += !(a.pixels[i].color == b.pixels[i].color);
   EXPECT_GT(differ, a.pixels.size() / 2);
   std::printf("texel formats: %zu of %zu px differ from the scene stored as rgba8\n", differ, a.pixels.size());
+}
+
+// BC1 in the unit (docs/blocks/texture.md "BC1 in the unit"): docs/scenes/bc1.json (six BC1
+// textures: every wrap mode, a transparent border block, sRGB, sides 16..64, deep minification to
+// the 2 x 2 and 1 x 1 levels) through the full unit's 64-bit texel RAM, tu_bc1_addr and
+// tu_bc1_decode: every pixel equal to the C model, cycles = ewa::texture_unit_cycles, as authored
+// (EWA, bilinear, trilinear, nearest, Feline) and with every material on each engine.
+TEST(TextureUnitRtl, Bc1SceneEqualsCModelCyclesPredicted) {
+  const auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/bc1.json");
+  for (const auto& [name, t] : s.textures) EXPECT_EQ(t.format, static_cast<int>(tex::TexelFormat::Bc1)) << name;
+  struct Run {
+    const char* what;
+    std::optional<scene::Filter> filter;
+    double stall;
+  };
+  const Run runs[] = {{"as authored", std::nullopt, 0.0},      {"as authored", std::nullopt, 0.3},
+                      {"ewa", scene::Filter::Ewa, 0.0},         {"trilinear", scene::Filter::Trilinear, 0.0},
+                      {"bilinear", scene::Filter::Bilinear, 0.0}, {"nearest", scene::Filter::Nearest, 0.0},
+                      {"feline", scene::Filter::Feline, 0.0}};
+  for (const Run& run : runs) {
+    SCOPED_TRACE(std::string(run.what) + (run.stall > 0 ? ", 30 % stalls" : ""));
+    cosim::RtlRenderOptions o;
+    o.stall_prob = run.stall;
+    o.filter = run.filter;
+    const auto r = cosim::render_rtl(s, o);
+    EXPECT_TRUE(r.ok()) << r.first_mismatch;
+    EXPECT_EQ(r.mismatches, 0u);
+    EXPECT_GT(r.frame.pixels.size(), 2000u);
+    if (run.stall == 0) {
+      EXPECT_EQ(r.cycles, r.predicted_cycles);
+    }
+    std::printf("bc1 %s, stalls %.1f: %zu px, %llu mismatches, cycles %llu (predicted %llu)\n", run.what, run.stall,
+                r.frame.pixels.size(), (unsigned long long)r.mismatches, (unsigned long long)r.cycles,
+                (unsigned long long)r.predicted_cycles);
+  }
+  // The block decode matters: the same scene stored as rgba8 differs on most pixels.
+  auto plain = s;
+  for (auto& [name, t] : plain.textures) t.format = 0;
+  const render::Frame a = render::render_cmodel(s);
+  const render::Frame b = render::render_cmodel(plain);
+  size_t differ = 0;
+  for (size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) differ += !(a.pixels[i].color == b.pixels[i].color);
+  EXPECT_GT(differ, a.pixels.size() / 2);
+  std::printf("bc1: %zu of %zu px differ from the scene stored as rgba8\n", differ, a.pixels.size());
+  // The K = 4 unit model (the corridor unit's plan: rgba8 only, HasBc1 = 0) refuses BC1, naming the field.
+  cosim::RtlRenderOptions k4;
+  k4.corridor_unit = true;
+  k4.filter = scene::Filter::Ewa;
+  k4.weights = scene::WeightSource::Table1d;
+  try {
+    (void)cosim::render_rtl(s, k4);
+    ADD_FAILURE() << "the corridor unit accepted a bc1 texture";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("/format: the corridor unit decodes rgba8 texels only"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("HasBc1 = 0"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
