@@ -82,6 +82,20 @@ TEST(TextureUnitRtl, Bc1SceneEqualsCModelCyclesPredicted) {
                 r.frame.pixels.size(), (unsigned long long)r.mismatches, (unsigned long long)r.cycles,
                 (unsigned long long)r.predicted_cycles);
   }
+  // Memory: texel RAM words of the scene's textures as BC1 blocks (one 64-bit word per block, the
+  // border a block) and in the texel layout (one word per texel, the border a word); bits per texel.
+  uint64_t block_words = 0, texel_words = 0, texels = 0;
+  for (const auto& [name, t] : s.textures) {
+    const tex::Texture x = scene::build_texture(s, name);
+    block_words += x.words.size() / 2;
+    for (const auto& lv : x.levels) texel_words += lv.px.size(), texels += lv.px.size();
+    ++texel_words;
+  }
+  EXPECT_LT(block_words * 64, texel_words * 32 / 7);  // about 4 bits per texel against 32
+  std::printf("bc1: %llu RAM words of 64 bits for %llu texels (%.3f bits per texel with the border blocks); "
+              "the texel layout: %llu words\n",
+              (unsigned long long)block_words, (unsigned long long)texels, 64.0 * double(block_words) / double(texels),
+              (unsigned long long)texel_words);
   // The block decode matters: the same scene stored as rgba8 differs on most pixels.
   auto plain = s;
   for (auto& [name, t] : plain.textures) t.format = 0;
