@@ -12,6 +12,9 @@
 #include "Vtu_texture_unit_sim_bil.h"
 #include "Vtu_texture_unit_sim_corridor.h"
 #include "Vtu_texture_unit_sim_rec.h"
+#if TU_COSIM_K4_UNIT
+#include "Vtu_texture_unit_sim_k4.h"
+#endif
 #if TU_COSIM_CLIP_VARIANTS
 #include "Vtu_texture_unit_sim_clip1.h"
 #include "Vtu_texture_unit_sim_clip2.h"
@@ -214,7 +217,11 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
                                   (o.corridor_unit ? std::string("corridor unit has no EWA border weights")
                                                    : "unit's EWA walk has the clip volume " + o.clip_variant) +
                                   " (render with --clip off or --clip " + o.clip_variant + ")");
-  ewa::EngineParams ep = o.corridor_unit ? corridor_ewa_params() : ewa::EngineParams{};
+  if (o.ewa_lanes != 1 && (o.ewa_lanes != 4 || o.corridor_unit || !o.has_ewa || s.footprint == scene::Footprint::Recurrence ||
+                           o.clip_variant != "mm_p1"))
+    throw std::invalid_argument("render_rtl: ewa_lanes " + std::to_string(o.ewa_lanes) +
+                                ": the K = 4 full unit only (analytic ellipse, clip mm_p1)");
+  ewa::EngineParams ep = o.corridor_unit || o.ewa_lanes == 4 ? corridor_ewa_params() : ewa::EngineParams{};
   ep.clip_variant = ewa::rtl_clip_code(o.clip_variant);
   if (ep.clip_variant < 0) throw std::invalid_argument("render_rtl: clip variant " + o.clip_variant + " has no RTL");
   // B2 variant: the unit with EllRecurrence = 1 (full unit only).
@@ -467,6 +474,13 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     run_unit(std::type_identity<Vtu_texture_unit_sim_corridor>{});
   } else if (rec) {
     run_unit(std::type_identity<Vtu_texture_unit_sim_rec>{});
+  } else if (o.ewa_lanes == 4) {
+#if TU_COSIM_K4_UNIT
+    run_unit(std::type_identity<Vtu_texture_unit_sim_k4>{});
+#else
+    throw std::invalid_argument("render_rtl: the full unit with the K = 4 EWA engine is verilated only with "
+                                "-DTU_COSIM_K4_UNIT=ON");
+#endif
   } else if (o.has_ewa && ep.clip_variant != 0) {
 #if TU_COSIM_CLIP_VARIANTS
     if (ep.clip_variant == 1) {
