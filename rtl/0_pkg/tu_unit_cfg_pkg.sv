@@ -36,4 +36,5 @@ package tu_unit_cfg_pkg;
   localparam logic [6:0] TexFormats = 7'd127;
   localparam bit HasSrgb = 1'b1;  // sRGB decode tables (tu_srgb_rom)
   localparam int TexelW = 32;  // texel port and RAM word: the widest stored format
+  localparam bit HasBc1 = 1'b1;  // BC1 block fetch (tu_texel_port): a 64-bit texel RAM word
 endpackage

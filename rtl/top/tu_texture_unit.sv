@@ -70,6 +70,9 @@ module tu_texture_unit #(
   parameter logic [6:0] TexFormats = tu_unit_cfg_pkg::TexFormats,
   parameter int HasSrgb   = {31'b0, tu_unit_cfg_pkg::HasSrgb},
   parameter int TexelW    = tu_unit_cfg_pkg::TexelW,
+  // BC1 block fetch (tu_texel_port, tu_bc1_addr, tu_bc1_decode): the texel RAM word becomes 64 bits
+  // (one BC1 block; a texel of another format in its low TexelW bits)
+  parameter int HasBc1    = {31'b0, tu_unit_cfg_pkg::HasBc1},
   parameter int FifoDepth = 4   // pixels buffered between B2 and the filter
 ) (
   input  logic                                  clk_i,
@@ -158,12 +161,12 @@ module tu_texture_unit #(
   // texel port (1-cycle read latency; a stored word, decoded by tu_texel_decode)
   output logic                                  tex_req_o,
   output logic [tu_formats_pkg::TexAddrW-1:0]   tex_addr_o,
-  input  logic [TexelW-1:0]                     tex_data_i,
+  input  logic [(HasBc1 != 0 ? 64 : TexelW)-1:0] tex_data_i,  // (HasBc1: 64 bits)
   // EWA bank ports 1..3 (EwaLanes = 4; 1-cycle read latency; stored words as the texel port's;
   // EwaLanes = 1: unused, req 0); the texel port is bank 0 then
   output logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)-1:0]                         texk_req_o,
   output logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)*tu_formats_pkg::TexAddrW-1:0] texk_addr_o,
-  input  logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)*TexelW-1:0]                  texk_data_i,
+  input  logic [(EwaLanes > 1 ? EwaLanes - 1 : 1)*(HasBc1 != 0 ? 64 : TexelW)-1:0] texk_data_i,
   // pixel output
   output logic                                  out_valid_o,
   input  logic                                  out_ready_i,
@@ -521,7 +524,7 @@ module tu_texture_unit #(
   logic f_noise, nz_busy, nz_in_ready, nz_valid;
   logic [31:0]   nz_rgba;
   assign f_noise   = HasNoise != 0 && f_pix.proc.on;
-  assign can_go    = (inflight_q == '0 || (cur_q == sel && fk_q == f_fk)) && !nz_busy;
+  assign can_go    = (inflight_q == '0 || (cur_q == sel && fk_q == f_fk && btex_q == f_btex)) && !nz_busy;
   logic [4:0]    in_ready_of, valid_of, req_of;  // indexed by engine
   logic [AW-1:0] cur_addr;
   logic [31:0]   cur_rgba;
@@ -553,41 +556,61 @@ module tu_texture_unit #(
   assign fire_out    = flt_valid && os_valid && p_ready;
   logic [OsW-1:0] nz_side;
   assign {p_x, p_y, p_pflags, p_eflags, p_rr} = nz_busy ? nz_side : os_data;
-  // Texel decode: the stored words of the pixels in flight's texture (fk_q) to RGBA8, one decoder
-  // per texel port (the K = 4 EWA's bank ports too).
+  // Texel ports: the stored words of the pixels in flight's texture (fk_q) to RGBA8, one
+  // tu_texel_port (tu_texel_decode; with HasBc1 the BC1 block address and decode) per texel port
+  // (the K = 4 EWA's bank ports too). A BC1 texture's block address needs the texture itself:
+  // with HasBc1 the key of the pixels in flight also holds a BC1 texture's base and sides (btex_q),
+  // so a pixel of another BC1 texture waits as at a format change (ewa::stream_cycles: texfmt).
   logic [FkW-1:0] f_fk, fk_q;
   assign f_fk = {f_mat.tfmt, f_mat.tsrgb};
+  localparam logic [tu_formats_pkg::TexFmtW-1:0] TexFmtBc1 = 3'd7;  // tex::TexelFormat::Bc1
+  localparam int BtW = AW + 8;
+  logic           f_bc1;
+  logic [BtW-1:0] f_btex, btex_q;  // {base, lw, lh} of a BC1 texture, else 0
+  assign f_bc1  = HasBc1 != 0 && f_mat.tfmt == TexFmtBc1;
+  assign f_btex = f_bc1 ? {f_mat.tbase, f_mat.tlw, f_mat.tlh} : '0;
   localparam int KP = EwaLanes > 1 ? EwaLanes - 1 : 1;
+  localparam int TPW = HasBc1 != 0 ? 64 : TexelW;  // texel RAM word
   logic [31:0]    tex_rgba;
   logic [KP*32-1:0] texk_rgba;
-  tu_texel_decode #(.TexelW(TexelW), .Formats(TexFormats), .HasSrgb(HasSrgb)) u_decode (
-    .word_i(tex_data_i), .fmt_i(fk_q[FkW-1:1]), .srgb_i(fk_q[0]), .rgba_o(tex_rgba)
+  logic [KP-1:0]    texk_ereq;   // the EWA's bank ports 1..3 before tu_texel_port
+  logic [KP*AW-1:0] texk_eaddr;
+  logic             bc1_q;
+  assign bc1_q = HasBc1 != 0 && fk_q[FkW-1:1] == TexFmtBc1;
+  tu_texel_port #(.TexelW(TexelW), .Formats(TexFormats), .HasSrgb(HasSrgb), .HasBc1(HasBc1)) u_port (
+    .clk_i, .req_i(tex_req_o), .addr_i(cur_addr), .addr_o(tex_addr_o), .word_i(tex_data_i),
+    .fmt_i(fk_q[FkW-1:1]), .srgb_i(fk_q[0]), .bc1_i(bc1_q),
+    .base_i(btex_q[BtW-1:8]), .lw_i(btex_q[7:4]), .lh_i(btex_q[3:0]), .rgba_o(tex_rgba)
   );
+  assign texk_req_o = texk_ereq;
   if (EwaLanes > 1) begin : g_bank_decode
     for (genvar k = 0; k < KP; k++) begin : g_port
-      tu_texel_decode #(.TexelW(TexelW), .Formats(TexFormats), .HasSrgb(HasSrgb)) u_decode (
-        .word_i(texk_data_i[k*TexelW +: TexelW]), .fmt_i(fk_q[FkW-1:1]), .srgb_i(fk_q[0]),
-        .rgba_o(texk_rgba[k*32 +: 32])
+      tu_texel_port #(.TexelW(TexelW), .Formats(TexFormats), .HasSrgb(HasSrgb), .HasBc1(HasBc1)) u_port (
+        .clk_i, .req_i(texk_ereq[k]), .addr_i(texk_eaddr[k*AW +: AW]), .addr_o(texk_addr_o[k*AW +: AW]),
+        .word_i(texk_data_i[k*TPW +: TPW]), .fmt_i(fk_q[FkW-1:1]), .srgb_i(fk_q[0]), .bc1_i(bc1_q),
+        .base_i(btex_q[BtW-1:8]), .lw_i(btex_q[7:4]), .lh_i(btex_q[3:0]), .rgba_o(texk_rgba[k*32 +: 32])
       );
     end
   end else begin : g_no_bank_decode
-    assign texk_rgba = '0;
+    assign texk_rgba   = '0;
+    assign texk_addr_o = '0;
     logic unused_texk_data;
-    assign unused_texk_data = ^texk_data_i;
+    assign unused_texk_data = ^{texk_data_i, texk_eaddr};
   end
   assign p_rgba      = nz_busy ? nz_rgba : cur_rgba;
   // Only the engine with pixels in flight reads texels.
   assign tex_req_o   = req_of[cur_q];
-  assign tex_addr_o  = cur_addr;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       cur_q      <= EngFirst;
       fk_q       <= '0;
+      btex_q     <= '0;
       inflight_q <= '0;
     end else begin
       if (fire_flt) cur_q <= sel;
       if (fire_flt) fk_q <= f_fk;
+      if (fire_flt) btex_q <= f_btex;
       inflight_q <= inflight_q + IfW'(fire_flt) - IfW'(fire_out);
     end
   end
@@ -613,12 +636,12 @@ module tu_texture_unit #(
     assign pe_addr = ewa_addr_v[AW-1:0];
     if (EwaLanes > 1) begin : g_banks
       assign ewa_data_v  = {texk_rgba, tex_rgba};
-      assign texk_req_o  = ewa_req_v[EwaLanes-1:1];
-      assign texk_addr_o = ewa_addr_v[EwaLanes*AW-1:AW];
+      assign texk_ereq  = ewa_req_v[EwaLanes-1:1];
+      assign texk_eaddr = ewa_addr_v[EwaLanes*AW-1:AW];
     end else begin : g_one_port
       assign ewa_data_v  = tex_rgba;
-      assign texk_req_o  = '0;
-      assign texk_addr_o = '0;
+      assign texk_ereq   = '0;
+      assign texk_eaddr  = '0;
       logic unused_texk;
       assign unused_texk = ^texk_rgba;
     end
@@ -683,8 +706,8 @@ module tu_texture_unit #(
     assign ewa_valid    = 1'b0;
     assign ewa_req      = 1'b0;
     assign ewa_addr     = '0;
-    assign texk_req_o   = '0;
-    assign texk_addr_o  = '0;
+    assign texk_ereq    = '0;
+    assign texk_eaddr   = '0;
     assign ewa_rgba     = '0;
     assign ewa_level    = '0;
     assign ewa_visited  = '0;

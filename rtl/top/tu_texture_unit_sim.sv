@@ -1,7 +1,8 @@
 // Simulation top of the texture unit: tu_texture_unit with the texel RAM, the depth-map RAM and
 // the per-pixel view and shade stream models attached; the testbench loads every texture, every
 // relief depth map, the view words and the shade words through the write port (ram_sel_i:
-// 0 texels, 1 depth, 2 views, 3 shade words) during reset, before the spans.
+// 0 texels, 1 depth, 2 views, 3 shade words) during reset, before the spans. With HasBc1 the texel
+// RAM's words are 64 bits (ram_wdata_hi_i the upper half: a BC1 block; other formats leave it 0).
 module tu_texture_unit_sim #(
   parameter int HasEwa      = {31'b0, tu_unit_cfg_pkg::HasEwa},
   parameter int HasBilinear = {31'b0, tu_unit_cfg_pkg::HasBilinear},
@@ -27,6 +28,7 @@ module tu_texture_unit_sim #(
   parameter logic [6:0] TexFormats = tu_unit_cfg_pkg::TexFormats,
   parameter int HasSrgb       = {31'b0, tu_unit_cfg_pkg::HasSrgb},
   parameter int TexelW        = tu_unit_cfg_pkg::TexelW,  // the texel RAM's word (stored texel)
+  parameter int HasBc1        = {31'b0, tu_unit_cfg_pkg::HasBc1},  // BC1 blocks: 64-bit RAM words
   parameter int Words  = 1 << tu_formats_pkg::TexRamLog2Words,
   // the depth RAM also holds the distance maps (the default scene's wall: 1,114,112 words)
   parameter int DepthWords = 2 * Words
@@ -37,6 +39,7 @@ module tu_texture_unit_sim #(
   input  logic [1:0]                            ram_sel_i,
   input  logic [tu_formats_pkg::TexAddrW-1:0]   ram_waddr_i,
   input  logic [31:0]                           ram_wdata_i,
+  input  logic [31:0]                           ram_wdata_hi_i,  // texel RAM bits 63:32 (HasBc1)
   // span input
   input  logic                                  in_valid_i,
   output logic                                  in_ready_o,
@@ -111,12 +114,15 @@ module tu_texture_unit_sim #(
   output logic [2:0]                            rflags_o   // relief::ReliefFlag bits
 );
   localparam int KP = EwaLanes > 1 ? EwaLanes - 1 : 1;  // bank ports 1..3
+  localparam int TPW = HasBc1 != 0 ? 64 : TexelW;        // texel RAM word
+  logic [63:0] ram_wdata64;
+  assign ram_wdata64 = {ram_wdata_hi_i, ram_wdata_i};
   logic                                   tex_req;
   logic [tu_formats_pkg::TexAddrW-1:0]    tex_addr;
-  logic [TexelW-1:0]                      tex_data;
+  logic [TPW-1:0]                         tex_data;
   logic [KP-1:0]                          texk_req;
   logic [KP*tu_formats_pkg::TexAddrW-1:0] texk_addr;
-  logic [KP*TexelW-1:0]                   texk_data;
+  logic [KP*TPW-1:0]                      texk_data;
   localparam int VzW = tu_formats_pkg::PomVzW;
   logic                                view_valid, view_ready, d_req;
   logic [63:0]                         view;
@@ -134,7 +140,7 @@ module tu_texture_unit_sim #(
                     .HasEwaClip(HasEwaClip), .EwaClipVariant(EwaClipVariant),
                     .HasNoise(HasNoise), .NoiseDims(NoiseDims), .NoiseCores(NoiseCores), .HasWater(HasWater),
                     .NoiseScheme(NoiseScheme), .HasAfvis(HasAfvis), .EwaLanes(EwaLanes), .EwaSetups(EwaSetups),
-                    .TexFormats(TexFormats), .HasSrgb(HasSrgb), .TexelW(TexelW)) u_tu (
+                    .TexFormats(TexFormats), .HasSrgb(HasSrgb), .TexelW(TexelW), .HasBc1(HasBc1)) u_tu (
     .clk_i, .rst_ni,
     .in_valid_i, .in_ready_o, .a_i, .b_i, .c_i, .d_i, .e_i, .f_i,
     .g_i, .h_i, .i_i, .x0_i, .x1_i, .y_i, .kux_i, .kvx_i,
@@ -155,14 +161,14 @@ module tu_texture_unit_sim #(
     .texk_req_o(texk_req), .texk_addr_o(texk_addr), .texk_data_i(texk_data)
   );
   if (EwaLanes > 1) begin : g_banked_ram
-    tu_texel_ram #(.Words(Words), .Ports(EwaLanes), .DataW(TexelW)) u_ram (
+    tu_texel_ram #(.Words(Words), .Ports(EwaLanes), .DataW(TPW)) u_ram (
       .clk_i, .rd_en_i({texk_req, tex_req}), .rd_addr_i({texk_addr, tex_addr}), .rd_data_o({texk_data, tex_data}),
-      .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i[TexelW-1:0])
+      .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata64[TPW-1:0])
     );
   end else begin : g_ram
-    tu_texel_ram #(.Words(Words), .DataW(TexelW)) u_ram (
+    tu_texel_ram #(.Words(Words), .DataW(TPW)) u_ram (
       .clk_i, .rd_en_i(tex_req), .rd_addr_i(tex_addr), .rd_data_o(tex_data),
-      .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata_i[TexelW-1:0])
+      .wr_en_i(ram_we_i && ram_sel_i == 2'd0), .wr_addr_i(ram_waddr_i), .wr_data_i(ram_wdata64[TPW-1:0])
     );
     assign texk_data = '0;
     logic unused_texk;
@@ -192,6 +198,10 @@ module tu_texture_unit_sim #(
     .clk_i, .rst_ni, .wr_en_i(ram_we_i && ram_sel_i == 2'd3), .wr_addr_i(ram_waddr_i),
     .wr_data_i(ram_wdata_i), .out_valid_o(shade_valid), .out_ready_i(shade_ready), .out_data_o(shade)
   );
+  if (TPW < 64) begin : g_no_hi
+    logic unused_hi;
+    assign unused_hi = ^ram_wdata64[63:TPW];
+  end
   logic unused;
   assign unused = ^{d_word[31:8], a_word[31:8], view[63:3 * VzW + tu_formats_pkg::PomCW + 1]};
 endmodule

@@ -12,6 +12,9 @@
 #include "Vtu_texture_unit_sim_bil.h"
 #include "Vtu_texture_unit_sim_corridor.h"
 #include "Vtu_texture_unit_sim_rec.h"
+#if TU_COSIM_K4_UNIT
+#include "Vtu_texture_unit_sim_k4.h"
+#endif
 #if TU_COSIM_CLIP_VARIANTS
 #include "Vtu_texture_unit_sim_clip1.h"
 #include "Vtu_texture_unit_sim_clip2.h"
@@ -29,6 +32,7 @@
 namespace tu::cosim {
 
 namespace {
+static_assert(static_cast<int>(tex::TexelFormat::Bc1) == 7, "tu_texture_unit TexFmtBc1 is 3'd7");
 constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;  // tu_texture_unit_sim Words
 constexpr uint64_t kDepthWords = 2 * kRamWords;                         // tu_texture_unit_sim DepthWords
 constexpr uint64_t kViewWords = kRamWords;                              // tu_view_src Words
@@ -167,17 +171,14 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       throw std::invalid_argument(s.source + ": /materials/" + name +
                                   "/relief/method: the corridor unit's relief stage has the iterative engine only");
   }
-  // Stored formats: the texel RAM holds each texture's packed words, tu_texel_decode expands them
-  // (the corridor unit's plan keeps rgba8 only; the other units every format).
-  for (const auto& [name, t] : s.textures)
-    if (t.format == static_cast<int>(tex::TexelFormat::Bc1))
-      throw std::invalid_argument(s.source + ": /textures/" + name +
-                                  "/format: bc1, but the RTL unit has no BC1 block fetch yet (tu_bc1_decode is co-simulated "
-                                  "on its own, docs/blocks/texture.md); render it with --engine cmodel or ref");
+  // Stored formats: the texel RAM holds each texture's packed words, tu_texel_decode expands them;
+  // BC1 textures as 64-bit blocks (HasBc1: tu_texel_port), the other formats one texel per word
+  // in its low bits (the corridor unit's plan keeps rgba8 only; the other units every format).
   for (const auto& [name, t] : o.corridor_unit ? s.textures : decltype(s.textures){})
     if (t.format != 0 || t.srgb)
       throw std::invalid_argument(s.source + ": /textures/" + name + (t.srgb ? "/srgb" : "/format") +
-                                  ": the corridor unit decodes rgba8 texels only (its plan's TexFormats)");
+                                  ": the corridor unit decodes rgba8 texels only (its plan's TexFormats" +
+                                  (t.format == static_cast<int>(tex::TexelFormat::Bc1) ? "; no BC1 block fetch, HasBc1 = 0)" : ")"));
   if (o.relief && !o.has_ewa)
     throw std::invalid_argument("render_rtl: relief needs the full unit (the bilinear-only unit has no relief stage)");
   // The noise unit (HasNoise, with HasWater) is in the full unit: fbm, smoke and water.
@@ -216,7 +217,11 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
                                   (o.corridor_unit ? std::string("corridor unit has no EWA border weights")
                                                    : "unit's EWA walk has the clip volume " + o.clip_variant) +
                                   " (render with --clip off or --clip " + o.clip_variant + ")");
-  ewa::EngineParams ep = o.corridor_unit ? corridor_ewa_params() : ewa::EngineParams{};
+  if (o.ewa_lanes != 1 && (o.ewa_lanes != 4 || o.corridor_unit || !o.has_ewa || s.footprint == scene::Footprint::Recurrence ||
+                           o.clip_variant != "mm_p1"))
+    throw std::invalid_argument("render_rtl: ewa_lanes " + std::to_string(o.ewa_lanes) +
+                                ": the K = 4 full unit only (analytic ellipse, clip mm_p1)");
+  ewa::EngineParams ep = o.corridor_unit || o.ewa_lanes == 4 ? corridor_ewa_params() : ewa::EngineParams{};
   ep.clip_variant = ewa::rtl_clip_code(o.clip_variant);
   if (ep.clip_variant < 0) throw std::invalid_argument("render_rtl: clip variant " + o.clip_variant + " has no RTL");
   // B2 variant: the unit with EllRecurrence = 1 (full unit only).
@@ -244,7 +249,8 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     std::optional<noise::ProcCodes> proc;  // a procedural material's constants
   };
   std::vector<Obj> objs;
-  std::vector<uint32_t> ram, depth_ram;
+  std::vector<uint64_t> ram;  // texel RAM words (64 bits with HasBc1; 32 otherwise: the low half)
+  std::vector<uint32_t> depth_ram;
   for (size_t oi = 0; oi < s.objects.size(); ++oi) {
     const auto& ob = s.objects[oi];
     Obj x{scene::build_texture(s, s.materials.at(ob.material).texture), ram.size() + 1, {}, std::nullopt, 0, 0, std::nullopt};  // after its border word
@@ -259,7 +265,11 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         for (uint8_t c : x.maps->dist->code) depth_ram.push_back(c);
     }
     const auto words = texture_words(x.tex);
-    ram.insert(ram.end(), words.begin(), words.end());
+    if (x.tex.format == static_cast<int>(tex::TexelFormat::Bc1)) {  // two words per block: one RAM word
+      for (size_t j = 0; j + 1 < words.size(); j += 2) ram.push_back(uint64_t(words[j]) | uint64_t(words[j + 1]) << 32);
+    } else {
+      ram.insert(ram.end(), words.begin(), words.end());
+    }
     if (ram.size() > kRamWords || depth_ram.size() > kDepthWords)
       throw std::runtime_error(s.source + ": textures need " + std::to_string(ram.size()) + " texel words and " +
                                std::to_string(depth_ram.size()) + " depth and distance-map words, the RTL RAM models hold " +
@@ -388,7 +398,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         pc.guard = guard;
         pc.clip = r[kClip] != 0;
         pc.noise = ob.proc.has_value();
-        pc.texfmt = ob.tex.format * 2 + (ob.tex.srgb ? 1 : 0);  // a format change drains (fk_q)
+        // A format change drains (fk_q), and so does another BC1 texture (btex_q: its base, one per object).
+        pc.texfmt = ob.tex.format * 2 + (ob.tex.srgb ? 1 : 0) +
+                    (ob.tex.format == static_cast<int>(tex::TexelFormat::Bc1) ? static_cast<int>(c.object + 1) << 4 : 0);
         pc.water = ob.proc && ob.proc->water;
         // Trilinear: one bilinear pass for a guard pixel or a lod (GL rule) at the top level.
         const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;
@@ -427,7 +439,15 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
                              std::to_string(kShadeWords));
   auto init = [&](auto& d, const std::function<void()>& tick) {
     d.ram_sel_i = 0;
-    load_words(d, tick, 0, ram);
+    for (size_t i = 0; i < ram.size(); ++i) {
+      d.ram_we_i = 1;
+      d.ram_waddr_i = static_cast<uint32_t>(i);
+      d.ram_wdata_i = static_cast<uint32_t>(ram[i]);
+      d.ram_wdata_hi_i = static_cast<uint32_t>(ram[i] >> 32);
+      tick();
+    }
+    d.ram_we_i = 0;
+    d.ram_wdata_hi_i = 0;
     d.ram_sel_i = 1;
     load_words(d, tick, 0, depth_ram);
     d.ram_sel_i = 2;
@@ -454,6 +474,13 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     run_unit(std::type_identity<Vtu_texture_unit_sim_corridor>{});
   } else if (rec) {
     run_unit(std::type_identity<Vtu_texture_unit_sim_rec>{});
+  } else if (o.ewa_lanes == 4) {
+#if TU_COSIM_K4_UNIT
+    run_unit(std::type_identity<Vtu_texture_unit_sim_k4>{});
+#else
+    throw std::invalid_argument("render_rtl: the full unit with the K = 4 EWA engine is verilated only with "
+                                "-DTU_COSIM_K4_UNIT=ON");
+#endif
   } else if (o.has_ewa && ep.clip_variant != 0) {
 #if TU_COSIM_CLIP_VARIANTS
     if (ep.clip_variant == 1) {

@@ -36,6 +36,9 @@ struct RtlRenderOptions {
   // or POM march) instead of the full unit. Its model is verilated with the multi-texel EWA engine
   // (EwaLanes = 4, EwaSetups = 3: kCorridorEwa; issue 23), so the corridor unit is the K = 4 unit.
   bool corridor_unit = false;
+  // 4: the full unit with the K = 4 EWA engine (EwaLanes 4, EwaSetups 3; BC1 on its four bank
+  // ports), verilated only with -DTU_COSIM_K4_UNIT=ON (else std::invalid_argument)
+  int ewa_lanes = 1;
   std::optional<scene::Filter> filter;         // overrides every material's filter (ewa or bilinear)
   bool relief = false;                         // apply each material's relief (POM or iterative; full unit)
   std::optional<scene::WeightSource> weights;  // overrides every material's EWA weight source

@@ -134,7 +134,7 @@ module tu_cfg_user (
   assign sizes_o = tu_unit_cfg_pkg::PomMaxLayers + tu_unit_cfg_pkg::WtabLog2N + tu_unit_cfg_pkg::Wtab2dLog2N +
                    tu_unit_cfg_pkg::PerspLanes + tu_unit_cfg_pkg::ShadeModel + tu_unit_cfg_pkg::EwaClipVariant +
                    tu_unit_cfg_pkg::NoiseDims + tu_unit_cfg_pkg::NoiseCores + tu_unit_cfg_pkg::NoiseScheme +
-                   32'(tu_unit_cfg_pkg::TexFormats) + 32'(tu_unit_cfg_pkg::HasSrgb) + tu_unit_cfg_pkg::TexelW;
+                   32'(tu_unit_cfg_pkg::TexFormats) + 32'(tu_unit_cfg_pkg::HasSrgb) + tu_unit_cfg_pkg::TexelW + 32'(tu_unit_cfg_pkg::HasBc1);
 endmodule
 SV
     verilator --lint-only -Wall "$tmp/tu_unit_cfg_pkg.sv" "$tmp/tu_cfg_user.sv" || fail "package does not lint"

@@ -370,6 +370,7 @@ struct Config {
   int tex_formats = 127;  // tu_texel_decode: bit = TexelFormat code, the formats some texture uses
   bool srgb = true;       // the sRGB decode tables
   int texel_w = 32;       // texel port / RAM word: the widest stored format's bits per texel
+  bool bc1 = true;        // BC1 block fetch (tu_texel_port): 64-bit texel RAM words
 };
 std::string package(const Config& c, const std::string& origin) {
   std::ostringstream sv;
@@ -412,6 +413,7 @@ std::string package(const Config& c, const std::string& origin) {
      << "  localparam logic [6:0] TexFormats = 7'd" << c.tex_formats << ";\n"
      << "  localparam bit HasSrgb = 1'b" << c.srgb << ";  // sRGB decode tables (tu_srgb_rom)\n"
      << "  localparam int TexelW = " << c.texel_w << ";  // texel port and RAM word: the widest stored format\n"
+     << "  localparam bit HasBc1 = 1'b" << c.bc1 << ";  // BC1 block fetch (tu_texel_port): a 64-bit texel RAM word\n"
      << "endpackage\n";
   return sv.str();
 }
@@ -481,7 +483,10 @@ uint64_t scene_stream_cycles(const scene::Scene& s, const std::function<scene::F
   for (const auto& ob : t.objects) {
     const auto tx = scene::build_texture(t, t.materials.at(ob.material).texture);
     top_level.push_back(tx.num_levels() - 1);
-    texfmt.push_back(tx.format * 2 + (tx.srgb ? 1 : 0));
+    // A BC1 texture's block address needs the texture: one of another object (the RTL render loads
+    // a texture per object) drains too (tu_texture_unit btex_q).
+    const int bc1_key = tx.format == static_cast<int>(tex::TexelFormat::Bc1) ? static_cast<int>(texfmt.size() + 1) << 4 : 0;
+    texfmt.push_back(tx.format * 2 + (tx.srgb ? 1 : 0) + bc1_key);
   }
   std::vector<ewa::PixelCost> costs;
   for (size_t i = 0; i < wl.pixels.size(); ++i) {
@@ -918,10 +923,15 @@ int run(const Options& opt) {
   planned_shaded.tex_formats = 1;
   planned_shaded.srgb = false;
   planned_shaded.texel_w = 0;
+  planned_shaded.bc1 = false;
   std::vector<std::string> format_names;
   for (const auto& o : s.objects) {
     const auto& t = s.textures.at(s.materials.at(o.material).texture);
-    if (t.format == static_cast<int>(tex::TexelFormat::Bc1)) continue;  // no BC1 block fetch in the unit yet
+    if (t.format == static_cast<int>(tex::TexelFormat::Bc1)) {  // the block fetch (64-bit RAM words)
+      planned_shaded.bc1 = true;
+      planned_shaded.srgb = planned_shaded.srgb || t.srgb;
+      continue;
+    }
     planned_shaded.tex_formats |= 1 << t.format;
     planned_shaded.srgb = planned_shaded.srgb || t.srgb;
     planned_shaded.texel_w = std::max(planned_shaded.texel_w, tex::bits_per_texel(static_cast<tex::TexelFormat>(t.format)));
@@ -929,6 +939,7 @@ int run(const Options& opt) {
   if (planned_shaded.texel_w == 0) planned_shaded.texel_w = 32;
   for (int k = 0; k < static_cast<int>(std::size(tex::kTexelFormatNames)); ++k)
     if (planned_shaded.tex_formats >> k & 1) format_names.push_back(tex::kTexelFormatNames[k]);
+  if (planned_shaded.bc1) format_names.push_back(tex::format_name(tex::TexelFormat::Bc1));
   planned_shaded.noise = noise.on;
   if (noise.on) planned_shaded.noise_dims = noise.dims, planned_shaded.noise_cores = noise.cores;
   planned_shaded.water = noise.water;
@@ -1003,7 +1014,7 @@ int run(const Options& opt) {
                                 : json(false)},
               {"wrap_modes", wrap_names},
               {"texel_formats", {{"formats", format_names}, {"srgb", planned_shaded.srgb},
-                                 {"texel_port_bits", planned_shaded.texel_w}}},
+                                 {"texel_port_bits", planned_shaded.bc1 ? 64 : planned_shaded.texel_w}}},
               {"texture_formats", plan::texel_format_plan(s, planned_frame, s.budget.min_psnr_db)},
               {"noise", noise.on ? json({{"materials", noise.materials}, {"dims", noise.dims}, {"octave_cores", noise.cores},
                                          {"scheme", scheme_json},

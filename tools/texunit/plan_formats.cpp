@@ -49,7 +49,9 @@ nlohmann::json texel_format_plan(const scene::Scene& s, const render::Frame& fra
                  {"picked", tex::format_name(pick->format)},
                  {"memory_bits_saved", static_cast<double>(authored->memory_bits) - static_cast<double>(pick->memory_bits)},
                  {"bandwidth_bits_per_pixel_saved", per_px * (authored->bits_per_texel - pick->bits_per_texel)},
-                 {"rtl", pick->format == tex::TexelFormat::Bc1 ? "bc1: no block fetch in the RTL unit yet" : "tu_texel_decode"}};
+                 {"rtl", pick->format == tex::TexelFormat::Bc1
+                            ? "tu_texel_port (HasBc1): one 64-bit block read per texel (no block cache: 64 bits on the texel port per texel read)"
+                            : "tu_texel_decode"}};
   }
   return out;
 }

@@ -44,8 +44,8 @@
   X(L8, 4, "8 bits: L[7:0] -> (L, L, L, 255)")                            \
   X(La8, 5, "16 bits: A[15:8] L[7:0] -> (L, L, L, A)")                     \
   X(A8, 6, "8 bits: A[7:0] -> (0, 0, 0, A)")
-// (tex::TexelFormat::Bc1 = 7, BC1 blocks, is C++ only until the unit fetches blocks: tu_bc1_decode
-// is co-simulated on its own.)
+// (tex::TexelFormat::Bc1 = 7, BC1 blocks, is C++ only: tu_texel_decode never sees it; the unit
+// names it TexFmtBc1 in tu_texture_unit and fetches its blocks through tu_texel_port, HasBc1.)
 
 // ---- flag bits: X(Name, bit, description) ----
 // EWA filter output (ewa::fx::Flag, tu_ewa flags_o; SV tu_formats_pkg::EwaFlagUnitDisc ...).
