@@ -121,23 +121,28 @@ TEST(TextureUnitRtl, Bc1SceneEqualsCModelCyclesPredicted) {
 
 // BC1 on the K = 4 EWA engine's four bank ports (a tu_texel_port each): the full unit verilated
 // with EwaLanes 4, EwaSetups 3 (-DTU_COSIM_K4_UNIT=ON; skipped without it), bc1.json with every
-// material on EWA: every pixel equal to the C model, with and without stalls. Cycles are printed,
-// not asserted: ewa::texture_unit_cycles with the four-lane engine does not predict the full K = 4
-// unit on this scene, BC1 or not (the same scene stored as rgba8 is printed too; docs/blocks/texture.md
-// "BC1 in the unit").
+// material on EWA: every pixel equal to the C model, with and without stalls; without stalls the
+// cycles equal ewa::texture_unit_cycles with the full unit's engine (full_unit_k4_ewa_params: the
+// four-lane engine with HasEwaClip = 1, so every pixel, plain or not, leaves the border pipeline's
+// latency after its last block and each drain between textures costs it). The same scene stored as
+// rgba8 and the default scene (every material on EWA) on the same unit, cycles = predicted too
+// (docs/blocks/texture.md "BC1 in the unit").
 TEST(TextureUnitRtl, Bc1OnTheFourLaneEwaEqualsCModel) {
 #if !TU_COSIM_K4_UNIT
   GTEST_SKIP() << "the K = 4 full unit is verilated only with -DTU_COSIM_K4_UNIT=ON";
 #else
   const auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/bc1.json");
-  auto plain = s;  // the same scene stored as rgba8 (one format: no drains)
+  auto plain = s;  // the same scene stored as rgba8 (the sRGB texture keeps its flag: one format change)
   for (auto& [name, t] : plain.textures) t.format = 0;
+  const auto def = scene::default_scene();
   struct Run {
     const char* what;
     const scene::Scene* scene;
     double stall;
   };
-  for (const Run& run : {Run{"bc1", &s, 0.0}, Run{"bc1", &s, 0.3}, Run{"rgba8", &plain, 0.0}}) {
+  for (const Run& run : {Run{"bc1", &s, 0.0}, Run{"bc1", &s, 0.3}, Run{"rgba8", &plain, 0.0},
+                         Run{"default scene", &def, 0.0}}) {
+    SCOPED_TRACE(std::string(run.what) + (run.stall > 0 ? ", 30 % stalls" : ""));
     cosim::RtlRenderOptions o;
     o.ewa_lanes = 4;
     o.filter = scene::Filter::Ewa;
@@ -146,9 +151,13 @@ TEST(TextureUnitRtl, Bc1OnTheFourLaneEwaEqualsCModel) {
     EXPECT_TRUE(r.ok()) << run.what << ": " << r.first_mismatch;
     EXPECT_EQ(r.mismatches, 0u);
     EXPECT_GT(r.frame.pixels.size(), 2000u);
-    std::printf("%s on the K = 4 EWA, stalls %.1f: %zu px, %llu mismatches, cycles %llu (ewa::texture_unit_cycles %llu)\n",
+    if (run.stall == 0) {
+      EXPECT_EQ(r.cycles, r.predicted_cycles);
+    }
+    std::printf("%s on the K = 4 EWA, stalls %.1f: %zu px, %llu mismatches, cycles %llu (predicted %llu), %.2f clocks/px\n",
                 run.what, run.stall, r.frame.pixels.size(), (unsigned long long)r.mismatches,
-                (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles);
+                (unsigned long long)r.cycles, (unsigned long long)r.predicted_cycles,
+                double(r.cycles) / double(r.frame.pixels.size()));
   }
 #endif
 }

@@ -221,7 +221,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
                            o.clip_variant != "mm_p1"))
     throw std::invalid_argument("render_rtl: ewa_lanes " + std::to_string(o.ewa_lanes) +
                                 ": the K = 4 full unit only (analytic ellipse, clip mm_p1)");
-  ewa::EngineParams ep = o.corridor_unit || o.ewa_lanes == 4 ? corridor_ewa_params() : ewa::EngineParams{};
+  ewa::EngineParams ep = o.corridor_unit     ? corridor_ewa_params()
+                         : o.ewa_lanes == 4  ? full_unit_k4_ewa_params()
+                                             : ewa::EngineParams{};
   ep.clip_variant = ewa::rtl_clip_code(o.clip_variant);
   if (ep.clip_variant < 0) throw std::invalid_argument("render_rtl: clip variant " + o.clip_variant + " has no RTL");
   // B2 variant: the unit with EllRecurrence = 1 (full unit only).

@@ -54,6 +54,15 @@ struct RtlRenderOptions {
 // The corridor unit model's EWA structure (testbench/cosim/CMakeLists.txt -GEwaLanes=4 -GEwaSetups=3;
 // no border weights): the cycle model's parameters.
 inline ewa::EngineParams corridor_ewa_params() { return ewa::four_lane_engine(); }
+// The full unit verilated with EwaLanes 4, EwaSetups 3 (-DTU_COSIM_K4_UNIT=ON): the same engine with
+// the full unit's border weights (HasEwaClip = 1), so every pixel's output is the border pipeline's
+// latency later (lane_clip; tu_ewa_walk_lanes BL), plain pixels too: each drain at a texture,
+// format or engine change costs those clocks.
+inline ewa::EngineParams full_unit_k4_ewa_params() {
+  ewa::EngineParams p = ewa::four_lane_engine();
+  p.lane_clip = true;
+  return p;
+}
 
 struct RtlRender {
   render::Frame frame;               // RTL pixels
