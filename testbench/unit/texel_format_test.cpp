@@ -203,7 +203,9 @@ TEST(TexelFormat, Bc1EncoderAndStoredTexture) {
   EXPECT_LE(blk & 0xffff, (blk >> 16) & 0xffff);
   EXPECT_EQ(tex::bc1_decode(blk, 5), (img::Rgba8{0, 0, 0, 0}));
   for (int i = 0; i < 16; ++i)
-    if (i != 5) EXPECT_EQ(tex::bc1_decode(blk, i), px[i]) << i;
+    if (i != 5) {
+      EXPECT_EQ(tex::bc1_decode(blk, i), px[i]) << i;
+    }
   // A stored bc1 texture (bricks 16 x 16, border): words = border block + every level's blocks.
   const tex::Addressing ad{tex::Wrap::Border, tex::Wrap::Repeat, {200, 100, 50, 255}};
   const tex::Texture t = tex::build_stored("t", tex::bricks(16).color, ad, TexelFormat::Bc1, false);
