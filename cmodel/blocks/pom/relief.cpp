@@ -179,7 +179,8 @@ TexelShift shift_texel_uv_fx(const Maps& m, int64_t u, int64_t v, int lw, int lh
                              const pom::View& view, Method method, int layers) {
   const int du = fmt::kPomUvF - fmt::kTexUvF;
   const auto r = shift_uv_fx(m, shift_code(u, du - lw), shift_code(v, du - lh), view, method, layers);
-  const uint32_t flags = (r.vz_guard ? kReliefVzGuard : 0) | (r.nonconv ? kReliefNonConv : 0) | (r.back ? kReliefBack : 0);
+  const uint32_t flags = (r.vz_guard ? uint32_t{kReliefVzGuard} : 0u) | (r.nonconv ? uint32_t{kReliefNonConv} : 0u) |
+                         (r.back ? uint32_t{kReliefBack} : 0u);
   return {shift_code(r.u, lw - du), shift_code(r.v, lh - du), r.n, r.steps, flags};
 }
 
