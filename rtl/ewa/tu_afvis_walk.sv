@@ -105,13 +105,21 @@ module tu_afvis_walk (
   // ---- record (latched at the hand-over)
   logic [3:0]          lev_q;
   logic [4:0]          fl_q;
-  logic signed [31:0]  x0_q, x1_q, y1_q, cu_q, cv_q;
+  logic signed [31:0]  x0_q, x1_q, y1_q;
+  logic signed [31:0]  nx_q, ny_q;  // the nearest texel (cu + 32) >> PosF, (cv + 32) >> PosF
   logic [NW-1:0]       box_q;
   logic signed [XiW-1:0] dxi_q, deta_q, dxiy_q, detay_q;
   logic signed [63:0]  ddq_q, ddqy_q, dqy_q;
-  logic [AW-1:0]       base_q, hbase_q;
+  logic [AW-1:0]       hbase_q;
   logic [3:0]          lw_q, lh_q, hlw_q, hlh_q;
   logic [2*tu_formats_pkg::WrapW-1:0] wrap_q;
+  // the texel address's level part (tu_texel_level), registered with the record
+  logic [3:0]          wl_d, hl_d, wl_q, hl_q;
+  logic [14:0]         wm_d, hm_d, wm_q, hm_q;
+  logic [AW-1:0]       lb_d, bd_d, lb_q, bd_q;
+  tu_texel_level u_level (
+    .base_i, .lw_i, .lh_i, .level_i, .wl_o(wl_d), .hl_o(hl_d), .wmask_o(wm_d), .hmask_o(hm_d),
+    .lbase_o(lb_d), .border_o(bd_d));
   logic [1:0]          wsrc_q;
   logic [PW-1:0]       au_q, av_q;      // |Pu|, |Pv|
   logic                su_q, sv_q, pz_q;  // Pu > 0, Pv > 0, P = 0
@@ -136,10 +144,12 @@ module tu_afvis_walk (
     if (st_q == AIdle && rec_valid_i) begin
       lev_q <= level_i;   fl_q <= flags_i;
       x0_q <= x0_i;       x1_q <= x1_i;      y1_q <= y1_i;
-      cu_q <= cu_i;       cv_q <= cv_i;      box_q <= box_i;
+      nx_q <= (cu_i + 32'sd32) >>> PosF;  ny_q <= (cv_i + 32'sd32) >>> PosF;  box_q <= box_i;
       dxi_q <= dxi_i;     deta_q <= deta_i;  dxiy_q <= dxiy_i;  detay_q <= detay_i;
       ddq_q <= ddq_i;     ddqy_q <= ddqy_i;  dqy_q <= dqy_i;
-      base_q <= base_i;   lw_q <= lw_i;      lh_q <= lh_i;      wrap_q <= wrap_i;
+      lw_q <= lw_i;       lh_q <= lh_i;      wrap_q <= wrap_i;
+      wl_q <= wl_d;       hl_q <= hl_d;      wm_q <= wm_d;      hm_q <= hm_d;
+      lb_q <= lb_d;       bd_q <= bd_d;
       wsrc_q <= wsrc_i;
       au_q <= pu_abs;     av_q <= pv_abs;
       su_q <= !pu_i[tu_formats_pkg::PomUvW-1] && pu_i != '0;
@@ -418,11 +428,18 @@ module tu_afvis_walk (
   end
 
   // ---- texel reads: a visible texel at its decision, the nearest texel in ANear
+  // near_q = (st_q == ANear), registered on its own (the state decode stays off the address path)
+  logic near_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) near_q <= 1'b0;
+    else near_q <= st_q == ANorm && cnt_q == '0 && wsum_q == '0;
+  end
+  // (the level part, tu_texel_level, registered with the record: wl_q ... bd_q)
   logic [AW-1:0] addr;
-  tu_texel_addr #(.CoordW(32)) u_addr (
-    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .wrap_i(wrap_q), .level_i(lev_q),
-    .x_i(st_q == ANear ? (cu_q + 32'sd32) >>> PosF : tx_q),
-    .y_i(st_q == ANear ? (cv_q + 32'sd32) >>> PosF : ty_q), .addr_o(addr)
+  tu_texel_addr_xy #(.CoordW(32)) u_addr (
+    .wl_i(wl_q), .hl_i(hl_q), .wmask_i(wm_q), .hmask_i(hm_q), .lbase_i(lb_q), .border_i(bd_q),
+    .wrap_i(wrap_q), .x_i(near_q ? nx_q : tx_q), .y_i(near_q ? ny_q : ty_q),
+    .addr_o(addr)
   );
   assign tex_req_o  = 1'b1;
   assign tex_addr_o = addr;

@@ -99,13 +99,19 @@ module tu_ewa_walk #(
   logic [3:0]          lev_q;
   logic [4:0]          fl_q;
   logic                guard_q;
-  logic signed [31:0]  x0_q, x1_q, y1_q, cu_q, cv_q;
+  logic signed [31:0]  x0_q, x1_q, y1_q;
+  logic signed [31:0]  nx_q, ny_q;  // the nearest texel (cu + 32) >> PosF, (cv + 32) >> PosF
   logic [NW-1:0]       box_q;
   logic signed [XiW-1:0] dxi_q, deta_q, dxiy_q, detay_q;
   logic signed [63:0]  ddq_q, ddqy_q, dqy_q;
-  logic [AW-1:0]       base_q;
-  logic [3:0]          lw_q, lh_q;
   logic [2*tu_formats_pkg::WrapW-1:0] wrap_q;
+  // the texel address's level part (tu_texel_level), registered with the record
+  logic [3:0]          wl_d, hl_d, wl_q, hl_q;
+  logic [14:0]         wm_d, hm_d, wm_q, hm_q;
+  logic [AW-1:0]       lb_d, bd_d, lb_q, bd_q;
+  tu_texel_level u_level (
+    .base_i, .lw_i, .lh_i, .level_i, .wl_o(wl_d), .hl_o(hl_d), .wmask_o(wm_d), .hmask_o(hm_d),
+    .lbase_o(lb_d), .border_o(bd_d));
   logic [1:0]          wsrc_q;
   logic signed [KW-1:0] kxu_q, kxv_q, kyu_q, kyv_q;  // the frame (border distance)
   // ---- walk state: current texel and row start
@@ -136,6 +142,14 @@ module tu_ewa_walk #(
       endcase
     end
   end
+  // near_q = (st_q == WNear), registered on its own (a plain flip-flop selects the nearest
+  // texel's coordinates: the state register's decode stays off the texel address path)
+  logic near_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) near_q <= 1'b0;
+    else near_q <= (st_q == WIdle && rec_valid_i && guard_i) ||
+                   (st_q == WNorm && cnt_q == '0 && wsum_q == '0);
+  end
   always_ff @(posedge clk_i) begin
     if (st_q != WDrain && st_q != WNorm) cnt_q <= '0;
     else if (st_q == WDrain && cnt_q == drain_last) cnt_q <= '0;
@@ -146,10 +160,11 @@ module tu_ewa_walk #(
     if (st_q == WIdle && rec_valid_i) begin
       lev_q <= level_i;   fl_q <= flags_i;      guard_q <= guard_i;
       x0_q <= x0_i;       x1_q <= x1_i;      y1_q <= y1_i;
-      cu_q <= cu_i;       cv_q <= cv_i;      box_q <= box_i;
+      nx_q <= (cu_i + 32'sd32) >>> PosF;  ny_q <= (cv_i + 32'sd32) >>> PosF;  box_q <= box_i;
       dxi_q <= dxi_i;     deta_q <= deta_i;  dxiy_q <= dxiy_i;  detay_q <= detay_i;
       ddq_q <= ddq_i;     ddqy_q <= ddqy_i;  dqy_q <= dqy_i;
-      base_q <= base_i;   lw_q <= lw_i;      lh_q <= lh_i;      wrap_q <= wrap_i;
+      wl_q <= wl_d;       hl_q <= hl_d;      wm_q <= wm_d;      hm_q <= hm_d;
+      lb_q <= lb_d;       bd_q <= bd_d;      wrap_q <= wrap_i;
       wsrc_q <= wsrc_i;   clip_q <= HasClip != 0 && clip_i;
       kxu_q <= KW'(dxi_i >>> PosF);   kyu_q <= KW'(deta_i >>> PosF);
       kxv_q <= KW'(dxiy_i >>> PosF);  kyv_q <= KW'(detay_i >>> PosF);
@@ -185,10 +200,10 @@ module tu_ewa_walk #(
   logic [GXW-1:0]        xic1_q, etac1_q;
   logic [AW-1:0]         addr, addr_q [AddrDly];
   logic                  in_q [2:5];
-  tu_texel_addr #(.CoordW(32)) u_addr (
-    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .wrap_i(wrap_q), .level_i(lev_q),
-    .x_i(st_q == WNear ? (cu_q + 32'sd32) >>> PosF : x_q),
-    .y_i(st_q == WNear ? (cv_q + 32'sd32) >>> PosF : y_q), .addr_o(addr)
+  tu_texel_addr_xy #(.CoordW(32)) u_addr (
+    .wl_i(wl_q), .hl_i(hl_q), .wmask_i(wm_q), .hmask_i(hm_q), .lbase_i(lb_q), .border_i(bd_q),
+    .wrap_i(wrap_q), .x_i(near_q ? nx_q : x_q), .y_i(near_q ? ny_q : y_q),
+    .addr_o(addr)
   );
   always_ff @(posedge clk_i) begin
     v1_q    <= issue;
@@ -203,7 +218,7 @@ module tu_ewa_walk #(
   end
   // the nearest-texel read (WNear) bypasses the delay line
   assign tex_req_o  = 1'b1;
-  assign tex_addr_o = st_q == WNear ? addr : clip_q ? addr_q[AddrDly-1] : addr_q[3];
+  assign tex_addr_o = near_q ? addr : clip_q ? addr_q[AddrDly-1] : addr_q[3];
 
   // ---- weights (all three sources run; the shorter pipelines are padded to 4)
   logic [WW-1:0] w_f, w_f_q;

@@ -105,8 +105,14 @@ module tu_ewa_walk_lanes #(
   logic                  busy_q, first_q, guard_q, clip_q;
   logic [3:0]            lev_q, lw_q, lh_q;
   logic [1:0]            wsrc_q;
-  logic [AW-1:0]         base_q;
   logic [2*WrW-1:0]      wrap_q;
+  // the texel address's level part (tu_texel_level), registered with the record
+  logic [3:0]            wl_d, hl_d, wl_q, hl_q;
+  logic [14:0]           wm_d, hm_d, wm_q, hm_q;
+  logic [AW-1:0]         lb_d, bd_d, lb_q, bd_q;
+  tu_texel_level u_level (
+    .base_i, .lw_i, .lh_i, .level_i, .wl_o(wl_d), .hl_o(hl_d), .wmask_o(wm_d), .hmask_o(hm_d),
+    .lbase_o(lb_d), .border_o(bd_d));
   logic signed [31:0]    x0_q, x1_q, y0_q, y1_q, xa0_q, xa1_q, ya1_q, nx_q, ny_q, bx_q, by_q;
   logic signed [63:0]    dd4_q, ddqy_q, ddqy2_q, dqy4_q;
   logic signed [XiW-1:0] dxi2_q, deta2_q, dxiy2_q, detay2_q;
@@ -163,7 +169,8 @@ module tu_ewa_walk_lanes #(
       first_q <= 1'b1;
       guard_q <= guard_i;
       clip_q  <= HasClip != 0 && clip_i && !guard_i;
-      lev_q   <= level_i;  base_q <= base_i;  lw_q <= lw_i;  lh_q <= lh_i;  wrap_q <= wrap_i;
+      lev_q   <= level_i;  lw_q <= lw_i;  lh_q <= lh_i;  wrap_q <= wrap_i;
+      wl_q    <= wl_d;  hl_q <= hl_d;  wm_q <= wm_d;  hm_q <= hm_d;  lb_q <= lb_d;  bd_q <= bd_d;
       wsrc_q  <= wsrc_i;
       // a guard record (stale box): the single texel (0, 0), the nearest texel of cu = cv = 0
       x0_q  <= guard_i ? '0 : x0_i;
@@ -230,9 +237,9 @@ module tu_ewa_walk_lanes #(
     assign xl[l] = bx_q + 32'(l % 2);
     assign yl[l] = by_q + 32'(l / 2);
     assign inbox[l] = xl[l] >= x0_q && xl[l] <= x1_q && yl[l] >= y0_q && yl[l] <= y1_q;
-    tu_texel_addr #(.CoordW(32)) u_addr (
-      .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .wrap_i(wrap_q), .level_i(lev_q),
-      .x_i(xl[l]), .y_i(yl[l]), .addr_o(addr0[l]));
+    tu_texel_addr_xy #(.CoordW(32)) u_addr (
+      .wl_i(wl_q), .hl_i(hl_q), .wmask_i(wm_q), .hmask_i(hm_q), .lbase_i(lb_q), .border_i(bd_q),
+      .wrap_i(wrap_q), .x_i(xl[l]), .y_i(yl[l]), .addr_o(addr0[l]));
     tu_ewa_bank #(.CoordW(32)) u_bank (
       .lw_i(lw_q), .lh_i(lh_q), .wrap_i(wrap_q), .level_i(lev_q), .x_i(xl[l]), .y_i(yl[l]),
       .bank_o(bank0[l]), .oob_o(oob0[l]));

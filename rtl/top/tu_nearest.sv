@@ -29,15 +29,21 @@ module tu_nearest (
   localparam int F  = tu_formats_pkg::TexUvF;
   logic [1:0]                          st_q;  // 0 idle, 1 read, 2 data, 3 output
   logic signed [UW-1:0]                x_q, y_q;
-  logic [tu_formats_pkg::TexAddrW-1:0] base_q;
-  logic [3:0]                          lw_q, lh_q, lev_q;
   logic [2*tu_formats_pkg::WrapW-1:0]   wrap_q;
   assign in_ready_o  = st_q == 2'd0;
   assign out_valid_o = st_q == 2'd3;
   assign tex_req_o   = st_q == 2'd1;
-  tu_texel_addr #(.CoordW(UW)) u_addr (
-    .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .wrap_i(wrap_q), .level_i(lev_q),
-    .x_i(x_q), .y_i(y_q), .addr_o(tex_addr_o)
+  // texel address: the level part (tu_texel_level) from the pixel's ports, registered with the
+  // texel (x, y); only the wraps, the shift and one add (tu_texel_addr_xy) lie before tex_addr_o
+  logic [3:0]                          wl_d, hl_d, wl_q, hl_q;
+  logic [14:0]                         wm_d, hm_d, wm_q, hm_q;
+  logic [tu_formats_pkg::TexAddrW-1:0] lb_d, bd_d, lb_q, bd_q;
+  tu_texel_level u_level (
+    .base_i, .lw_i, .lh_i, .level_i(guard_i ? (lw_i > lh_i ? lw_i : lh_i) : level_i),
+    .wl_o(wl_d), .hl_o(hl_d), .wmask_o(wm_d), .hmask_o(hm_d), .lbase_o(lb_d), .border_o(bd_d));
+  tu_texel_addr_xy #(.CoordW(UW)) u_addr (
+    .wl_i(wl_q), .hl_i(hl_q), .wmask_i(wm_q), .hmask_i(hm_q), .lbase_i(lb_q), .border_i(bd_q),
+    .wrap_i(wrap_q), .x_i(x_q), .y_i(y_q), .addr_o(tex_addr_o)
   );
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) st_q <= 2'd0;
@@ -54,10 +60,12 @@ module tu_nearest (
         x_q <= $signed(u_i) >>> (F + 32'(level_i));
         y_q <= $signed(v_i) >>> (F + 32'(level_i));
       end
-      lev_q   <= guard_i ? (lw_i > lh_i ? lw_i : lh_i) : level_i;
-      base_q  <= base_i;
-      lw_q    <= lw_i;
-      lh_q    <= lh_i;
+      wl_q    <= wl_d;
+      hl_q    <= hl_d;
+      wm_q    <= wm_d;
+      hm_q    <= hm_d;
+      lb_q    <= lb_d;
+      bd_q    <= bd_d;
       wrap_q  <= wrap_i;
     end
     if (st_q == 2'd2) rgba_o <= tex_data_i;

@@ -7,6 +7,11 @@
 // levelbase(L) = sum_{k<L} 2^(max(0,lw-k) + max(0,lh-k)); the border colour is the word before
 // level 0 (base - 1): a border texel (either axis outside the level in border mode) reads it, so
 // no engine's data path changes (tex::texel_addr is the C model).
+// Two parts: tu_texel_level (per level: sizes, masks, base + levelbase(L), base - 1) and
+// tu_texel_addr_xy (per texel: wraps, shift, one add). The streaming engines (tu_nearest,
+// tu_bilinear, tu_ewa_walk, ...) register the first part when they latch a pixel and use the
+// second directly; this module chains them for the engines whose level changes per texel and for
+// the block's co-simulation (tu_texel_addr_sim).
 // Modes (default tu_unit_cfg_pkg::WrapModes; bit = Wrap code) leaves out the modes no texture uses;
 // a code whose mode is left out is addressed as repeat (the plan's unit never receives one).
 module tu_texel_addr #(
@@ -23,27 +28,13 @@ module tu_texel_addr #(
   output logic [tu_formats_pkg::TexAddrW-1:0]  addr_o
 );
   localparam int AW = tu_formats_pkg::TexAddrW;
-  localparam int WW = tu_formats_pkg::WrapW;
-
-  logic [3:0]    wl, hl;  // log2 size of level L
-  logic [AW-1:0] lbase, xw, yw, wmask, hmask;
-  logic          xo, yo;  // border texels
-  tu_wrap_axis #(.CoordW(CoordW), .Modes(Modes)) u_x (
-    .x_i, .l_i(wl), .m_i(wmask), .mode_i(wrap_i[WW-1:0]), .idx_o(xw), .oob_o(xo));
-  tu_wrap_axis #(.CoordW(CoordW), .Modes(Modes)) u_y (
-    .x_i(y_i), .l_i(hl), .m_i(hmask), .mode_i(wrap_i[2*WW-1:WW]), .idx_o(yw), .oob_o(yo));
-  assign wl    = (lw_i > level_i) ? lw_i - level_i : 4'd0;
-  assign hl    = (lh_i > level_i) ? lh_i - level_i : 4'd0;
-  assign wmask = (AW'(1) << wl) - AW'(1);
-  assign hmask = (AW'(1) << hl) - AW'(1);
-  always_comb begin
-    lbase = '0;
-    for (int k = 0; k < tu_formats_pkg::TexMaxLevels; k++) begin
-      if (4'(k) < level_i) begin
-        lbase = lbase + (AW'(1) << ((lw_i > 4'(k) ? 32'(lw_i) - 32'(k) : 0) +
-                                    (lh_i > 4'(k) ? 32'(lh_i) - 32'(k) : 0)));
-      end
-    end
-  end
-  assign addr_o = (xo || yo) ? base_i - AW'(1) : base_i + lbase + (yw << wl) + xw;
+  logic [3:0]    wl, hl;
+  logic [14:0]   wmask, hmask;
+  logic [AW-1:0] lbase, border;
+  tu_texel_level u_level (
+    .base_i, .lw_i, .lh_i, .level_i, .wl_o(wl), .hl_o(hl), .wmask_o(wmask), .hmask_o(hmask),
+    .lbase_o(lbase), .border_o(border));
+  tu_texel_addr_xy #(.CoordW(CoordW), .Modes(Modes)) u_xy (
+    .wl_i(wl), .hl_i(hl), .wmask_i(wmask), .hmask_i(hmask), .lbase_i(lbase), .border_i(border),
+    .wrap_i, .x_i, .y_i, .addr_o);
 endmodule

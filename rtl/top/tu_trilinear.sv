@@ -36,6 +36,7 @@ module tu_trilinear (
   logic [2*tu_formats_pkg::WrapW-1:0]   wrap_q;
   logic [tu_formats_pkg::TexAddrW-1:0] base_q;
   logic [3:0]                          lw_q, lh_q, lev_q;
+  logic [3:0]                          levb_q;  // the pass's level: lev_q, then lev_q + 1
   logic [LF-1:0]                       f_q;
   logic [31:0]                         a_q;
 
@@ -50,7 +51,7 @@ module tu_trilinear (
   assign b_out_ready = state_q == WaitA || state_q == WaitB;
   tu_bilinear u_bil (
     .clk_i, .rst_ni, .in_valid_i(b_in_valid), .in_ready_o(b_in_ready),
-    .u_i(u_q), .v_i(v_q), .guard_i(guard_q), .level_i(state_q == IssueB ? lev_q + 4'd1 : lev_q),
+    .u_i(u_q), .v_i(v_q), .guard_i(guard_q), .level_i(levb_q),
     .base_i(base_q), .lw_i(lw_q), .lh_i(lh_q), .wrap_i(wrap_q),
     .tex_req_o, .tex_addr_o, .tex_data_i,
     .out_valid_o(b_out_valid), .out_ready_i(b_out_ready), .rgba_o(b_rgba)
@@ -100,9 +101,11 @@ module tu_trilinear (
       wrap_q   <= wrap_i;
       single_q <= guard_i || l_in >= top_in;
       lev_q    <= l_in >= top_in ? top_in : l_in;
+      levb_q   <= l_in >= top_in ? top_in : l_in;
       f_q      <= lod_i[LF-1:0];
     end
     if (state_q == WaitA && b_out_valid) a_q <= b_rgba;
+    if (state_q == WaitA) levb_q <= lev_q + 4'd1;  // (a register: no adder before u_bil's level)
     if (b_out_valid && (state_q == WaitA ? single_q : state_q == WaitB))
       rgba_o <= state_q == WaitA ? b_rgba : blend;
   end

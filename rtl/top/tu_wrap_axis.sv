@@ -3,6 +3,8 @@
 //   repeat x & m; mirror bit l of x ? ~x & m : x & m; clamp to [0, m];
 //   border x & m with oob_o = x outside [0, m] (the border colour); mirror once
 //   min(x < 0 ? ~x : x, m) (~x = -1 - x: mirrored about -1/2).
+// m is a mask (2^l - 1), so no compare needs a carry chain: x outside [0, m] <=> x has a bit
+// outside m (x & ~m != 0, the sign bit included); x > m <=> x >= 0 and x & ~m != 0.
 // Modes (bit = tu_formats_pkg::Wrap* code) keeps a mode's logic; a code whose mode is left out
 // wraps as repeat (the plan's unit never receives one).
 module tu_wrap_axis #(
@@ -17,27 +19,35 @@ module tu_wrap_axis #(
   output logic                                oob_o
 );
   localparam int AW = tu_formats_pkg::TexAddrW;
-  logic signed [CoordW-1:0] mx;   // mirrored about -1/2 (mirror once)
+  logic [CoordW-1:0]        mw;   // m as CoordW bits (m < 2^15 <= 2^(CoordW-1))
+  logic [CoordW-1:0]        mx;   // mirrored about -1/2 (mirror once): x < 0 ? ~x : x
   /* verilator lint_off UNUSEDSIGNAL */
   logic signed [CoordW-1:0] xs;   // x >> l: the repeat number (its parity is used)
   /* verilator lint_on UNUSEDSIGNAL */
   logic                     odd;  // bit l of x: an odd repeat (mirror)
+  logic                     neg;  // x < 0
+  logic                     out;  // x outside [0, m]
   logic                     above;  // x > m
+  logic                     mx_above;  // mx > m
+  assign mw       = CoordW'(m_i);
+  assign neg      = x_i[CoordW-1];
+  assign mx       = neg ? ~x_i : x_i;
+  assign xs       = x_i >>> l_i;
+  assign odd      = xs[0];
+  assign out      = |(x_i & ~mw);
+  assign above    = !neg && out;
+  assign mx_above = |(mx & ~mw);
   always_comb begin
-    mx    = x_i < 0 ? ~x_i : x_i;
-    xs    = x_i >>> l_i;
-    odd   = xs[0];
-    above = x_i > $signed(CoordW'(m_i));
     oob_o = 1'b0;
     idx_o = AW'(x_i) & m_i;  // repeat, and the default of a left-out mode
     if (Modes[tu_formats_pkg::WrapMirror] && mode_i == tu_formats_pkg::WrapMirror) begin
-      idx_o = odd ? AW'(~x_i) & m_i : AW'(x_i) & m_i;
+      idx_o = AW'(x_i ^ {CoordW{odd}}) & m_i;
     end else if (Modes[tu_formats_pkg::WrapClamp] && mode_i == tu_formats_pkg::WrapClamp) begin
-      idx_o = x_i < 0 ? '0 : above ? m_i : AW'(x_i);
+      idx_o = neg ? '0 : above ? m_i : AW'(x_i) & m_i;
     end else if (Modes[tu_formats_pkg::WrapBorder] && mode_i == tu_formats_pkg::WrapBorder) begin
-      oob_o = x_i < 0 || above;
+      oob_o = out;
     end else if (Modes[tu_formats_pkg::WrapMirrorOnce] && mode_i == tu_formats_pkg::WrapMirrorOnce) begin
-      idx_o = (mx > $signed(CoordW'(m_i))) ? m_i : AW'(mx);
+      idx_o = mx_above ? m_i : AW'(mx) & m_i;
     end
   end
 endmodule
