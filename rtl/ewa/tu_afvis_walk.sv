@@ -428,17 +428,11 @@ module tu_afvis_walk (
   end
 
   // ---- texel reads: a visible texel at its decision, the nearest texel in ANear
-  // near_q = (st_q == ANear), registered on its own (the state decode stays off the address path)
-  logic near_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) near_q <= 1'b0;
-    else near_q <= st_q == ANorm && cnt_q == '0 && wsum_q == '0;
-  end
   // (the level part, tu_texel_level, registered with the record: wl_q ... bd_q)
   logic [AW-1:0] addr;
   tu_texel_addr_xy #(.CoordW(32)) u_addr (
     .wl_i(wl_q), .hl_i(hl_q), .wmask_i(wm_q), .hmask_i(hm_q), .lbase_i(lb_q), .border_i(bd_q),
-    .wrap_i(wrap_q), .x_i(near_q ? nx_q : tx_q), .y_i(near_q ? ny_q : ty_q),
+    .wrap_i(wrap_q), .x_i(st_q == ANear ? nx_q : tx_q), .y_i(st_q == ANear ? ny_q : ty_q),
     .addr_o(addr)
   );
   assign tex_req_o  = 1'b1;

@@ -142,8 +142,9 @@ module tu_ewa_walk #(
       endcase
     end
   end
-  // near_q = (st_q == WNear), registered on its own (a plain flip-flop selects the nearest
-  // texel's coordinates: the state register's decode stays off the texel address path)
+  // near_q = (st_q == WNear), registered on its own: it selects the nearest texel's address for
+  // tex_addr_o (the nearest texel's coordinates are loaded into x_q, y_q, so that the texel
+  // address has no coordinate select)
   logic near_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) near_q <= 1'b0;
@@ -168,7 +169,9 @@ module tu_ewa_walk #(
       wsrc_q <= wsrc_i;   clip_q <= HasClip != 0 && clip_i;
       kxu_q <= KW'(dxi_i >>> PosF);   kyu_q <= KW'(deta_i >>> PosF);
       kxv_q <= KW'(dxiy_i >>> PosF);  kyv_q <= KW'(detay_i >>> PosF);
-      x_q <= x0_i;        y_q <= y0_i;
+      // a guard record reads only the nearest texel: x_q, y_q hold it from the start
+      x_q <= guard_i ? (cu_i + 32'sd32) >>> PosF : x0_i;
+      y_q <= guard_i ? (cv_i + 32'sd32) >>> PosF : y0_i;
       q_q <= q0_i;        dq_q <= dq0_i;     xi_q <= xi0_i;     eta_q <= eta0_i;
       qr_q <= q0_i;       dqr_q <= dq0_i;    er_q <= ey0_i;     xir_q <= xi0_i;    etar_q <= eta0_i;
     end else if (issue && !last) begin
@@ -191,6 +194,9 @@ module tu_ewa_walk #(
         eta_q  <= etar_q + detay_q;
         etar_q <= etar_q + detay_q;
       end
+    end else if (st_q == WNorm && cnt_q == '0 && wsum_q == '0) begin  // -> WNear: the nearest texel
+      x_q <= nx_q;
+      y_q <= ny_q;
     end
   end
 
@@ -202,7 +208,7 @@ module tu_ewa_walk #(
   logic                  in_q [2:5];
   tu_texel_addr_xy #(.CoordW(32)) u_addr (
     .wl_i(wl_q), .hl_i(hl_q), .wmask_i(wm_q), .hmask_i(hm_q), .lbase_i(lb_q), .border_i(bd_q),
-    .wrap_i(wrap_q), .x_i(near_q ? nx_q : x_q), .y_i(near_q ? ny_q : y_q),
+    .wrap_i(wrap_q), .x_i(x_q), .y_i(y_q),
     .addr_o(addr)
   );
   always_ff @(posedge clk_i) begin
