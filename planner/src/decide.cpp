@@ -24,6 +24,60 @@
 
 namespace tu::plan {
 
+void pick_relief(ReliefChoice& c, double min_psnr_db) {
+  const ReliefCandidate* best = nullptr;
+  for (const auto& k : c.cands)
+    if (k.psnr_db >= min_psnr_db && (!best || k.cycles_per_px < best->cycles_per_px)) best = &k;
+  c.meets = best != nullptr;
+  if (!best)
+    for (const auto& k : c.cands)
+      if (!best || k.psnr_db > best->psnr_db) best = &k;
+  if (best) c.chosen = best->method;
+}
+
+TextureNeeds texture_needs(const scene::Scene& s) {
+  TextureNeeds n;
+  // Wrap modes (tu_texel_addr): repeat always, another mode when a texture an object samples uses it.
+  for (const auto& o : s.objects) {
+    const auto& a = s.textures.at(s.materials.at(o.material).texture).addressing;
+    n.wrap_modes |= 1 << static_cast<int>(a.u) | 1 << static_cast<int>(a.v);
+  }
+  for (int k = 0; k < 5; ++k)
+    if (n.wrap_modes >> k & 1) n.wrap_names.push_back(scene::kWrapNames[k]);
+  // Texel formats (tu_texel_decode): the formats and sRGB of the textures objects sample (rgba8,
+  // the decode's default path, always); the port as wide as the widest of them.
+  n.texel_w = 0;
+  for (const auto& o : s.objects) {
+    const auto& t = s.textures.at(s.materials.at(o.material).texture);
+    if (t.format == static_cast<int>(tex::TexelFormat::Bc1)) {  // the block fetch (64-bit RAM words)
+      n.bc1 = true;
+      n.srgb = n.srgb || t.srgb;
+      continue;
+    }
+    n.tex_formats |= 1 << t.format;
+    n.srgb = n.srgb || t.srgb;
+    n.texel_w = std::max(n.texel_w, tex::bits_per_texel(static_cast<tex::TexelFormat>(t.format)));
+  }
+  if (n.texel_w == 0) n.texel_w = 32;
+  for (int k = 0; k < static_cast<int>(std::size(tex::kTexelFormatNames)); ++k)
+    if (n.tex_formats >> k & 1) n.format_names.push_back(tex::kTexelFormatNames[k]);
+  if (n.bc1) n.format_names.push_back(tex::format_name(tex::TexelFormat::Bc1));
+  return n;
+}
+
+NoiseScheme choose_noise_scheme(double max_cycles, uint64_t pipelined, uint64_t serial, int cores) {
+  NoiseScheme ns;
+  ns.octave_serial = max_cycles > 0 && double(serial) <= max_cycles && cores > 1;
+  ns.max_cycles = max_cycles > 0 ? max_cycles : 0;
+  ns.pipelined_cycles = pipelined;
+  ns.octave_serial_cycles = serial;
+  ns.why = max_cycles <= 0                     ? "no cycle budget: the fastest"
+           : ns.octave_serial                  ? "the octave-serial unit meets max_cycles with one core"
+           : double(pipelined) <= max_cycles   ? "only the pipelined unit meets max_cycles"
+                                               : "no scheme meets max_cycles: the fastest";
+  return ns;
+}
+
 namespace {
 // PSNR over a's covered pixels of the objects `keep` accepts (render::psnr_covered).
 double psnr_objects(const render::Frame& a, const render::Frame& b, const std::function<bool(int object)>& keep) {
@@ -72,14 +126,7 @@ ReliefChoice choose_relief(const scene::Scene& s, const std::string& material, c
     k.steps_per_px = steps / n;
     c.cands.push_back(k);
   }
-  const ReliefCandidate* best = nullptr;
-  for (const auto& k : c.cands)
-    if (k.psnr_db >= s.budget.min_psnr_db && (!best || k.cycles_per_px < best->cycles_per_px)) best = &k;
-  c.meets = best != nullptr;
-  if (!best)
-    for (const auto& k : c.cands)
-      if (!best || k.psnr_db > best->psnr_db) best = &k;
-  c.chosen = best->method;
+  pick_relief(c, s.budget.min_psnr_db);
   return c;
 }
 
@@ -556,37 +603,10 @@ Plan decide(const scene::Scene& scene_in, const std::vector<TRow>& table, const 
   planned_shaded = planned;
   planned_shaded.shading = shade;
   planned_shaded.distance_map = dist_map;
-  // Wrap modes (tu_texel_addr): repeat always, another mode when a texture an object samples uses it.
-  planned_shaded.wrap_modes = 1;
-  std::vector<std::string>& wrap_names = plan.wrap_names;
-  for (const auto& o : s.objects) {
-    const auto& a = s.textures.at(s.materials.at(o.material).texture).addressing;
-    planned_shaded.wrap_modes |= 1 << static_cast<int>(a.u) | 1 << static_cast<int>(a.v);
-  }
-  for (int k = 0; k < 5; ++k)
-    if (planned_shaded.wrap_modes >> k & 1) wrap_names.push_back(scene::kWrapNames[k]);
-  // Texel formats (tu_texel_decode): the formats and sRGB of the textures objects sample (rgba8,
-  // the decode's default path, always); the port as wide as the widest of them.
-  planned_shaded.tex_formats = 1;
-  planned_shaded.srgb = false;
-  planned_shaded.texel_w = 0;
-  planned_shaded.bc1 = false;
-  std::vector<std::string>& format_names = plan.format_names;
-  for (const auto& o : s.objects) {
-    const auto& t = s.textures.at(s.materials.at(o.material).texture);
-    if (t.format == static_cast<int>(tex::TexelFormat::Bc1)) {  // the block fetch (64-bit RAM words)
-      planned_shaded.bc1 = true;
-      planned_shaded.srgb = planned_shaded.srgb || t.srgb;
-      continue;
-    }
-    planned_shaded.tex_formats |= 1 << t.format;
-    planned_shaded.srgb = planned_shaded.srgb || t.srgb;
-    planned_shaded.texel_w = std::max(planned_shaded.texel_w, tex::bits_per_texel(static_cast<tex::TexelFormat>(t.format)));
-  }
-  if (planned_shaded.texel_w == 0) planned_shaded.texel_w = 32;
-  for (int k = 0; k < static_cast<int>(std::size(tex::kTexelFormatNames)); ++k)
-    if (planned_shaded.tex_formats >> k & 1) format_names.push_back(tex::kTexelFormatNames[k]);
-  if (planned_shaded.bc1) format_names.push_back(tex::format_name(tex::TexelFormat::Bc1));
+  const TextureNeeds tn = texture_needs(s);
+  planned_shaded.wrap_modes = tn.wrap_modes, planned_shaded.tex_formats = tn.tex_formats;
+  planned_shaded.srgb = tn.srgb, planned_shaded.texel_w = tn.texel_w, planned_shaded.bc1 = tn.bc1;
+  plan.wrap_names = tn.wrap_names, plan.format_names = tn.format_names;
   planned_shaded.noise = noise.on;
   if (noise.on) planned_shaded.noise_dims = noise.dims, planned_shaded.noise_cores = noise.cores;
   planned_shaded.water = noise.water;
@@ -625,17 +645,9 @@ Plan decide(const scene::Scene& scene_in, const std::vector<TRow>& table, const 
   // else the pipelined one (also without a cycle budget).
   if (noise.on) {
     const uint64_t serial = scene_cycles(planned_filter, relief, planned_weights, planned.ell_recurrence, noise.cores) + spec_shade;
-    const bool pick_serial = max_cycles > 0 && double(serial) <= max_cycles && noise.cores > 1;
+    plan.noise_scheme = choose_noise_scheme(max_cycles, spec_cycles, serial, noise.cores);
+    const bool pick_serial = plan.noise_scheme.octave_serial;
     planned_shaded.noise_scheme = pick_serial ? 1 : 0;
-    NoiseScheme& ns = plan.noise_scheme;
-    ns.octave_serial = pick_serial;
-    ns.max_cycles = max_cycles > 0 ? max_cycles : 0;
-    ns.pipelined_cycles = spec_cycles;
-    ns.octave_serial_cycles = serial;
-    ns.why = max_cycles <= 0                          ? "no cycle budget: the fastest"
-             : pick_serial                            ? "the octave-serial unit meets max_cycles with one core"
-             : double(spec_cycles) <= max_cycles ? "only the pipelined unit meets max_cycles"
-                                                      : "no scheme meets max_cycles: the fastest";
     if (pick_serial) spec_cycles = serial;
   }
   const uint64_t full_cycles = scene_cycles(planned_filter, true, planned_weights, false) + full_shade;  // the same picture

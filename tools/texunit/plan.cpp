@@ -141,7 +141,7 @@ int run(const Options& opt) {
   const uint64_t spec_cycles = plan.spec_cycles, full_cycles = plan.full_cycles, authored_cycles = plan.authored_cycles;
   auto weight_render_db = [&](const TRow& r) { return plan.weight_render_db(r); };
   auto clip_render_db = [&](const TRow& r) { return plan.clip_db.at(r.variant); };
-  const std::string& g_cost_basis = plan.cost_basis;
+  const std::string& cost_basis = plan.cost_basis;
 
   json hist_lod(plan.lod_histogram), hist_aniso(plan.aniso_histogram);
   json feline_json = json::object();
@@ -243,7 +243,7 @@ int run(const Options& opt) {
                                 {"model", "ewa::stream_cycles on the C-model render (texture path): equal to the RTL"}}},
               {"scene_us", {{"specialised", spec.area_measured() ? json(double(spec_cycles) / spec.fmax_mhz()) : json(kNoArea)},
                             {"full", full.area_measured() ? json(double(full_cycles) / full.fmax_mhz()) : json(kNoArea)}}},
-              {"cheapest_by", g_cost_basis},
+              {"cheapest_by", cost_basis},
               {"area_note", "cells are the sum of the blocks' Yosys cells (each block synthesised alone)"}};
   json pipes = json::object();
   for (const auto& pc : pipelines) {
@@ -350,7 +350,7 @@ int run(const Options& opt) {
               "cells: sum of the blocks' Yosys cells (each block synthesised alone; texel fetch not included)\n"
               "area: sum of the blocks' osu018 standard-cell area; fmax: the slowest block's (each block alone,\n"
               "  docs/area-timing.md); scene us = scene cycles / fmax; cheapest variant by %s\n",
-              g_cost_basis.c_str());
+              cost_basis.c_str());
   return 0;
 }
 

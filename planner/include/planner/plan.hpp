@@ -59,6 +59,20 @@ struct Config {
   bool bc1 = true;        // BC1 block fetch (tu_texel_port): 64-bit texel RAM words
 };
 
+// What the texel addressing and decode need for the textures the scene's objects sample: the wrap
+// modes (bit = tex::Wrap code; repeat always), the storage formats (bit = TexelFormat code; rgba8,
+// the decode's default path, always; BC1 as the block fetch instead), sRGB, and the texel port's
+// width (the widest non-BC1 format's bits per texel; 32 when there is none).
+struct TextureNeeds {
+  int wrap_modes = 1;
+  std::vector<std::string> wrap_names;
+  int tex_formats = 1;
+  bool srgb = false, bc1 = false;
+  int texel_w = 32;
+  std::vector<std::string> format_names;
+};
+TextureNeeds texture_needs(const scene::Scene& s);
+
 // Feline for an anisotropic material (docs/blocks/feline.md): the probe caps 2, 4, 8, 16 in turn,
 // the first whose float render meets min_psnr_db on the material's pixels against the float EWA;
 // chosen when its clocks per pixel (the RTL unit's exact cycle model on the material's objects
@@ -87,6 +101,10 @@ struct ReliefChoice {
   int layers = 0;
   std::vector<ReliefCandidate> cands;
 };
+// Sets c.chosen (unchanged when there is no candidate) and c.meets: the candidate with the fewest
+// cycles per pixel among those meeting min_psnr_db (the first of equals), else the one with the
+// highest PSNR.
+void pick_relief(ReliefChoice& c, double min_psnr_db);
 
 // The noise unit (docs/blocks/noise.md §5): in the unit when a material is procedural.
 struct NoisePlan {
@@ -104,6 +122,9 @@ struct NoiseScheme {
   uint64_t pipelined_cycles = 0, octave_serial_cycles = 0;
   std::string why;
 };
+// The scheme for the frame's clocks with each (max_cycles <= 0: no budget, the pipelined unit);
+// `cores`: the pipelined unit's octave cores (with one, octave-serial saves nothing).
+NoiseScheme choose_noise_scheme(double max_cycles, uint64_t pipelined, uint64_t serial, int cores);
 
 // AF with parallax visibility (docs/blocks/afvis.md): tu_afvis in the unit when a material asks.
 struct AfvisPlan {
