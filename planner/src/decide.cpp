@@ -65,6 +65,37 @@ TextureNeeds texture_needs(const scene::Scene& s) {
   return n;
 }
 
+std::map<std::string, int> lod_histogram(const std::vector<double>& lod) {
+  std::map<std::string, int> h;
+  for (double l : lod) ++h[std::to_string(static_cast<int>(std::floor(l)))];
+  return h;
+}
+
+std::map<std::string, int> aniso_histogram(const std::vector<double>& aniso) {
+  std::map<std::string, int> h;
+  for (double a : aniso) ++h[a < 2 ? "1-2" : a < 4 ? "2-4" : a < 8 ? "4-8" : a < 16 ? "8-16" : "16+"];
+  return h;
+}
+
+Footprints footprints(const scene::Scene& s, const render::Frame& f) {
+  Footprints fp;
+  for (const auto& p : f.pixels) {
+    fp.aniso.push_back(p.aniso);
+    fp.lod.push_back(p.footprint_lod);
+    const auto& m = s.materials.at(s.objects[static_cast<size_t>(p.object)].material);
+    ++fp.material_pixels[m.name];
+    if (m.relief) {
+      fp.relief = true;
+      fp.max_layers = std::max(fp.max_layers, m.relief->layers);
+      const auto meth = m.relief->method;
+      (meth == scene::ReliefMethod::Iterative                                                          ? fp.iterative
+       : meth == scene::ReliefMethod::DistanceMap || meth == scene::ReliefMethod::DistanceMapRefined ? fp.distance_map
+                                                                                                      : fp.pom) = true;
+    }
+  }
+  return fp;
+}
+
 NoiseScheme choose_noise_scheme(double max_cycles, uint64_t pipelined, uint64_t serial, int cores) {
   NoiseScheme ns;
   ns.octave_serial = max_cycles > 0 && double(serial) <= max_cycles && cores > 1;
@@ -352,28 +383,15 @@ Plan decide(const scene::Scene& scene_in, const std::vector<TRow>& table, const 
   //    footprint is recorded for every pixel whatever the filter).
   const render::Frame bil = render::render_ref(s, scene::Filter::Bilinear);
   if (bil.pixels.empty()) throw std::runtime_error(s.source + ": the scene covers no pixel");
-  std::vector<double> aniso, lod;
-  std::map<std::string, size_t> material_pixels;
-  bool &relief = plan.relief, &iterative = plan.iterative, &pom = plan.pom, &dist_map = plan.distance_map;
-  int max_layers = 0;
-  for (const auto& p : bil.pixels) {
-    aniso.push_back(p.aniso);
-    lod.push_back(p.footprint_lod);
-    const auto& m = s.materials.at(s.objects[static_cast<size_t>(p.object)].material);
-    ++material_pixels[m.name];
-    if (m.relief) {
-      relief = true;
-      max_layers = std::max(max_layers, m.relief->layers);
-      const auto meth = m.relief->method;
-      (meth == scene::ReliefMethod::Iterative                                           ? iterative
-       : meth == scene::ReliefMethod::DistanceMap || meth == scene::ReliefMethod::DistanceMapRefined ? dist_map
-                                                                                         : pom) = true;
-    }
-  }
+  const Footprints fp = footprints(s, bil);
+  const std::map<std::string, size_t>& material_pixels = fp.material_pixels;
+  plan.relief = fp.relief, plan.iterative = fp.iterative, plan.pom = fp.pom, plan.distance_map = fp.distance_map;
+  const bool relief = fp.relief, iterative = fp.iterative, pom = fp.pom, dist_map = fp.distance_map;
+  const int max_layers = fp.max_layers;
   plan.covered_pixels = bil.pixels.size();
-  plan.p99_aniso = quantile(aniso, kQuantile), plan.p99_lod = quantile(lod, kQuantile);
-  for (double l : lod) ++plan.lod_histogram[std::to_string(static_cast<int>(std::floor(l)))];
-  for (double a : aniso) ++plan.aniso_histogram[a < 2 ? "1-2" : a < 4 ? "2-4" : a < 8 ? "4-8" : a < 16 ? "8-16" : "16+"];
+  plan.p99_aniso = quantile(fp.aniso, kQuantile), plan.p99_lod = quantile(fp.lod, kQuantile);
+  plan.lod_histogram = lod_histogram(fp.lod);
+  plan.aniso_histogram = aniso_histogram(fp.aniso);
 
   // 2. Filter per material (each span picks its engine): the cheapest whose footprint gate passes
   //    on the material's pixels and whose render meets min_psnr_db there against the float EWA

@@ -2,6 +2,7 @@
 // candidates, noise scheme against a cycle budget.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -137,6 +138,54 @@ TEST(PlanTextures, Bc1IsTheBlockFetchNotADecodeFormat) {
   EXPECT_EQ(n.tex_formats, 1);
   EXPECT_EQ(n.texel_w, 32);  // no decoded format: the default port
   EXPECT_EQ(n.format_names, (std::vector<std::string>{"rgba8", "bc1"}));
+}
+
+}  // namespace
+}  // namespace tu::plan
+
+namespace tu::plan {
+namespace {
+
+TEST(PlanFootprint, Histograms) {
+  EXPECT_EQ(lod_histogram({-0.5, 0.0, 0.49, 1.0, 2.7}),
+            (std::map<std::string, int>{{"-1", 1}, {"0", 2}, {"1", 1}, {"2", 1}}));
+  EXPECT_EQ(aniso_histogram({1.0, 1.99, 2.0, 3.9, 4, 8, 15.9, 16, 100}),
+            (std::map<std::string, int>{{"1-2", 2}, {"2-4", 2}, {"4-8", 1}, {"8-16", 2}, {"16+", 2}}));
+  EXPECT_TRUE(lod_histogram({}).empty());
+}
+
+TEST(PlanFootprint, PixelsPerMaterialAndReliefEngines) {
+  scene::Scene s;
+  s.materials["flat"].name = "flat", s.materials["bumpy"].name = "bumpy", s.materials["dm"].name = "dm";
+  s.materials["bumpy"].relief.emplace(), s.materials["dm"].relief.emplace();
+  s.materials["bumpy"].relief->method = scene::ReliefMethod::Iterative, s.materials["bumpy"].relief->layers = 16;
+  s.materials["dm"].relief->method = scene::ReliefMethod::DistanceMapRefined, s.materials["dm"].relief->layers = 64;
+  scene::Object a, b, c;
+  a.material = "flat", b.material = "bumpy", c.material = "dm";
+  s.objects = {a, b, c};
+  render::Frame f;
+  auto px = [&](int object, double lod, double aniso) {
+    render::PixelRecord p;
+    p.object = object, p.footprint_lod = lod, p.aniso = aniso;
+    f.pixels.push_back(p);
+  };
+  px(0, 0.25, 1.5), px(0, 1.5, 3), px(1, -1, 1);  // no pixel of the distance-map object
+  Footprints fp = footprints(s, f);
+  EXPECT_EQ(fp.material_pixels, (std::map<std::string, size_t>{{"bumpy", 1}, {"flat", 2}}));
+  EXPECT_EQ(fp.lod, (std::vector<double>{0.25, 1.5, -1}));
+  EXPECT_EQ(fp.aniso, (std::vector<double>{1.5, 3, 1}));
+  EXPECT_TRUE(fp.relief);
+  EXPECT_TRUE(fp.iterative);
+  EXPECT_FALSE(fp.pom);
+  EXPECT_FALSE(fp.distance_map);  // authored, but covers no pixel
+  EXPECT_EQ(fp.max_layers, 16);
+  px(2, 0, 1);
+  fp = footprints(s, f);
+  EXPECT_TRUE(fp.distance_map);
+  EXPECT_EQ(fp.max_layers, 64);
+  s.materials["bumpy"].relief->method = scene::ReliefMethod::PomFixed;
+  EXPECT_TRUE(footprints(s, f).pom);
+  EXPECT_FALSE(footprints(s, f).iterative);
 }
 
 }  // namespace

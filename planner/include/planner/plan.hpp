@@ -18,6 +18,7 @@
 #include "planner/pipeline.hpp"
 #include "planner/policy.hpp"
 #include "texunit/formats.hpp"
+#include "texunit/render.hpp"
 #include "texunit/scene.hpp"
 #include "texunit/shading.hpp"
 
@@ -58,6 +59,22 @@ struct Config {
   int texel_w = 32;       // texel port / RAM word: the widest stored format's bits per texel
   bool bc1 = true;        // BC1 block fetch (tu_texel_port): 64-bit texel RAM words
 };
+
+// Step 1 of the plan: per covered pixel of a render (the float bilinear reference, which records
+// every pixel's footprint) its anisotropy and footprint LOD; pixels per material; the relief
+// engines the authored materials need (POM: pom_fixed / pom_adaptive; distance map: both
+// distance-map methods) and their largest layer count.
+struct Footprints {
+  std::vector<double> aniso, lod;
+  std::map<std::string, size_t> material_pixels;
+  bool relief = false, pom = false, iterative = false, distance_map = false;
+  int max_layers = 0;
+};
+Footprints footprints(const scene::Scene& s, const render::Frame& f);
+// Histograms of the JSON: LOD by floor (key "-1", "0", ...), anisotropy in "1-2", "2-4", "4-8",
+// "8-16", "16+" (each bin [lo, hi)).
+std::map<std::string, int> lod_histogram(const std::vector<double>& lod);
+std::map<std::string, int> aniso_histogram(const std::vector<double>& aniso);
 
 // What the texel addressing and decode need for the textures the scene's objects sample: the wrap
 // modes (bit = tex::Wrap code; repeat always), the storage formats (bit = TexelFormat code; rgba8,
