@@ -1,6 +1,7 @@
 // Perspective divide, per-pixel back end (stages S2..S8 of tu_persp, latency 7, II = 1): guard,
-// normalise, reciprocal (tu_recip_core), two multiplies, shift/round/saturate. Shared by the
-// single-pixel unit tu_persp and the k-lane unit tu_persp_klane. Formats: cmodel/blocks/persp.
+// normalise, reciprocal (tu_recip_core), two multiply-adds in carry-save form (S7), their carry
+// chains and shift/round/saturate (S8). Shared by the single-pixel unit tu_persp, the k-lane unit
+// tu_persp_klane and tu_objspace_sample. Formats: cmodel/blocks/persp.
 module tu_persp_pixel (
   input  logic                                clk_i,
   input  logic                                en_i,
@@ -20,9 +21,6 @@ module tu_persp_pixel (
   localparam int ProdW = PW + RW + 1;    // signed p * unsigned R
   localparam int CoreLat = tu_formats_pkg::RecipCoreLatency;  // tu_recip_core
   localparam logic [QW-1:0] GuardVal = QW'(1) << (tu_formats_pkg::PerspF - tu_formats_pkg::PerspGuardLog2);
-  localparam logic signed [ProdW-1:0] UMax = ProdW'({1'b0, {(UW-1){1'b1}}});
-  // -2^(UW-1) written bit by bit: Yosys 0.23 drops the minus of -ProdW'(...) in a localparam.
-  localparam logic signed [ProdW-1:0] UMin = {{(ProdW-UW+1){1'b1}}, {(UW-1){1'b0}}};
   logic en;
   logic [PW-1:0] pu_q1, pv_q1;
   logic [QW-1:0] q_q1;
@@ -72,41 +70,107 @@ module tu_persp_pixel (
   logic [RW-1:0] r;
   tu_recip_core u_core (.clk_i, .en_i(en), .m_i(m_q2), .r_o(r));
 
-  // ---- S7: two multiply-adds: x = p * R + 2^(sh-1), the rounding term of S8 added here, in the
-  // products' carry-save trees (S8 used to add it to the 80-bit products and then shift: an
-  // adder and a shifter in one stage, tu_persp's critical path, 14.3 ns in osu018).
-  // |p * R| < 2^(PW-1+RW) and sh - 1 < PW - 1 + RW, so x fits ProdW bits.
+  // ---- S7: two multiply-adds x = p * R + 2^(sh-1) (the rounding term of S8 inside the product),
+  // each left in carry-save form: S7 holds the partial-product rows and their 3:2 compressor tree
+  // only; the carry-propagate add moved to S8 (S7 used to end in the 80-bit carry chain: 7.56 ns
+  // in osu018, R's register fan-out 1.5 ns + tree 2.1 ns + carry chain 3.0 ns; now the chain runs
+  // in S8, whose shift and saturation were short). Rows: p * R[j] * 2^j (p sign-extended) for
+  // j < RW, and the rounding term; every 3 rows become 2 (sum, carry << 1) per level, all
+  // modulo 2^ProdW, so s + c = x (mod 2^ProdW), and x itself fits ProdW bits:
+  // |p * R| < 2^(PW-1+RW) and sh - 1 < PW - 1 + RW. The low Sh0 bits of x are dropped by S8's
+  // floor; only their carry into bit Sh0 is kept (cy).
   localparam int Sh0 = tu_formats_pkg::RecipOutF - tu_formats_pkg::PerspUvF;  // sh = Sh0 + e
-  logic signed [ProdW-1:0] r_ext, pu_ext, pv_ext, half, prod_u_q, prod_v_q;
-  assign r_ext  = ProdW'({1'b0, r});
-  assign pu_ext = ProdW'($signed(pu_q[CoreLat]));
-  assign pv_ext = ProdW'($signed(pv_q[CoreLat]));
-  assign half   = ProdW'(1) << (Sh0 - 1 + 32'(e_q[CoreLat]));
+  localparam int TW = ProdW - Sh0;
+  localparam int NRow = RW + 1;
+  // levels of 3:2 compressors that bring n rows down to 2
+  function automatic int csa_levels(input int n0);
+    int n, l;
+    n = n0;
+    l = 0;
+    for (int i = 0; i < 64; i++) begin
+      if (n > 2) begin
+        n = (n / 3) * 2 + n % 3;
+        l = l + 1;
+      end
+    end
+    csa_levels = l;
+  endfunction
+  localparam int NLvl = csa_levels(NRow);
+  // {carry, sum} of p * r + add, modulo 2^ProdW. Live rows stay at the front of the row vector:
+  // the groups of 3 before the last live row are full, a group with 1 or 2 live rows passes 1 or
+  // 2 rows (a constant-zero third input), groups of zeros give zeros (constant-folded).
+  function automatic logic [2*ProdW-1:0] csa_mul(input logic [PW-1:0] pp, input logic [RW-1:0] rr,
+                                                 input logic [ProdW-1:0] add);
+    logic [NRow*ProdW-1:0] cur, nxt;
+    logic [ProdW-1:0]      a, b, c, pe;
+    pe = ProdW'($signed(pp));
+    for (int j = 0; j < RW; j++) cur[j*ProdW +: ProdW] = {ProdW{rr[j]}} & (pe << j);
+    cur[RW*ProdW +: ProdW] = add;
+    for (int l = 0; l < NLvl; l++) begin
+      nxt = '0;
+      for (int g = 0; g < NRow / 3; g++) begin
+        a = cur[(3*g)*ProdW +: ProdW];
+        b = cur[(3*g+1)*ProdW +: ProdW];
+        c = cur[(3*g+2)*ProdW +: ProdW];
+        nxt[(2*g)*ProdW +: ProdW]   = a ^ b ^ c;
+        nxt[(2*g+1)*ProdW +: ProdW] = ((a & b) | (a & c) | (b & c)) << 1;
+      end
+      for (int k = 0; k < NRow % 3; k++) begin
+        nxt[(2*(NRow/3)+k)*ProdW +: ProdW] = cur[(3*(NRow/3)+k)*ProdW +: ProdW];
+      end
+      cur = nxt;
+    end
+    csa_mul = {cur[ProdW +: ProdW], cur[0 +: ProdW]};
+  endfunction
+
+  logic [ProdW-1:0] half, su, cu, sv, cv;
+  logic [Sh0:0]     lo_u, lo_v;
+  logic [TW-1:0]    su_q, cu_q, sv_q, cv_q;
+  logic             cyu_q, cyv_q;
+  assign half = ProdW'(1) << (Sh0 - 1 + 32'(e_q[CoreLat]));
+  assign {cu, su} = csa_mul(pu_q[CoreLat], r, half);
+  assign {cv, sv} = csa_mul(pv_q[CoreLat], r, half);
+  assign lo_u = (Sh0+1)'(su[Sh0-1:0]) + (Sh0+1)'(cu[Sh0-1:0]);
+  assign lo_v = (Sh0+1)'(sv[Sh0-1:0]) + (Sh0+1)'(cv[Sh0-1:0]);
   always_ff @(posedge clk_i) begin
     if (en) begin
-      prod_u_q <= pu_ext * r_ext + half;
-      prod_v_q <= pv_ext * r_ext + half;
+      su_q  <= su[ProdW-1:Sh0];
+      cu_q  <= cu[ProdW-1:Sh0];
+      cyu_q <= lo_u[Sh0];
+      sv_q  <= sv[ProdW-1:Sh0];
+      cv_q  <= cv[ProdW-1:Sh0];
+      cyv_q <= lo_v[Sh0];
     end
   end
 
-  // ---- S8: round half up = floor(x / 2^sh): a shift by the exponent; saturate
-  localparam int TW = ProdW - Sh0;
-  localparam logic signed [TW-1:0] SatMax = TW'(UMax);
-  localparam logic signed [TW-1:0] SatMin = TW'(UMin);
+  // ---- S8: x[ProdW-1:Sh0] = s + c + cy (the carry chain), round half up = floor(x / 2^sh):
+  // a shift by the exponent; saturate
   localparam logic [UW-1:0] CodeMax = {1'b0, {(UW-1){1'b1}}};
   localparam logic [UW-1:0] CodeMin = {1'b1, {(UW-1){1'b0}}};
+  // floor(x / 2^e) saturated to UW bits. Out of range <=> x >= 2^(UW-1+e) or x < -2^(UW-1+e)
+  // <=> bits x[TW-1 : UW-1+e] not all equal to the sign: tested on x itself, beside the shift
+  // (it was a compare after the shift).
+  function automatic logic [UW-1:0] shift_sat(input logic [TW-1:0] x, input logic [EW-1:0] ee,
+                                               input logic guard_f);
+    logic [TW-1:0] mask;
+    logic [UW-1:0] rnd;
+    logic          ovf;
+    for (int i = 0; i < TW; i++) mask[i] = (i >= UW - 1 + 32'(ee));
+    ovf = |((x ^ {TW{x[TW-1]}}) & mask);
+    rnd = UW'($signed(x) >>> ee);
+    if (guard_f || (ovf && !x[TW-1])) shift_sat = CodeMax;
+    else if (ovf)                     shift_sat = CodeMin;
+    else                              shift_sat = rnd;
+  endfunction
   logic [UW-1:0]           u_d, v_d, u_q8, v_q8;
   logic                    flag_q8;
-  logic signed [TW-1:0]    rnd_u, rnd_v;
+  logic [TW-1:0]           xu, xv;
   always_comb begin
-    rnd_u = $signed(prod_u_q[ProdW-1:Sh0]) >>> e_q[CoreLat+1];
-    rnd_v = $signed(prod_v_q[ProdW-1:Sh0]) >>> e_q[CoreLat+1];
-    if (g_q[CoreLat+1] || rnd_u > SatMax) u_d = CodeMax;
-    else if (rnd_u < SatMin)              u_d = CodeMin;
-    else                                  u_d = rnd_u[UW-1:0];
-    if (g_q[CoreLat+1] || rnd_v > SatMax) v_d = CodeMax;
-    else if (rnd_v < SatMin)              v_d = CodeMin;
-    else                                  v_d = rnd_v[UW-1:0];
+    // one adder with cy as its carry-in: (2s + cy) + (2c + cy) = 2 (s + c + cy)
+    xu = TW'(({su_q, cyu_q} + {cu_q, cyu_q}) >> 1);
+    xv = TW'(({sv_q, cyv_q} + {cv_q, cyv_q}) >> 1);
+    u_d = shift_sat(xu, e_q[CoreLat+1], g_q[CoreLat+1]);
+    v_d = shift_sat(xv, e_q[CoreLat+1], g_q[CoreLat+1]);
   end
   always_ff @(posedge clk_i) begin
     if (en) begin
@@ -119,8 +183,8 @@ module tu_persp_pixel (
   assign v_o    = v_q8;
   assign flag_o = flag_q8;
 
-  // truncated mantissa bits; the products' bits below 2^Sh0 (the floor drops them)
+  // truncated mantissa bits; the low sums' bits below 2^Sh0 (the floor drops them, their carry stays)
   logic unused;
-  assign unused = ^{nrm[QW-MW-1:0], prod_u_q[Sh0-1:0], prod_v_q[Sh0-1:0]};
+  assign unused = ^{nrm[QW-MW-1:0], lo_u[Sh0-1:0], lo_v[Sh0-1:0]};
 
 endmodule

@@ -79,7 +79,6 @@ module tu_pom_march #(
   endfunction
 
   logic [UvW-1:0] nu, nv;         // next T
-  logic [4:0]     ax, ay;         // ROM address (the 64x64 bricks map has period 32)
   logic           go;             // continue marching
   logic           finish;         // last compare of the pixel in Run
   logic           out_free;       // the output registers can take a result this cycle
@@ -102,13 +101,6 @@ module tu_pom_march #(
     rhs = 16'(h * n_q);
     rhs_p = 16'(hp_q * n_q);
     go = lhs < rhs;
-    if (take_in) begin
-      ax = u_i[TexLsb +: 5];
-      ay = v_i[TexLsb +: 5];
-    end else begin
-      ax = nu[TexLsb +: 5];
-      ay = nv[TexLsb +: 5];
-    end
   end
 
   assign rd = fire_in || (state_q == Run && go);
@@ -119,14 +111,17 @@ module tu_pom_march #(
       .u_i, .v_i, .base_i, .lw_i, .lh_i, .nu_i(nu), .nv_i(nv),
       .d_req_o, .d_addr_o, .d_data_i, .h_o(h)
     );
-    logic unused_rom;
-    assign unused_rom = ^{ax, ay};
   end else begin : g_rom
-    // synchronous ROM: the address of this cycle is read at the edge (kept while stalled)
-    logic [7:0] h_q;
+    // synchronous ROM: the address of this cycle is read at the edge (kept while stalled).
+    // Both candidate addresses are looked up in parallel, the new pixel's first T and the next T,
+    // and the compare (take_in) selects between the two 8-bit depths: the address mux used to sit
+    // between the compare and the ROM, i_q -> h_q in one clock, the block's critical path.
+    logic [7:0] h_q, h_in, h_nx;
+    assign h_in = bricks(u_i[TexLsb +: 5], v_i[TexLsb +: 5]);
+    assign h_nx = bricks(nu[TexLsb +: 5], nv[TexLsb +: 5]);
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) h_q <= '0;
-      else if (rd) h_q <= bricks(ax, ay);
+      else if (rd) h_q <= take_in ? h_in : h_nx;
     end
     assign h = h_q;
     assign d_req_o  = 1'b0;
@@ -155,7 +150,8 @@ module tu_pom_march #(
           den_o <= '0;
         end else begin
           a_o <= lhs - rhs;
-          den_o <= (lhs - rhs) + (rhs_p - (lhs - 16'd255));
+          // (lhs - rhs) + (rhs_p - (lhs - 255)): lhs cancels (mod 2^16), and with it the i_q path
+          den_o <= rhs_p - rhs + 16'd255;
         end
         out_valid_q <= 1'b1;
       end else if (out_ready_i) begin

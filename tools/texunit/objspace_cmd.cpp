@@ -12,7 +12,7 @@
 #include "objspace/objspace.hpp"
 #include "objspace/schemes.hpp"
 #include "plan.hpp"
-#include "plan_pipeline.hpp"
+#include "planner/pipeline.hpp"
 #include "texunit/objspace_accum.hpp"
 #include "texunit/render.hpp"
 

@@ -6,8 +6,9 @@
 #include "report_filters.hpp"
 #include "report_relief.hpp"
 
+#include "planner/pareto.hpp"
+
 #include <algorithm>
-#include <charconv>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -467,21 +468,6 @@ std::vector<Row> table_rows(const Options& opt, AreaCache& cache) {
   return rows;
 }
 
-// Shortest text that reads back as the same double: `texunit merge` re-derives latency_ns,
-// ns_per_item and the Pareto sets from the shards' JSON exactly as the unsharded run does.
-std::string jnum(double x) {
-  if (!std::isfinite(x)) return "null";
-  char buf[32];
-  const auto res = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, res.ptr);
-}
-std::string jstr(const std::string& s) { return json(s).dump(); }
-// A measured count, or the reason it is missing.
-std::string jint(int64_t x, const std::string& why) { return x < 0 ? jstr(why) : std::to_string(x); }
-
-// A measured value (>= 0), or the reason it is missing.
-std::string jmeasured(double x, const std::string& why) { return x < 0 ? jstr(why) : jnum(x); }
-
 std::string na(int64_t x) { return x < 0 ? std::string("n/a") : std::to_string(x); }
 
 const cosim::RtlBlock* rtl_or_null(const std::string& name) {
@@ -562,54 +548,6 @@ std::vector<Row> brdf_rows(const Options& opt, AreaCache& cache) {
     out.push_back(std::move(r));
   }
   return out;
-}
-
-// Pareto frontier (minimise both): indices sorted by x.
-std::vector<size_t> frontier(const std::vector<std::pair<double, double>>& pts) {
-  std::vector<size_t> idx(pts.size());
-  for (size_t i = 0; i < idx.size(); ++i) idx[i] = i;
-  std::sort(idx.begin(), idx.end(), [&](size_t a, size_t b) { return pts[a] < pts[b]; });
-  std::vector<size_t> f;
-  double best = INFINITY;
-  for (size_t i : idx)
-    if (pts[i].second < best) {
-      best = pts[i].second;
-      f.push_back(i);
-    }
-  return f;
-}
-
-double cycles_x(const Row& r) { return static_cast<double>(r.latency_cycles) + r.ii_cycles; }
-
-// The cost axes of the Pareto plots: file suffix, axis label, value (<= 0: not measured).
-struct Measure {
-  const char* stem;
-  const char* label;
-  double (*x)(const Row&);
-};
-const std::vector<Measure> kMeasures = {
-    {"cycles", "latency + II (cycles)", [](const Row& r) { return r.latency_cycles < 0 ? -1.0 : cycles_x(r); }},
-    {"cells", "Yosys cells (synth, generic gates)", [](const Row& r) { return static_cast<double>(r.cells); }},
-    {"ns_per_item", "ns per item (II x clock period, osu018)", [](const Row& r) { return r.ns_per_item(); }},
-    {"area_um2", "area (um^2, osu018 standard cells)", [](const Row& r) { return r.area_um2; }}};
-
-// A block's rows that have the plotted measure (cycles, or Yosys cells), their points
-// (measure, max abs error) and which of them are on the Pareto frontier.
-struct Points {
-  std::vector<const Row*> rows;
-  std::vector<std::pair<double, double>> xy;
-  std::set<const Row*> front;
-};
-Points points(const std::vector<Row>& rs, const std::string& grp, const Measure& m) {
-  Points p;
-  for (const auto& r : rs) {
-    const double x = m.x(r);
-    if (r.block != grp || x <= 0 || r.latency_cycles < 0 || !(r.max_abs_err >= 0)) continue;
-    p.rows.push_back(&r);
-    p.xy.emplace_back(x, r.max_abs_err);
-  }
-  for (size_t i : frontier(p.xy)) p.front.insert(p.rows[i]);
-  return p;
 }
 
 // Text for inside a gnuplot single-quoted string: a quote is written twice.
@@ -715,61 +653,6 @@ void markdown(const std::vector<Row>& rs, const Options& opt) {
   std::cerr << "wrote " << opt.markdown << "\n";
 }
 }  // namespace
-
-std::string Row::json() const {
-  return "{\"block\": " + jstr(block) + ", \"variant\": " + jstr(variant) + ", \"scheme\": " +
-         jstr(scheme) + ", \"err_unit\": " + jstr(err_unit) + ", \"max_abs_err\": " + jnum(max_abs_err) +
-         ", \"rms_err\": " + jnum(rms_err) + ", \"max_ulp_err\": " + jnum(max_ulp_err) +
-         ", \"latency_cycles\": " + jint(latency_cycles, "n/a") + ", \"ii_cycles\": " + jnum(ii_cycles) +
-         ", \"cycles_source\": " + jstr(cycles_source) + ", \"cells\": " + jint(cells, area_source) +
-         ", \"flip_flops\": " + jint(flip_flops, area_source) + ", \"multipliers\": " +
-         jint(multipliers, area_source) + ", \"area_source\": " + jstr(area_source) + ", \"rtl_top\": " +
-         jstr(rtl_top) + ", \"memory_bits\": " + jint(memory_bits, "n/a") + ", \"cmodel_ns_per_item\": " +
-         jnum(cmodel_ns_per_item) + ", \"rtl_sim_items_per_s\": " +
-         (rtl_sim_items_per_s < 0 ? jstr(rtl_sim_source) : jnum(rtl_sim_items_per_s)) +
-         ", \"rtl_sim_source\": " + jstr(rtl_sim_source) + ", \"area_um2\": " + jmeasured(area_um2, stdcell_source) +
-         ", \"period_ns\": " + jmeasured(period_ns, stdcell_source) + ", \"fmax_mhz\": " +
-         jmeasured(fmax_mhz, stdcell_source) + ", \"latency_ns\": " + jmeasured(latency_ns(), stdcell_source) +
-         ", \"ns_per_item\": " + jmeasured(ns_per_item(), stdcell_source) + ", \"stdcell_cells\": " +
-         jint(stdcell_cells, stdcell_source) + ", \"critical_path\": " + jstr(critical_path) +
-         ", \"stdcell_source\": " + jstr(stdcell_source) + ", \"notes\": " + jstr(notes) + (extra_json.empty() ? "" : ", " + extra_json) + "}";
-}
-
-Row Row::from_json(const std::string& text) {
-  const auto j = nlohmann::ordered_json::parse(text);  // ordered: extra keys keep their order
-  const auto need = [&](const char* k) -> const nlohmann::ordered_json& {
-    if (!j.contains(k)) throw std::invalid_argument(std::string("report row without \"") + k + "\"");
-    return j.at(k);
-  };
-  // A number, or the string json() writes in its place when the value was not measured (-1).
-  const auto num = [&](const char* k) { const auto& v = need(k); return v.is_null() ? INFINITY : v.is_string() ? -1.0 : v.get<double>(); };
-  const auto cnt = [&](const char* k) { const auto& v = need(k); return v.is_string() ? int64_t{-1} : v.get<int64_t>(); };
-  const auto str = [&](const char* k) { return need(k).get<std::string>(); };
-  Row r;
-  r.block = str("block"), r.variant = str("variant"), r.scheme = str("scheme"), r.err_unit = str("err_unit");
-  r.max_abs_err = num("max_abs_err"), r.rms_err = num("rms_err"), r.max_ulp_err = num("max_ulp_err");
-  r.latency_cycles = cnt("latency_cycles"), r.ii_cycles = num("ii_cycles"), r.cycles_source = str("cycles_source");
-  r.cells = cnt("cells"), r.flip_flops = cnt("flip_flops"), r.multipliers = cnt("multipliers");
-  r.area_source = str("area_source"), r.rtl_top = str("rtl_top"), r.memory_bits = cnt("memory_bits");
-  r.cmodel_ns_per_item = num("cmodel_ns_per_item"), r.rtl_sim_items_per_s = num("rtl_sim_items_per_s");
-  r.rtl_sim_source = str("rtl_sim_source");
-  r.area_um2 = num("area_um2"), r.period_ns = num("period_ns"), r.fmax_mhz = num("fmax_mhz");
-  r.stdcell_cells = cnt("stdcell_cells"), r.critical_path = str("critical_path"), r.stdcell_source = str("stdcell_source");
-  r.notes = str("notes");
-  // The keys json() always writes (a default row has no extra keys): the rest are the extras.
-  static const auto known = [] {
-    std::set<std::string> k;
-    const auto j0 = nlohmann::json::parse(Row{}.json());  // named: items() does not extend its life
-    for (const auto& [key, v] : j0.items()) k.insert(key);
-    return k;
-  }();
-  for (const auto& [k, v] : j.items()) {
-    if (known.count(k)) continue;
-    const std::string val = v.is_number_float() ? jnum(v.get<double>()) : v.is_null() ? "null" : v.dump();
-    r.extra_json += (r.extra_json.empty() ? "" : ", ") + jstr(k) + ": " + val;
-  }
-  return r;
-}
 
 std::vector<std::string> groups() {
   std::vector<std::string> g;

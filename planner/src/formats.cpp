@@ -1,4 +1,5 @@
-#include "plan_formats.hpp"
+// `texunit plan`: texel storage format per texture (formats.hpp).
+#include "planner/formats.hpp"
 
 #include <cmath>
 #include <set>

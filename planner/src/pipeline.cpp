@@ -1,5 +1,5 @@
-// `texunit plan`: the pipeline per material (plan_pipeline.hpp).
-#include "plan_pipeline.hpp"
+// `texunit plan`: the pipeline per material (pipeline.hpp).
+#include "planner/pipeline.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "objspace/objspace.hpp"
-#include "plan.hpp"
+#include "planner/plan.hpp"
 #include "texunit/render.hpp"
 
 namespace tu::plan {
@@ -31,7 +31,7 @@ std::string num(const char* f, double x) {
 PipelineChoice choose_pipeline(const scene::Scene& s, const std::string& material, scene::Filter filter, bool procedural) {
   PipelineChoice c;
   c.material = material;
-  c.screen_filter = scene::to_string(filter);
+  c.screen_filter = filter;
   const scene::Material& m = s.materials.at(material);
   if (m.relief || procedural) {
     c.why = material + ": screen space (object space has no " + std::string(m.relief ? "relief step" : "noise unit") + ")";
@@ -105,7 +105,7 @@ PipelineChoice choose_pipeline(const scene::Scene& s, const std::string& materia
                num("%.2f", k.psnr_db) + " dB, " + std::to_string(k.holes) + " holes";
   }
   c.why = material + ": " + (c.object_space ? "object space (spacing " + num("%.2g", best->spacing) + ")" : "screen space") +
-          "; screen " + c.screen_filter + " " + num("%.2f", c.screen_clocks_per_px) + " clk/px; object space (" +
+          "; screen " + std::string(scene::to_string(c.screen_filter)) + " " + num("%.2f", c.screen_clocks_per_px) + " clk/px; object space (" +
           num("%.0f", c.sample_clocks) + " clk/sample + 1 divide/px, budget " + num("%g", s.budget.min_psnr_db) +
           " dB, no holes): " + tries;
   return c;

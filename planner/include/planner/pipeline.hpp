@@ -31,7 +31,7 @@ struct ObjectSpaceTry {
 struct PipelineChoice {
   std::string material;
   bool object_space = false;  // the chosen pipeline
-  std::string screen_filter;  // the plan's filter of the material (screen space)
+  scene::Filter screen_filter = scene::Filter::Ewa;  // the plan's filter of the material (screen space)
   uint64_t covered = 0;       // the material's pixels rendered alone
   double screen_clocks_per_px = 0;  // the RTL texture unit (ewa::stream_cycles) with that filter
   double sample_clocks = 0;         // object space: clocks per sample (the unit's tu_trilinear)
