@@ -454,7 +454,7 @@ TEST(TextureUnitRtl, ClipVariantsEqualCModel) {
 
 // docs/scenes/corridor.json on its planned unit (`texunit plan docs/scenes/corridor.json`: EWA with
 // the 1-D weight table on every material, iterative parallax, no POM march;
-// Vtu_texture_unit_sim_corridor): every pixel ==
+// Vtu_texture_unit_corridor): every pixel ==
 // render_cmodel with the walls' iterative relief, with 30 % stalls and without (cycles predicted).
 TEST(TextureUnitRtl, CorridorPlannedUnitEqualsCModelWithCyclesPredicted) {
   const auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/corridor.json");
@@ -704,7 +704,7 @@ TEST(TextureUnitRtl, WaterEqualsCModelCyclesPredicted) {
 }
 
 // The octave-serial noise unit (NoiseScheme = 1: one core, NoiseOctaves clocks per octave sum, the
-// recurrence-ellipse model Vtu_texture_unit_sim_rec carries it): docs/scenes/procedural.json at
+// recurrence-ellipse model Vtu_texture_unit_rec carries it): docs/scenes/procedural.json at
 // 40 x 30 with the smoke wall as water, fbm, smoke and water pixels, the same bits as the C model
 // (the pipelined unit's) on every pixel with 30 % stalls, cycles = ewa::stream_cycles with
 // noise_slots = 4 (II 4 per sum, 12 per water pixel) without.

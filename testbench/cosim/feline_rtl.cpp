@@ -51,7 +51,7 @@ RtlBlock rtl_feline() {
                            [](Vtu_feline& d) -> auto& { return d.tex_data_i; });
     return e;
   };
-  return make_rtl<Vtu_feline>("feline", drive, sample, {}, env);
+  return make_rtl<Vtu_feline>("feline", drive, sample, env);
 }
 
 }  // namespace tu::cosim
