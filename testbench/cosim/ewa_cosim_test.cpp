@@ -31,11 +31,13 @@ std::vector<ewa::PixelCost> costs_of(const vec::VectorFile& vf) {
   const auto in_idx = vf.indices(vec::Role::In), out_idx = vf.indices(vec::Role::Out);
   std::vector<ewa::PixelCost> c;
   for (const auto& row : vf.rows) {
-    const auto in = blocks::pick(row, in_idx), out = blocks::pick(row, out_idx);
+    const auto in = blocks::pick(row, in_idx);
+    const auto i = cosim::glue::in_ewa(in);
+    const auto o = cosim::glue::out_ewa(blocks::pick(row, out_idx));
     ewa::fx::In px;
-    px.b2.lod = static_cast<uint32_t>(in[7]);
-    c.push_back(ewa::pixel_cost(px, static_cast<int>(out[4]), static_cast<uint32_t>(out[7]), out[5], 8));
-    c.back().clip = in[11] != 0;
+    px.b2.lod = static_cast<uint32_t>(i.lod);
+    c.push_back(ewa::pixel_cost(px, static_cast<int>(o.level), static_cast<uint32_t>(o.flags), o.visited, 8));
+    c.back().clip = i.clip != 0;
     c.back().blocks = blocks::ewa_lane_blocks(in);
   }
   return c;
