@@ -4,7 +4,7 @@
 # with --trace-fst and once without, then every generated C++ file compiled as CMake compiles it
 # (Release -O3; the "slow" files -O0, testbench/cosim/CMakeLists.txt), no ccache; CPU seconds
 # (user + system) per step summed, 2 compiles at a time (docs/performance.md §5).
-# Usage: scripts/verilator_build_cost.sh [-j N] MODEL...   e.g. Vtu_ellipse Vtu_texture_unit_sim_bil
+# Usage: scripts/verilator_build_cost.sh [-j N] MODEL...   e.g. Vtu_ellipse Vtu_texture_unit_bil
 #        (needs a configured build/default: cmake --preset default)
 set -euo pipefail
 cd "$(dirname "$0")/.."

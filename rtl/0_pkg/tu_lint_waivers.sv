@@ -7,8 +7,9 @@
 `verilator_config
 lint_off -rule MULTITOP
 // A Verilator 5.006 bug mis-elaborates tu_pipe_valid's Depth generate in this one multi-top run:
-// the Depth == 1 branch in tu_texture_unit_sim's instances of Depth 2 .. 43 (a WIDTH warning on
-// `assign valid_d = in_valid_i`), since the blocks' simulation wrappers are gone (issue 21); each
+// the Depth == 1 branch in tu_texture_unit's instances of Depth 2 .. 43 (a WIDTH warning on
+// `assign valid_d = in_valid_i`, e.g. u_psetup.u_ctrl), since the blocks' simulation wrappers are
+// gone (issue 21; the texture unit's too, it is a top of its own now, and the bug stays); each
 // top Verilated alone, every co-simulation model, Icarus and Yosys elaborate the right branch.
 // The same bug made tu_texel_decode_sim and tu_bc1_decode_sim write their valid register out.
 // Waived for that message only.

@@ -9,7 +9,7 @@
 // the triangle set-up; ellipse::fx), and the material: texture (base address in the texel RAM,
 // log2 size, wrap), EWA weight source and texel cap. The fixed-latency B1/B2 pipelines stall as a
 // whole; the FIFO in front of the data-dependent filter lets them run ahead by FifoDepth pixels.
-// The filter reads texels through a port with 1-cycle read latency (tu_texel_ram in simulation).
+// The filter reads texels through a port with 1-cycle read latency (a C++ RAM model in co-simulation).
 // With HasShading the filtered pixel is joined with its word from the shade port (the shader's
 // N, L, H, exponent, cut-off and colours, brdf::shade::pack) and shaded by tu_shade (II = 1, the
 // model's latency) on its way out.

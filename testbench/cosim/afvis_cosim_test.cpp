@@ -37,7 +37,7 @@ std::vector<ewa::PixelCost> costs_of(const vec::VectorFile& vf) {
     const auto in = blocks::pick(row, in_idx);
     const afvis::Out o = blocks::afvis_block_model(in);
     ewa::fx::In px;
-    px.b2.lod = static_cast<uint32_t>(in[7]);
+    px.b2.lod = static_cast<uint32_t>(cosim::glue::in_afvis(in).lod);
     c.push_back(ewa::pixel_cost(px, o.ewa.level, o.ewa.flags, o.ewa.texels_visited, 8));
     c.back().afv_walk = o.clocks;
   }

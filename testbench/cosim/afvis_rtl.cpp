@@ -2,7 +2,8 @@
 // the block's texture (bricks colour 256 x 256, repeat) in the texel RAM at address 0 (border
 // word, level 0 at 1; SyncReadRam on tex_*, 1 << 17 words) and its depth map (bricks 64 x 64) in
 // the depth RAM at address 0 (one code per word, the low 8 bits on d_data_i; SyncReadRam on d_*,
-// 1 << 16 words).
+// 1 << 16 words). The vector row's fields go to the ports of the same name (generated glue); the
+// texture and depth-map set-up, which are not fields, are driven here.
 #include "Vtu_afvis.h"
 #include "afvis_block.hpp"
 #include "cosim.hpp"
@@ -14,24 +15,7 @@ namespace tu::cosim {
 RtlBlock rtl_afvis() {
   auto drive = [](Vtu_afvis& d, const Row& in) {
     const tex::Texture& tex = blocks::afvis_texture();
-    d.u_i = static_cast<uint32_t>(in[0]);
-    d.v_i = static_cast<uint32_t>(in[1]);
-    d.ae_i = in[2];
-    d.ce_i = in[3];
-    d.be_i = in[4];
-    d.lmaj_i = static_cast<uint32_t>(in[5]);
-    d.lmin_i = static_cast<uint32_t>(in[6]);
-    d.lod_i = static_cast<uint16_t>(in[7]);
-    d.eflags_i = static_cast<uint8_t>(in[8]);
-    d.wsrc_i = static_cast<uint8_t>(in[9]);
-    d.cap_i = static_cast<uint32_t>(in[10]);
-    d.vx_i = static_cast<uint16_t>(in[11]);
-    d.vy_i = static_cast<uint16_t>(in[12]);
-    d.vz_i = static_cast<uint16_t>(in[13]);
-    d.scale_i = static_cast<uint16_t>(in[14]);
-    d.dmin_i = static_cast<uint8_t>(in[15]);
-    d.bias_i = static_cast<uint8_t>(in[16]);
-    d.rule_i = static_cast<uint8_t>(in[17]);
+    glue::drive_afvis(d, in);  // the block's fields by name (generated glue)
     d.base_i = 1;  // after the border word at 0
     d.lw_i = static_cast<uint8_t>(log2_size(tex.levels[0].width));
     d.lh_i = static_cast<uint8_t>(log2_size(tex.levels[0].height));
@@ -60,7 +44,7 @@ RtlBlock rtl_afvis() {
                           [](Vtu_afvis& d) -> auto& { return d.d_data_i; });
     return e;
   };
-  return make_rtl<Vtu_afvis>("afvis", drive, sample, {}, env);
+  return make_rtl<Vtu_afvis>("afvis", drive, sample, env);
 }
 
 }  // namespace tu::cosim

@@ -26,19 +26,17 @@ const RtlBlock& find_rtl(const std::string& name);  // throws std::invalid_argum
 // non-square levels: the bank ports' broadcast and border routing; ewa_rtl.cpp).
 RtlBlock rtl_ewa_k4_with(const tex::Texture& t);
 
-// An RtlBlock for the Verilated model V from its `drive` and `sample` functions (and an optional
-// preload during reset, e.g. a texture into a RAM model's write port, and the block's C++
-// surroundings, e.g. its texel RAM: Harness's Env).
+// An RtlBlock for the Verilated model V from its `drive` and `sample` functions (and optionally
+// the block's C++ surroundings, e.g. its texel RAM: Harness's Env).
 template <class V, class Drive, class Sample>
-RtlBlock make_rtl(const std::string& name, Drive drive, Sample sample, typename Harness<V>::Init init = {},
-                  typename Harness<V>::MakeEnv make_env = {}) {
+RtlBlock make_rtl(const std::string& name, Drive drive, Sample sample, typename Harness<V>::MakeEnv make_env = {}) {
   RtlBlock b;
   b.name = name;
   b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
-    return Harness<V>(drive, sample, init, make_env).run(in, o);
+    return Harness<V>(drive, sample, make_env).run(in, o);
   };
   b.timing = [=](const std::vector<Row>& in) {
-    return Harness<V>(drive, sample, init, make_env).measure_timing(in);
+    return Harness<V>(drive, sample, make_env).measure_timing(in);
   };
   return b;
 }

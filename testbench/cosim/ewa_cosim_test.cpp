@@ -31,11 +31,13 @@ std::vector<ewa::PixelCost> costs_of(const vec::VectorFile& vf) {
   const auto in_idx = vf.indices(vec::Role::In), out_idx = vf.indices(vec::Role::Out);
   std::vector<ewa::PixelCost> c;
   for (const auto& row : vf.rows) {
-    const auto in = blocks::pick(row, in_idx), out = blocks::pick(row, out_idx);
+    const auto in = blocks::pick(row, in_idx);
+    const auto i = cosim::glue::in_ewa(in);
+    const auto o = cosim::glue::out_ewa(blocks::pick(row, out_idx));
     ewa::fx::In px;
-    px.b2.lod = static_cast<uint32_t>(in[7]);
-    c.push_back(ewa::pixel_cost(px, static_cast<int>(out[4]), static_cast<uint32_t>(out[7]), out[5], 8));
-    c.back().clip = in[11] != 0;
+    px.b2.lod = static_cast<uint32_t>(i.lod);
+    c.push_back(ewa::pixel_cost(px, static_cast<int>(o.level), static_cast<uint32_t>(o.flags), o.visited, 8));
+    c.back().clip = i.clip != 0;
     c.back().blocks = blocks::ewa_lane_blocks(in);
   }
   return c;
@@ -454,7 +456,7 @@ TEST(TextureUnitRtl, ClipVariantsEqualCModel) {
 
 // docs/scenes/corridor.json on its planned unit (`texunit plan docs/scenes/corridor.json`: EWA with
 // the 1-D weight table on every material, iterative parallax, no POM march;
-// Vtu_texture_unit_sim_corridor): every pixel ==
+// Vtu_texture_unit_corridor): every pixel ==
 // render_cmodel with the walls' iterative relief, with 30 % stalls and without (cycles predicted).
 TEST(TextureUnitRtl, CorridorPlannedUnitEqualsCModelWithCyclesPredicted) {
   const auto s = scene::load(std::string(TU_SOURCE_DIR) + "/docs/scenes/corridor.json");
@@ -704,7 +706,7 @@ TEST(TextureUnitRtl, WaterEqualsCModelCyclesPredicted) {
 }
 
 // The octave-serial noise unit (NoiseScheme = 1: one core, NoiseOctaves clocks per octave sum, the
-// recurrence-ellipse model Vtu_texture_unit_sim_rec carries it): docs/scenes/procedural.json at
+// recurrence-ellipse model Vtu_texture_unit_rec carries it): docs/scenes/procedural.json at
 // 40 x 30 with the smoke wall as water, fbm, smoke and water pixels, the same bits as the C model
 // (the pipelined unit's) on every pixel with 30 % stalls, cycles = ewa::stream_cycles with
 // noise_slots = 4 (II 4 per sum, 12 per water pixel) without.

@@ -1,7 +1,6 @@
 // RTL binding of the EWA engine (rtl/ewa/tu_ewa.sv, Verilated as the top: HasClip 1, ClipVariant
 // 0, guard_i tied low), block "ewa": the block's fixed texture (bricks colour 256 x 256, repeat)
-// in the texel RAM (SyncReadRam on tex_*: the border word at 0, level 0 at 1, as tu_texel_ram
-// Words = 1 << 17). "ewa_k4": the same block's vectors on the multi-texel engine (Lanes = 4,
+// in the texel RAM (SyncReadRam on tex_*: the border word at 0, level 0 at 1, 1 << 17 words). "ewa_k4": the same block's vectors on the multi-texel engine (Lanes = 4,
 // Setups = 2: tu_ewa_walk_lanes over four bank ports, one RAM with four read ports; Vtu_ewa_k4),
 // run with cosim::Options::rtl.
 #include "Vtu_ewa.h"
@@ -41,7 +40,7 @@ RtlBlock ewa_block(const std::string& name, std::shared_ptr<const tex::Texture> 
                   [](V& d) -> auto& { return d.tex_data_i; });
     return e;
   };
-  return make_rtl<V>(name, drive, sample, {}, env);
+  return make_rtl<V>(name, drive, sample, env);
 }
 
 std::shared_ptr<const tex::Texture> block_texture() {

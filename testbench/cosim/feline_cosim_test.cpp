@@ -35,12 +35,13 @@ TEST(FelineCosim, CyclesMatchPrediction) {
     std::vector<ewa::PixelCost> costs;
     double probes = 0;
     for (const auto& row : vf.rows) {
-      const auto in = blocks::pick(row, in_idx), out = blocks::pick(row, out_idx);
+      const auto in = cosim::glue::in_feline(blocks::pick(row, in_idx));
+      const auto out = cosim::glue::out_feline(blocks::pick(row, out_idx));
       ewa::PixelCost c;
       c.engine = ewa::Engine::Feline;
-      c.guard = in[9] != 0;
-      c.probes = c.guard ? 1 : static_cast<int>(out[6]);
-      c.one_level = ewa::trilinear_one_level(c.guard, static_cast<int>(out[4]), 8);
+      c.guard = in.guard != 0;
+      c.probes = c.guard ? 1 : static_cast<int>(out.probes);
+      c.one_level = ewa::trilinear_one_level(c.guard, static_cast<int>(out.level), 8);
       probes += static_cast<double>(c.probes);
       costs.push_back(c);
     }

@@ -12,24 +12,25 @@ namespace tu::cosim {
 RtlBlock rtl_feline() {
   static const tex::Texture tex = tex::Texture::build("bricks", tex::bricks(256).color, tex::Wrap::Repeat);
   auto drive = [](Vtu_feline& d, const Row& in) {
-    d.u_i = static_cast<uint32_t>(in[0]);
-    d.v_i = static_cast<uint32_t>(in[1]);
-    d.ae_i = in[2];
-    d.ce_i = in[3];
-    d.be_i = in[4];
-    d.lmaj_i = static_cast<uint32_t>(in[5]);
-    d.lmin_i = static_cast<uint32_t>(in[6]);
-    d.lrho_i = static_cast<uint32_t>(in[7]);
-    d.eflags_i = static_cast<uint8_t>(in[8]);
-    d.guard_i = static_cast<uint8_t>(in[9]);
-    d.nmax_i = static_cast<uint8_t>(in[10]);
-    d.bias_i = static_cast<uint16_t>(in[11]);
-    d.minlod_i = static_cast<uint16_t>(in[12]);
-    d.maxlod_i = static_cast<uint16_t>(in[13]);
+    const glue::feline_in f = glue::in_feline(in);  // the block's fields by name (generated glue)
+    d.u_i = static_cast<uint32_t>(f.u);
+    d.v_i = static_cast<uint32_t>(f.v);
+    d.ae_i = f.ae;
+    d.ce_i = f.ce;
+    d.be_i = f.be;
+    d.lmaj_i = static_cast<uint32_t>(f.lmaj);
+    d.lmin_i = static_cast<uint32_t>(f.lmin);
+    d.lrho_i = static_cast<uint32_t>(f.lrho);
+    d.eflags_i = static_cast<uint8_t>(f.b2flags);
+    d.guard_i = static_cast<uint8_t>(f.guard);
+    d.nmax_i = static_cast<uint8_t>(f.nmax);
+    d.bias_i = static_cast<uint16_t>(f.bias);
+    d.minlod_i = static_cast<uint16_t>(f.min_lod);
+    d.maxlod_i = static_cast<uint16_t>(f.max_lod);
     // the material's levels on the texture's pyramid (the unit's lbase_i, ltop_i)
     tex::LodParams lp;
-    lp.base_level = static_cast<uint32_t>(in[14]);
-    lp.max_level = static_cast<uint32_t>(in[15]);
+    lp.base_level = static_cast<uint32_t>(f.base_level);
+    lp.max_level = static_cast<uint32_t>(f.max_level);
     const tex::LevelRange lv = tex::level_range(lp, tex.num_levels() - 1);
     d.lbase_i = static_cast<uint8_t>(lv.base);
     d.ltop_i = static_cast<uint8_t>(lv.top);
@@ -51,7 +52,7 @@ RtlBlock rtl_feline() {
                            [](Vtu_feline& d) -> auto& { return d.tex_data_i; });
     return e;
   };
-  return make_rtl<Vtu_feline>("feline", drive, sample, {}, env);
+  return make_rtl<Vtu_feline>("feline", drive, sample, env);
 }
 
 }  // namespace tu::cosim

@@ -2,7 +2,8 @@
 //
 // The DUT has the uniform handshake ports clk_i, rst_ni, in_valid_i, in_ready_o, out_valid_o,
 // out_ready_i; a block supplies `drive` (put one input row on its data ports) and `sample`
-// (read one output row). The harness:
+// (read one output row). A row is a vector of fields (Row, a vector file's row) by default, or
+// the block's own record type with named fields (Harness<V, In, Out>). The harness:
 //   * holds in_valid and the data until accepted (valid/ready rule), inserting random input
 //     bubbles and random output back-pressure with probability stall_prob each;
 //   * keeps a scoreboard: each output is paired with the oldest accepted input not yet answered,
@@ -37,13 +38,15 @@ struct RunOptions {
   uint64_t drain_cycles = 64;  // extra cycles after the last output, watching for extras
 };
 
-struct RunResult {
-  std::vector<Row> outputs;      // in arrival order
+template <class Out = Row>
+struct BasicRunResult {
+  std::vector<Out> outputs;      // in arrival order
   uint64_t accepted = 0;         // inputs accepted
   uint64_t extra_outputs = 0;    // outputs with no pending input (duplicates / spurious)
   uint64_t sim_cycles = 0;       // cycles from reset release to the last output
   bool hung = false;
 };
+using RunResult = BasicRunResult<Row>;
 
 // The C++ surroundings of a block (what a simulation wrapper around it would hold), fresh for every
 // run. The harness calls, on every clock and every evaluation:
@@ -57,23 +60,21 @@ struct Env {
   std::vector<std::function<void(V&)>> settle, edge, update;
 };
 
-template <class V>
+template <class V, class In = Row, class Out = Row>
 class Harness {
  public:
-  using Drive = std::function<void(V&, const Row&)>;
-  using Sample = std::function<Row(V&)>;
-  // Optional preload during reset (e.g. a texture into a RAM model's write port): may set ports
-  // and call tick(); must leave the preload ports idle.
-  using Init = std::function<void(V&, const std::function<void()>& tick)>;
-  // The block's surroundings, built afresh for each run (Env).
+  using Drive = std::function<void(V&, const In&)>;
+  using Sample = std::function<Out(V&)>;
+  // The block's surroundings, built afresh for each run (Env); what they hold (a RAM's image, a
+  // stream's words) is there from the start: no clock is spent loading it.
   using MakeEnv = std::function<Env<V>()>;
 
-  Harness(Drive drive, Sample sample, Init init = {}, MakeEnv make_env = {})
-      : drive_(std::move(drive)), sample_(std::move(sample)), init_(std::move(init)), make_env_(std::move(make_env)) {}
+  Harness(Drive drive, Sample sample, MakeEnv make_env = {})
+      : drive_(std::move(drive)), sample_(std::move(sample)), make_env_(std::move(make_env)) {}
 
   // fanout[i] (default 1): outputs input i produces (e.g. the pixels of a span).
-  RunResult run(const std::vector<Row>& inputs, const RunOptions& opt,
-                const std::vector<uint64_t>& fanout = {}) {
+  BasicRunResult<Out> run(const std::vector<In>& inputs, const RunOptions& opt,
+                          const std::vector<uint64_t>& fanout = {}) {
     uint64_t expected = inputs.size();
     if (!fanout.empty()) {
       expected = 0;
@@ -122,13 +123,12 @@ class Harness {
     if (!inputs.empty()) drive_(dut, inputs[0]);
     eval();
     for (int i = 0; i < 4; ++i) tick();
-    if (init_) init_(dut, tick);
     dut.rst_ni = 1;
     eval();
 
     std::mt19937_64 rng(opt.seed);
     std::bernoulli_distribution stall(opt.stall_prob);
-    RunResult res;
+    BasicRunResult<Out> res;
     res.outputs.reserve(expected);
     size_t next = 0;        // next input to offer
     uint64_t pending = 0;   // accepted, not yet answered
@@ -144,7 +144,7 @@ class Harness {
       eval();
       const bool fire_in = offering && dut.in_ready_o;
       const bool fire_out = dut.out_valid_o && dut.out_ready_i;
-      Row out;
+      Out out{};
       if (fire_out) out = sample_(dut);
       tick();
       bool progress = false;
@@ -182,7 +182,7 @@ class Harness {
   }
 
   // Latency (acceptance to output, in cycles) and II (cycles between acceptances) with no stalls.
-  std::pair<uint64_t, double> measure_timing(const std::vector<Row>& inputs) {
+  std::pair<uint64_t, double> measure_timing(const std::vector<In>& inputs) {
     auto ctx = std::make_unique<VerilatedContext>();
     V dut(ctx.get());
     const Env<V> env = make_env_ ? make_env_() : Env<V>{};
@@ -205,7 +205,6 @@ class Harness {
     if (!inputs.empty()) drive_(dut, inputs[0]);
     eval();
     for (int i = 0; i < 4; ++i) tick();
-    if (init_) init_(dut, tick);
     dut.rst_ni = 1;
     eval();
     uint64_t cyc = 0, first_accept = 0, last_accept = 0, first_out = 0;
@@ -239,7 +238,6 @@ class Harness {
  private:
   Drive drive_;
   Sample sample_;
-  Init init_;
   MakeEnv make_env_;
 };
 

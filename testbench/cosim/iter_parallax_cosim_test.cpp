@@ -44,9 +44,10 @@ TEST(IterParallaxCosim, CyclesPerPixelMatchPredictionAndNonConvergenceRate) {
                              uint64_t(d.sh) & 0xffffffffu};
           const auto out = b.model(row);
           const auto ref = b.ref(row);
-          predicted += double(out[2]) + 3;
-          iters += double(out[2]);
-          nonconv += double(out[3]);
+          const auto o = cosim::glue::out_iter_parallax(out);
+          predicted += double(o.iters) + 3;
+          iters += double(o.iters);
+          nonconv += double(o.nonconv);
           row.insert(row.end(), out.begin(), out.end());
           row.insert(row.end(), ref.begin(), ref.end());
           vf.rows.push_back(row);

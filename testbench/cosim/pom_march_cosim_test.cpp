@@ -56,8 +56,8 @@ TEST(PomMarchCosim, CyclesPerPixelMatchPrediction) {
         row.insert(row.end(), out.begin(), out.end());
         row.insert(row.end(), ref.begin(), ref.end());
         vf.rows.push_back(row);
-        ks.push_back(static_cast<uint32_t>(out[2]));
-        steps += double(out[2]);
+        ks.push_back(static_cast<uint32_t>(cosim::glue::out_pom_march(out).steps));
+        steps += double(cosim::glue::out_pom_march(out).steps);
       }
       cosim::Options opt;
       opt.run.stall_prob = 0;

@@ -1,10 +1,12 @@
-// The synchronous-read RAM of the co-simulation (what rtl/top/tu_texel_ram.sv is in a Verilog
-// bench), modelled in C++ and attached by the harness to a block's read ports, so that the block
-// itself is the Verilator top (no simulation wrapper repeating its port list):
+// The synchronous-read RAM of the co-simulation (the texel and depth RAMs a block reads through
+// its texel or depth port; in silicon a texture cache), modelled in C++ and attached by the
+// harness to a block's read ports, so that the block itself is the Verilator top (no simulation
+// wrapper repeating its port list):
 //   SyncReadRam    the memory (a preloaded image, shared by every run) and one read register per
 //                  port: on each rising clock edge a port whose enable is high latches the word at
-//                  its address (0 at or above `words`, as tu_texel_ram), and the block sees that
+//                  its address (0 at or above `words`, and above the image), and the block sees that
 //                  word from the edge on (1-cycle latency); the register holds when not enabled.
+//                  SyncReadRam64: the same with 64-bit words (the BC1 texel RAM: a block a word).
 //   attach_ram()   puts one RAM on a Verilated block's req / addr / data ports (Env hooks of the
 //                  Harness: sample before the edge, drive after it).
 // The harness preloads the image directly: no RAM write port passes through the RTL and no clock
@@ -25,14 +27,20 @@
 
 namespace tu::cosim {
 
-class SyncReadRam {
- public:
-  using Image = std::vector<uint32_t>;  // word i at address i (from address 0)
+// Word: the stored word (uint32_t, or uint64_t for the BC1 texel RAM's 64-bit blocks); 32-bit
+// users keep 32-bit words (BasicSyncReadRam<uint32_t> is SyncReadRam, as fast as before).
+template <class Word>
+class BasicSyncReadRam {
+  static_assert(std::is_same_v<Word, uint32_t> || std::is_same_v<Word, uint64_t>, "32- or 64-bit words");
+  static constexpr int kWordBits = 8 * static_cast<int>(sizeof(Word));
 
-  // tu_texel_ram's parameters: Words (size), Ports (read ports), AddrW and DataW (a port's address
-  // and data width: a data port narrower than 32 bits gets a word's low bits).
-  SyncReadRam(std::shared_ptr<const Image> image, uint64_t words, int ports = 1, int addr_w = fmt::kTexAddrW,
-              int data_w = 32)
+ public:
+  using Image = std::vector<Word>;  // word i at address i (from address 0)
+
+  // words (the RAM's size), ports (read ports), addr_w and data_w (a port's address and data
+  // width: a data port narrower than the word gets a word's low bits).
+  BasicSyncReadRam(std::shared_ptr<const Image> image, uint64_t words, int ports = 1, int addr_w = fmt::kTexAddrW,
+                   int data_w = kWordBits)
       : image_(std::move(image)),
         size_(std::min<uint64_t>(words, image_->size())),
         addr_w_(addr_w),
@@ -47,20 +55,22 @@ class SyncReadRam {
     if (en) q_[static_cast<size_t>(p)] = addr < size_ ? (*image_)[addr] : 0;  // unloaded words are 0
   }
   // Port p's read register (the data the block sees after the edge).
-  uint32_t q(int p) const {
-    const uint32_t w = q_[static_cast<size_t>(p)];
-    return data_w_ >= 32 ? w : w & ((uint32_t(1) << data_w_) - 1);
+  Word q(int p) const {
+    const Word w = q_[static_cast<size_t>(p)];
+    return data_w_ >= kWordBits ? w : w & ((Word(1) << data_w_) - 1);
   }
 
  private:
   std::shared_ptr<const Image> image_;
   uint64_t size_;  // words readable (the rest read 0)
   int addr_w_, data_w_;
-  std::vector<uint32_t> q_;
+  std::vector<Word> q_;
 };
+using SyncReadRam = BasicSyncReadRam<uint32_t>;
+using SyncReadRam64 = BasicSyncReadRam<uint64_t>;
 
-// Bits [lo, lo + w) of a Verilated port (w <= 32 here), whatever its C++ type (CData .. QData, or
-// VlWide<N> above 64 bits).
+// Bits [lo, lo + w) of a Verilated port (w <= 32, or w = 64 at a multiple of 32), whatever its C++
+// type (CData .. QData, or VlWide<N> above 64 bits).
 template <class T>
 uint64_t port_bits(const T& s, unsigned lo, unsigned w) {
   const uint64_t mask = w >= 64 ? ~uint64_t(0) : (uint64_t(1) << w) - 1;
@@ -92,8 +102,8 @@ void set_port_bits(T& s, unsigned lo, unsigned w, uint64_t v) {
 // bits [p * AddrW, +AddrW)), data(d) (port p at [p * DataW, +DataW)); each accessor returns the
 // Verilated port, e.g. [](V& d) -> auto& { return d.tex_addr_o; }. A fresh RAM state per run:
 // call inside the harness's Env factory.
-template <class V, class Req, class Addr, class Data>
-void attach_ram(Env<V>& env, std::shared_ptr<SyncReadRam> ram, Req req, Addr addr, Data data) {
+template <class V, class Word, class Req, class Addr, class Data>
+void attach_ram(Env<V>& env, std::shared_ptr<BasicSyncReadRam<Word>> ram, Req req, Addr addr, Data data) {
   env.edge.push_back([=](V& d) {
     for (int p = 0; p < ram->ports(); ++p)
       ram->clock(p, port_bits(req(d), unsigned(p), 1) != 0,

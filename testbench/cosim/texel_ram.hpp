@@ -1,12 +1,10 @@
-// Texture layout of the texel RAM model (rtl/top/tu_texel_ram.sv, addressed by tu_texel_addr):
+// Texture layout of the texel RAM (SyncReadRam in the co-simulation, addressed by tu_texel_addr):
 // RGBA8 words r | g << 8 | b << 16 | a << 24, every mip level of a texture one after another from
 // level 0, row-major, after one word holding the border colour: texture_words(t) loaded at A puts
-// the texture's base (level 0) at A + 1 (tex::texel_addr). load_words() writes words through
-// the RAM's write port.
+// the texture's base (level 0) at A + 1 (tex::texel_addr).
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 #include "texture/texture.hpp"
@@ -34,19 +32,6 @@ inline int log2_size(int n) {  // n: a power of two
   int l = 0;
   while ((1 << l) < n) ++l;
   return l;
-}
-
-// Writes `words` at base..base+n-1 through a DUT's RAM write port (ram_we_i, ram_waddr_i,
-// ram_wdata_i), one word per clock, and leaves the port idle.
-template <class V>
-void load_words(V& d, const std::function<void()>& tick, uint64_t base, const std::vector<uint32_t>& words) {
-  for (size_t i = 0; i < words.size(); ++i) {
-    d.ram_we_i = 1;
-    d.ram_waddr_i = static_cast<uint32_t>(base + i);
-    d.ram_wdata_i = words[i];
-    tick();
-  }
-  d.ram_we_i = 0;
 }
 
 }  // namespace tu::cosim

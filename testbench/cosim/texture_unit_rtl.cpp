@@ -8,16 +8,16 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "Vtu_texture_unit_sim.h"
-#include "Vtu_texture_unit_sim_bil.h"
-#include "Vtu_texture_unit_sim_corridor.h"
-#include "Vtu_texture_unit_sim_rec.h"
+#include "Vtu_texture_unit.h"
+#include "Vtu_texture_unit_bil.h"
+#include "Vtu_texture_unit_corridor.h"
+#include "Vtu_texture_unit_rec.h"
 #if TU_COSIM_K4_UNIT
-#include "Vtu_texture_unit_sim_k4.h"
+#include "Vtu_texture_unit_k4.h"
 #endif
 #if TU_COSIM_CLIP_VARIANTS
-#include "Vtu_texture_unit_sim_clip1.h"
-#include "Vtu_texture_unit_sim_clip2.h"
+#include "Vtu_texture_unit_clip1.h"
+#include "Vtu_texture_unit_clip2.h"
 #endif
 #include "afvis/afvis.hpp"
 #include "ellipse/ellipse_fx.hpp"
@@ -25,6 +25,8 @@
 #include "harness.hpp"
 #include "noise/noise_proc.hpp"
 #include "pom/relief.hpp"
+#include "stream_source.hpp"
+#include "sync_read_ram.hpp"
 #include "texel_ram.hpp"
 #include "texture/texel_format.hpp"
 #include "texture/trilinear_lod.hpp"
@@ -33,22 +35,51 @@ namespace tu::cosim {
 
 namespace {
 static_assert(static_cast<int>(tex::TexelFormat::Bc1) == 7, "tu_texture_unit TexFmtBc1 is 3'd7");
-constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;  // tu_texture_unit_sim Words
-constexpr uint64_t kDepthWords = 2 * kRamWords;                         // tu_texture_unit_sim DepthWords
-constexpr uint64_t kViewWords = kRamWords;                              // tu_view_src Words
-constexpr uint64_t kShadeWords = uint64_t(1) << 16;                     // tu_view_src Words of the shade stream
+// The unit's memories (2^TexRamLog2Words texel words: tu_texel_addr's address space; the depth RAM
+// twice that, since it also holds the distance maps: the default scene's wall 1,114,112 words).
+constexpr uint64_t kRamWords = uint64_t(1) << fmt::kTexRamLog2Words;
+constexpr uint64_t kDepthWords = 2 * kRamWords;
 
 uint64_t lo(i128 v) { return static_cast<uint64_t>(v); }
 uint64_t hi(i128 v) { return static_cast<uint64_t>(v >> 64); }
 uint64_t code(i128 v, int w) { return static_cast<uint64_t>(v) & (w >= 64 ? ~0ull : (1ull << w) - 1); }
 
-// Row layout of one span (two words for each 112-bit numerator constant).
-enum : size_t {
-  kA = 0, kX0 = 9, kX1, kY, kK = 12, kDm = 24, kDexp, kLaniso, kMaxlod, kBase, kLw, kLh, kWrap,
-  kWsrc, kCap, kFilt, kClip, kRel, kRadapt, kRiter, kRlayers, kRscale, kHbase, kHlw, kHlh, kLbias, kLminlod, kLmaxlod,
-  kRdm, kDlayers, kDbase, kLbase, kLtop, kFnmax, kAfv, kAdmin, kAbias, kArule, kTfmt, kTsrgb,
-  kProc, kProcWords = (schema::kProcW + 63) / 64, kRowSize = kProc + kProcWords  // tu_proc_t, least significant first
+constexpr size_t kProcWords = (schema::kProcW + 63) / 64;  // tu_proc_t, least significant first
+
+// The span fields that go to one input port each, by the port's name without _i
+// (rtl/top/tu_texture_unit.sv): B1 coefficient codes a .. i, the span x0 .. x1 on row y, the
+// per-triangle footprint constants, the colour texture, the filter, the relief and afvis fields.
+#define TU_SPAN_PORTS(X)                                                                             \
+  X(a) X(b) X(c) X(d) X(e) X(f) X(g) X(h) X(i) X(x0) X(x1) X(y)                                      \
+  X(dm) X(dexp) X(laniso) X(maxlod) X(lbias) X(lminlod) X(lmaxlod) X(lbase) X(ltop)                \
+  X(tbase) X(tlw) X(tlh) X(twrap) X(tfmt) X(tsrgb) X(wsrc) X(cap) X(filt) X(fnmax) X(clip)          \
+  X(rel) X(radapt) X(riter) X(rlayers) X(rscale) X(hbase) X(hlw) X(hlh) X(rdm) X(dlayers) X(dbase)  \
+  X(afv) X(admin) X(abias) X(arule)
+// The 112-bit exact numerator constants of the footprint (ellipse::fx), one port each.
+#define TU_SPAN_WIDE_PORTS(X) X(kux) X(kvx) X(kuy) X(kvy) X(m) X(nn)
+
+// One span on the unit's input ports: every field a code of its port's width.
+struct Span {
+#define TU_X_FIELD(name) uint64_t name = 0;
+  TU_SPAN_PORTS(TU_X_FIELD)
+#undef TU_X_FIELD
+#define TU_X_FIELD(name) i128 name = 0;
+  TU_SPAN_WIDE_PORTS(TU_X_FIELD)
+#undef TU_X_FIELD
+  std::array<uint64_t, kProcWords> proc{};  // proc_i: a procedural material's tu_proc_t
 };
+
+// One output pixel of the unit, by output port (without _o).
+struct UnitPixel {
+  uint64_t x, y, rgba, level, visited, inside, flags, eflags, rn, rsteps, rflags;
+};
+
+// One word of the view port: the pixel's quantised tangent-space view and the complexity texel.
+struct ViewWord {
+  uint64_t ok, vx, vy, vz, c;
+};
+using ShadeWord = std::array<uint32_t, brdf::shade::kWordWords>;  // the shade port's word
+static_assert(32 * brdf::shade::kWordWords == fmt::kShadeWordW, "shade_i is whole 32-bit words");
 
 // A procedural material's tu_proc_t bits (schema.hpp TU_REC_PROC: first field most significant).
 std::array<uint64_t, kProcWords> pack_proc(const noise::ProcCodes& c) {
@@ -71,8 +102,9 @@ std::array<uint64_t, kProcWords> pack_proc(const noise::ProcCodes& c) {
   return w;
 }
 
-template <class V>
-void set_wide(V& port, uint64_t l, uint64_t h) {
+template <class P>
+void set_wide(P& port, i128 v) {
+  const uint64_t l = lo(v), h = hi(v);
   port[0] = static_cast<uint32_t>(l);
   port[1] = static_cast<uint32_t>(l >> 32);
   port[2] = static_cast<uint32_t>(h);
@@ -80,67 +112,80 @@ void set_wide(V& port, uint64_t l, uint64_t h) {
 }
 
 template <class V>
-void drive(V& d, const Row& r) {
-  d.a_i = r[kA + 0];
-  d.b_i = r[kA + 1];
-  d.c_i = r[kA + 2];
-  d.d_i = r[kA + 3];
-  d.e_i = r[kA + 4];
-  d.f_i = r[kA + 5];
-  d.g_i = r[kA + 6];
-  d.h_i = r[kA + 7];
-  d.i_i = r[kA + 8];
-  d.x0_i = static_cast<uint16_t>(r[kX0]);
-  d.x1_i = static_cast<uint16_t>(r[kX1]);
-  d.y_i = static_cast<uint16_t>(r[kY]);
-  set_wide(d.kux_i, r[kK + 0], r[kK + 1]);
-  set_wide(d.kvx_i, r[kK + 2], r[kK + 3]);
-  set_wide(d.kuy_i, r[kK + 4], r[kK + 5]);
-  set_wide(d.kvy_i, r[kK + 6], r[kK + 7]);
-  set_wide(d.m_i, r[kK + 8], r[kK + 9]);
-  set_wide(d.nn_i, r[kK + 10], r[kK + 11]);
-  d.dm_i = r[kDm];
-  d.dexp_i = static_cast<uint8_t>(r[kDexp]);
-  d.laniso_i = static_cast<uint16_t>(r[kLaniso]);
-  d.maxlod_i = static_cast<uint8_t>(r[kMaxlod]);
-  d.lbias_i = static_cast<uint16_t>(r[kLbias]);
-  d.lminlod_i = static_cast<uint16_t>(r[kLminlod]);
-  d.lmaxlod_i = static_cast<uint16_t>(r[kLmaxlod]);
-  d.lbase_i = static_cast<uint8_t>(r[kLbase]);
-  d.ltop_i = static_cast<uint8_t>(r[kLtop]);
-  d.tbase_i = static_cast<uint32_t>(r[kBase]);
-  d.tlw_i = static_cast<uint8_t>(r[kLw]);
-  d.tlh_i = static_cast<uint8_t>(r[kLh]);
-  d.twrap_i = static_cast<uint8_t>(r[kWrap]);
-  d.tfmt_i = static_cast<uint8_t>(r[kTfmt]);
-  d.tsrgb_i = static_cast<uint8_t>(r[kTsrgb]);
-  d.wsrc_i = static_cast<uint8_t>(r[kWsrc]);
-  d.cap_i = static_cast<uint32_t>(r[kCap]);
-  d.filt_i = static_cast<uint8_t>(r[kFilt]);
-  d.fnmax_i = static_cast<uint8_t>(r[kFnmax]);
-  d.clip_i = static_cast<uint8_t>(r[kClip]);
-  d.rel_i = static_cast<uint8_t>(r[kRel]);
-  d.radapt_i = static_cast<uint8_t>(r[kRadapt]);
-  d.riter_i = static_cast<uint8_t>(r[kRiter]);
-  d.rlayers_i = static_cast<uint8_t>(r[kRlayers]);
-  d.rscale_i = static_cast<uint16_t>(r[kRscale]);
-  d.hbase_i = static_cast<uint32_t>(r[kHbase]);
-  d.hlw_i = static_cast<uint8_t>(r[kHlw]);
-  d.hlh_i = static_cast<uint8_t>(r[kHlh]);
-  d.rdm_i = static_cast<uint8_t>(r[kRdm]);
-  d.dlayers_i = static_cast<uint8_t>(r[kDlayers]);
-  d.dbase_i = static_cast<uint32_t>(r[kDbase]);
-  d.afv_i = static_cast<uint8_t>(r[kAfv]);
-  d.admin_i = static_cast<uint8_t>(r[kAdmin]);
-  d.abias_i = static_cast<uint8_t>(r[kAbias]);
-  d.arule_i = static_cast<uint8_t>(r[kArule]);
+void drive(V& d, const Span& s) {
+#define TU_X_DRIVE(name) d.name##_i = static_cast<std::remove_reference_t<decltype(d.name##_i)>>(s.name);
+  TU_SPAN_PORTS(TU_X_DRIVE)
+#undef TU_X_DRIVE
+#define TU_X_DRIVE(name) set_wide(d.name##_i, s.name);
+  TU_SPAN_WIDE_PORTS(TU_X_DRIVE)
+#undef TU_X_DRIVE
   for (size_t j = 0; j < (schema::kProcW + 31) / 32; ++j)  // the VlWide words of proc_i
-    d.proc_i[j] = static_cast<uint32_t>(r[kProc + j / 2] >> (32 * (j % 2)));
+    d.proc_i[j] = static_cast<uint32_t>(s.proc[j / 2] >> (32 * (j % 2)));
 }
 
 template <class V>
-Row sample(V& d) {
-  return Row{d.x_o, d.y_o, d.rgba_o, d.level_o, d.visited_o, d.inside_o, d.flags_o, d.eflags_o, d.rn_o, d.rsteps_o, d.rflags_o};
+UnitPixel sample(V& d) {
+  return {.x = d.x_o, .y = d.y_o, .rgba = d.rgba_o, .level = d.level_o, .visited = d.visited_o,
+          .inside = d.inside_o, .flags = d.flags_o, .eflags = d.eflags_o, .rn = d.rn_o, .rsteps = d.rsteps_o,
+          .rflags = d.rflags_o};
+}
+
+// What the unit reads besides its spans, preloaded (no clock spent loading): the texel RAM's
+// words (64 bits: a BC1 block, or a texel in the low bits), the depth RAM's (a depth or distance
+// code in the low 8 bits), the view and the shade words in pixel order.
+struct UnitImages {
+  std::shared_ptr<const SyncReadRam64::Image> texels;
+  std::shared_ptr<const SyncReadRam::Image> depth;
+  std::shared_ptr<const StreamSource<ViewWord>::Words> views;
+  std::shared_ptr<const StreamSource<ShadeWord>::Words> shades;
+  int ewa_lanes = 1;  // the model's EwaLanes: texel RAM read ports (tex_* and, above 1, texk_*)
+};
+
+// The unit's surroundings in C++ (fresh per run), so that tu_texture_unit is the Verilator top:
+//   * the texel RAM on tex_* (port 0) and texk_* (bank ports 1 .. EwaLanes - 1; each port only
+//     reads its parity class of texels, so four single-port banks serve the same traffic: one
+//     image here), words of the texel port's width (64 with HasBc1, else TexelW: the Verilated
+//     port's C++ type holds exactly that many bits for TexelW 32);
+//   * the depth RAM on d_* and, for the visibility engine (HasAfvis; a_req_o stays low without
+//     it), its second read port a_* (a dual-port RAM);
+//   * the view stream on view_* / vx_i ... and the shade stream on shade_*.
+template <class V>
+Env<V> unit_env(const UnitImages& im) {
+  Env<V> e;
+  constexpr int kTpw = 8 * static_cast<int>(sizeof(std::declval<V&>().tex_data_i));
+  static_assert(kTpw == 32 || kTpw == 64, "texel port: TexelW = 32, or 64 bits with HasBc1");
+  attach_ram<V>(e, std::make_shared<SyncReadRam64>(im.texels, kRamWords, 1, fmt::kTexAddrW, kTpw),
+                [](V& d) -> auto& { return d.tex_req_o; }, [](V& d) -> auto& { return d.tex_addr_o; },
+                [](V& d) -> auto& { return d.tex_data_i; });
+  if (im.ewa_lanes > 1) {
+    if (8 * sizeof(std::declval<V&>().texk_data_i) != static_cast<size_t>((im.ewa_lanes - 1) * kTpw))
+      throw std::logic_error("render_rtl: the model's texk_data_i is not EwaLanes - 1 = " +
+                             std::to_string(im.ewa_lanes - 1) + " texel ports");
+    attach_ram<V>(e, std::make_shared<SyncReadRam64>(im.texels, kRamWords, im.ewa_lanes - 1, fmt::kTexAddrW, kTpw),
+                  [](V& d) -> auto& { return d.texk_req_o; }, [](V& d) -> auto& { return d.texk_addr_o; },
+                  [](V& d) -> auto& { return d.texk_data_i; });
+  }
+  attach_ram<V>(e, std::make_shared<SyncReadRam>(im.depth, kDepthWords, 1, fmt::kTexAddrW, 8),
+                [](V& d) -> auto& { return d.d_req_o; }, [](V& d) -> auto& { return d.d_addr_o; },
+                [](V& d) -> auto& { return d.d_data_i; });
+  attach_ram<V>(e, std::make_shared<SyncReadRam>(im.depth, kDepthWords, 1, fmt::kTexAddrW, 8),
+                [](V& d) -> auto& { return d.a_req_o; }, [](V& d) -> auto& { return d.a_addr_o; },
+                [](V& d) -> auto& { return d.a_data_i; });
+  attach_stream<V>(e, std::make_shared<StreamSource<ViewWord>>(im.views),
+                   [](V& d) -> auto& { return d.view_valid_i; }, [](V& d) { return d.view_ready_o; },
+                   [](V& d, const ViewWord& w) {
+                     d.view_ok_i = static_cast<uint8_t>(w.ok);
+                     d.vx_i = static_cast<uint16_t>(w.vx);
+                     d.vy_i = static_cast<uint16_t>(w.vy);
+                     d.vz_i = static_cast<uint16_t>(w.vz);
+                     d.vc_i = static_cast<uint8_t>(w.c);
+                   });
+  attach_stream<V>(e, std::make_shared<StreamSource<ShadeWord>>(im.shades),
+                   [](V& d) -> auto& { return d.shade_valid_i; }, [](V& d) { return d.shade_ready_o; },
+                   [](V& d, const ShadeWord& w) {
+                     for (size_t j = 0; j < w.size(); ++j) d.shade_i[j] = w[j];
+                   });
+  return e;
 }
 }  // namespace
 
@@ -251,8 +296,8 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
     std::optional<noise::ProcCodes> proc;  // a procedural material's constants
   };
   std::vector<Obj> objs;
-  std::vector<uint64_t> ram;  // texel RAM words (64 bits with HasBc1; 32 otherwise: the low half)
-  std::vector<uint32_t> depth_ram;
+  SyncReadRam64::Image ram;  // texel RAM words (64 bits with HasBc1; 32 otherwise: the low half)
+  SyncReadRam::Image depth_ram;
   for (size_t oi = 0; oi < s.objects.size(); ++oi) {
     const auto& ob = s.objects[oi];
     Obj x{scene::build_texture(s, s.materials.at(ob.material).texture), ram.size() + 1, {}, std::nullopt, 0, 0, std::nullopt};  // after its border word
@@ -282,11 +327,11 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
 
   // Spans, and the per-pixel cycle costs from the C model.
   const auto cov = render::visibility(s, o.threads);
-  std::vector<Row> spans;
+  std::vector<Span> spans;
   std::vector<ewa::PixelCost> costs;
   std::vector<relief::StagePixel> relief_px;  // each pixel's relief step (the stage's cycle model)
-  std::vector<uint64_t> views;  // the view stream model's words
-  std::vector<std::array<uint32_t, brdf::shade::kWordWords>> shades;  // the shade stream model's words
+  StreamSource<ViewWord>::Words views;     // the view port's words
+  StreamSource<ShadeWord>::Words shades;   // the shade port's words
   const shading::Setup shade(s, o.shade_model);
   const persp::RayCaster rays(s.camera);
   auto lw_of = [](const Obj& ob) { return log2_size(ob.tex.levels[0].width); };
@@ -316,58 +361,58 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
       int64_t dm;
       int32_t dexp;
       ellipse::fx::det3(k, &dm, &dexp);
-      Row r(kRowSize);
-      const i128 co[9] = {a, b, cc, d, e, f, g, hh, i};
-      for (int j = 0; j < 9; ++j) r[kA + static_cast<size_t>(j)] = code(co[j], j < 6 ? fmt::kPerspPW : fmt::kPerspQW);
-      r[kX0] = static_cast<uint64_t>(x);
-      r[kX1] = static_cast<uint64_t>(x1);
-      r[kY] = static_cast<uint64_t>(y);
-      for (size_t j = 0; j < 6; ++j) r[kK + 2 * j] = lo(kk[j]), r[kK + 2 * j + 1] = hi(kk[j]);
-      r[kDm] = code(dm, fmt::kEllDetW);
-      r[kDexp] = code(dexp, fmt::kEllDetExpW);
-      r[kLaniso] = render::laniso_code(m.max_aniso);
-      r[kMaxlod] = static_cast<uint64_t>(top);
+      Span r;
+      r.a = code(a, fmt::kPerspPW), r.b = code(b, fmt::kPerspPW), r.c = code(cc, fmt::kPerspPW);
+      r.d = code(d, fmt::kPerspPW), r.e = code(e, fmt::kPerspPW), r.f = code(f, fmt::kPerspPW);
+      r.g = code(g, fmt::kPerspQW), r.h = code(hh, fmt::kPerspQW), r.i = code(i, fmt::kPerspQW);
+      r.x0 = static_cast<uint64_t>(x);
+      r.x1 = static_cast<uint64_t>(x1);
+      r.y = static_cast<uint64_t>(y);
+      r.kux = kk[0], r.kvx = kk[1], r.kuy = kk[2], r.kvy = kk[3], r.m = kk[4], r.nn = kk[5];
+      r.dm = code(dm, fmt::kEllDetW);
+      r.dexp = code(dexp, fmt::kEllDetExpW);
+      r.laniso = render::laniso_code(m.max_aniso);
+      r.maxlod = static_cast<uint64_t>(top);
       const tex::LodParams lp = render::lod_params(m);
-      r[kLbias] = code(lp.bias, fmt::kTexLodBiasW);
-      r[kLminlod] = lp.min_lod;
-      r[kLmaxlod] = lp.max_lod;
+      r.lbias = code(lp.bias, fmt::kTexLodBiasW);
+      r.lminlod = lp.min_lod;
+      r.lmaxlod = lp.max_lod;
       const tex::LevelRange lv = tex::level_range(lp, top);
-      r[kLbase] = static_cast<uint64_t>(lv.base);
-      r[kLtop] = static_cast<uint64_t>(lv.top);
-      r[kBase] = ob.base;
-      r[kLw] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].width));
-      r[kLh] = static_cast<uint64_t>(log2_size(ob.tex.levels[0].height));
-      r[kWrap] = wrap_code(ob.tex.addressing);
-      r[kTfmt] = static_cast<uint64_t>(ob.tex.format);
-      r[kTsrgb] = ob.tex.srgb;
-      r[kWsrc] = static_cast<uint64_t>(o.weights.value_or(m.weights));
-      r[kCap] = ewa::kDefaultMaxTexels;
+      r.lbase = static_cast<uint64_t>(lv.base);
+      r.ltop = static_cast<uint64_t>(lv.top);
+      r.tbase = ob.base;
+      r.tlw = static_cast<uint64_t>(log2_size(ob.tex.levels[0].width));
+      r.tlh = static_cast<uint64_t>(log2_size(ob.tex.levels[0].height));
+      r.twrap = wrap_code(ob.tex.addressing);
+      r.tfmt = static_cast<uint64_t>(ob.tex.format);
+      r.tsrgb = ob.tex.srgb;
+      r.wsrc = static_cast<uint64_t>(o.weights.value_or(m.weights));
+      r.cap = ewa::kDefaultMaxTexels;
       const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(c.object)].material);
-      r[kFilt] = static_cast<uint64_t>(eng);
-      r[kFnmax] = static_cast<uint64_t>(m.feline_max_probes);
-      r[kClip] = clip_on(m);
+      r.filt = static_cast<uint64_t>(eng);
+      r.fnmax = static_cast<uint64_t>(m.feline_max_probes);
+      r.clip = clip_on(m);
       if (ob.proc) {
-        const auto pw = pack_proc(*ob.proc);
-        std::copy(pw.begin(), pw.end(), r.begin() + kProc);
+        r.proc = pack_proc(*ob.proc);
       }
       if (ob.maps) {
         const auto& rel = *m.relief;
         const pom::View q = relief::quantise({}, rel.scale);
-        r[kRel] = 1;
-        r[kRadapt] = rel.method == scene::ReliefMethod::PomAdaptive;
-        r[kRiter] = rel.method == scene::ReliefMethod::Iterative;
-        r[kRdm] = ob.maps->dist != nullptr;
-        r[kRlayers] = r[kRdm] ? relief::dm_cap(rel.layers) : static_cast<uint64_t>(std::clamp(rel.layers, 1, 63));
-        r[kDlayers] = r[kRdm] ? static_cast<uint64_t>(ob.maps->dist->layers) : 0;
-        r[kDbase] = ob.dbase;
-        r[kRscale] = q.scale;
-        r[kHbase] = ob.hbase;
-        r[kHlw] = static_cast<uint64_t>(log2_size(ob.maps->depth.width));
-        r[kHlh] = static_cast<uint64_t>(log2_size(ob.maps->depth.height));
-        r[kAfv] = afv_on(m);
-        r[kAdmin] = afvis::min_depth(ob.maps->depth);
-        r[kAbias] = afvis::kDefaultBias;
-        r[kArule] = static_cast<uint64_t>(afvis::Rule::Row);
+        r.rel = 1;
+        r.radapt = rel.method == scene::ReliefMethod::PomAdaptive;
+        r.riter = rel.method == scene::ReliefMethod::Iterative;
+        r.rdm = ob.maps->dist != nullptr;
+        r.rlayers = r.rdm ? relief::dm_cap(rel.layers) : static_cast<uint64_t>(std::clamp(rel.layers, 1, 63));
+        r.dlayers = r.rdm ? static_cast<uint64_t>(ob.maps->dist->layers) : 0;
+        r.dbase = ob.dbase;
+        r.rscale = q.scale;
+        r.hbase = ob.hbase;
+        r.hlw = static_cast<uint64_t>(log2_size(ob.maps->depth.width));
+        r.hlh = static_cast<uint64_t>(log2_size(ob.maps->depth.height));
+        r.afv = afv_on(m);
+        r.admin = afvis::min_depth(ob.maps->depth);
+        r.abias = afvis::kDefaultBias;
+        r.arule = static_cast<uint64_t>(afvis::Rule::Row);
         // One view word per pixel: {ok, vx, vy, vz, complexity at the unshifted uv}.
         for (int px = x; px <= x1; ++px) {
           relief::TangentView tv;
@@ -377,16 +422,14 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
           const int du = fmt::kPomUvF - fmt::kTexUvF;
           const uint64_t cplx = pom::tex_nearest(ob.maps->complexity, relief::shift_code(p.u, du - lw_of(ob)),
                                                  relief::shift_code(p.v, du - lh_of(ob)));
-          views.push_back(uint64_t(ok) << (3 * fmt::kPomVzW + fmt::kPomCW) |
-                          code(v.vx, fmt::kPomVzW) << (2 * fmt::kPomVzW + fmt::kPomCW) |
-                          code(v.vy, fmt::kPomVzW) << (fmt::kPomVzW + fmt::kPomCW) |
-                          code(v.vz, fmt::kPomVzW) << fmt::kPomCW | cplx);
+          views.push_back({.ok = ok, .vx = code(v.vx, fmt::kPomVzW), .vy = code(v.vy, fmt::kPomVzW),
+                           .vz = code(v.vz, fmt::kPomVzW), .c = cplx});
         }
       }
       spans.push_back(r);
       for (int px = x; px <= x1; ++px, ++pix) {
         ewa::fx::In in;
-        in.b2 = ellipse::fx::pixel(k, px, y, static_cast<uint32_t>(r[kLaniso]), static_cast<uint32_t>(top), rec);
+        in.b2 = ellipse::fx::pixel(k, px, y, static_cast<uint32_t>(r.laniso), static_cast<uint32_t>(top), rec);
         in.b2.lod = tex::trilinear_lod(in.b2.lmin, lp, top).lod;  // the EWA's level (render_cmodel)
         const bool guard = persp::Unit::pixel(persp::Unit::direct(k, px, y)).flag;
         ewa::PixelCost pc;
@@ -398,7 +441,7 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
         }
         pc.engine = eng;
         pc.guard = guard;
-        pc.clip = r[kClip] != 0;
+        pc.clip = r.clip != 0;
         pc.noise = ob.proc.has_value();
         // A format change drains (fk_q), and so does another BC1 texture (btex_q: its base, one per object).
         pc.texfmt = ob.tex.format * 2 + (ob.tex.srgb ? 1 : 0) +
@@ -428,57 +471,29 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   ro.seed = o.seed;
   // The scoreboard expects one output per covered pixel of each span.
   std::vector<uint64_t> fanout;
-  for (const Row& r : spans) fanout.push_back(r[kX1] - r[kX0] + 1);
+  for (const Span& r : spans) fanout.push_back(r.x1 - r.x0 + 1);
   const auto t0 = std::chrono::steady_clock::now();
-  RunResult rr;
-  std::vector<uint32_t> view_words;
-  for (uint64_t v : views) view_words.push_back(static_cast<uint32_t>(v)), view_words.push_back(static_cast<uint32_t>(v >> 32));
-  if (view_words.size() / 2 > kViewWords)
-    throw std::runtime_error(s.source + ": " + std::to_string(views.size()) + " relief pixels, the view stream model holds " +
-                             std::to_string(kViewWords));
-  if (shades.size() > kShadeWords)
-    throw std::runtime_error(s.source + ": " + std::to_string(shades.size()) + " covered pixels, the shade stream model holds " +
-                             std::to_string(kShadeWords));
-  auto init = [&](auto& d, const std::function<void()>& tick) {
-    d.ram_sel_i = 0;
-    for (size_t i = 0; i < ram.size(); ++i) {
-      d.ram_we_i = 1;
-      d.ram_waddr_i = static_cast<uint32_t>(i);
-      d.ram_wdata_i = static_cast<uint32_t>(ram[i]);
-      d.ram_wdata_hi_i = static_cast<uint32_t>(ram[i] >> 32);
-      tick();
-    }
-    d.ram_we_i = 0;
-    d.ram_wdata_hi_i = 0;
-    d.ram_sel_i = 1;
-    load_words(d, tick, 0, depth_ram);
-    d.ram_sel_i = 2;
-    load_words(d, tick, 0, view_words);
-    d.ram_sel_i = 3;  // part j of shade word i at 16 i + j
-    for (size_t i = 0; i < shades.size(); ++i)
-      for (size_t j = 0; j < shades[i].size(); ++j) {
-        d.ram_we_i = 1;
-        d.ram_waddr_i = static_cast<uint32_t>(16 * i + j);
-        d.ram_wdata_i = shades[i][j];
-        tick();
-      }
-    d.ram_we_i = 0;
-    d.ram_sel_i = 0;
-  };
+  BasicRunResult<UnitPixel> rr;
+  UnitImages images;
+  images.texels = std::make_shared<const SyncReadRam64::Image>(std::move(ram));
+  images.depth = std::make_shared<const SyncReadRam::Image>(std::move(depth_ram));
+  images.views = std::make_shared<const StreamSource<ViewWord>::Words>(std::move(views));
+  images.shades = std::make_shared<const StreamSource<ShadeWord>::Words>(std::move(shades));
+  images.ewa_lanes = o.corridor_unit || o.ewa_lanes == 4 ? 4 : 1;  // testbench/cosim/CMakeLists.txt -GEwaLanes
   // Every Verilated variant of the unit (parameters differ, ports equal) runs through one harness.
   auto run_unit = [&](auto model) {
     using V = typename decltype(model)::type;
-    Harness<V> hs(drive<V>, sample<V>, [&](V& d, const std::function<void()>& t) { init(d, t); });
+    Harness<V, Span, UnitPixel> hs(drive<V>, sample<V>, [&images]() { return unit_env<V>(images); });
     rr = hs.run(spans, ro, fanout);
   };
   if (o.corridor_unit) {
     if (!o.has_ewa) throw std::invalid_argument("render_rtl: the corridor unit has EWA (has_ewa must be set)");
-    run_unit(std::type_identity<Vtu_texture_unit_sim_corridor>{});
+    run_unit(std::type_identity<Vtu_texture_unit_corridor>{});
   } else if (rec) {
-    run_unit(std::type_identity<Vtu_texture_unit_sim_rec>{});
+    run_unit(std::type_identity<Vtu_texture_unit_rec>{});
   } else if (o.ewa_lanes == 4) {
 #if TU_COSIM_K4_UNIT
-    run_unit(std::type_identity<Vtu_texture_unit_sim_k4>{});
+    run_unit(std::type_identity<Vtu_texture_unit_k4>{});
 #else
     throw std::invalid_argument("render_rtl: the full unit with the K = 4 EWA engine is verilated only with "
                                 "-DTU_COSIM_K4_UNIT=ON");
@@ -486,9 +501,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   } else if (o.has_ewa && ep.clip_variant != 0) {
 #if TU_COSIM_CLIP_VARIANTS
     if (ep.clip_variant == 1) {
-      run_unit(std::type_identity<Vtu_texture_unit_sim_clip1>{});
+      run_unit(std::type_identity<Vtu_texture_unit_clip1>{});
     } else {
-      run_unit(std::type_identity<Vtu_texture_unit_sim_clip2>{});
+      run_unit(std::type_identity<Vtu_texture_unit_clip2>{});
     }
 #else
     throw std::invalid_argument("render_rtl: the unit with clip volume " + o.clip_variant +
@@ -496,9 +511,9 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
                                 ") is verilated only with -DTU_COSIM_CLIP_VARIANTS=ON (scripts/cosim_clip_variants.sh)");
 #endif
   } else if (o.has_ewa) {
-    run_unit(std::type_identity<Vtu_texture_unit_sim>{});
+    run_unit(std::type_identity<Vtu_texture_unit>{});
   } else {
-    run_unit(std::type_identity<Vtu_texture_unit_sim_bil>{});
+    run_unit(std::type_identity<Vtu_texture_unit_bil>{});
   }
   RtlRender out;
   out.sim_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -513,26 +528,26 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   // The shading stage (II = 1, its words preloaded) adds its pipeline's latency once, at the end.
   const uint64_t shade_lat = shade_unit ? static_cast<uint64_t>(brdf::shade::latency(o.shade_model)) : 0;
   if (rec)
-    out.predicted_cycles = views.empty() ? ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(true, true)), ep) + shade_lat : 0;
+    out.predicted_cycles = images.views->empty() ? ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(true, true)), ep) + shade_lat : 0;
   else
     out.predicted_cycles = (o.has_ewa ? ewa::texture_unit_cycles(costs, relief_px, ep)
                                       : ewa::stream_cycles(costs, static_cast<uint64_t>(ewa::texture_unit_front_latency(false)))) +
                            shade_lat;
   out.frame.image = expect.image;
   for (size_t i = 0; i < rr.outputs.size(); ++i) {
-    const Row& q = rr.outputs[i];
+    const UnitPixel& q = rr.outputs[i];
     render::PixelRecord rec;
-    rec.x = static_cast<int>(q[0]);
-    rec.y = static_cast<int>(q[1]);
-    rec.color = unpack_rgba(static_cast<uint32_t>(q[2]));
-    rec.lod = static_cast<double>(q[3]);
-    rec.texels = static_cast<int>(q[4]);
-    rec.texels_inside = static_cast<int>(q[5]);
-    rec.ewa_flags = static_cast<uint32_t>(q[6]);
-    rec.b2_flags = static_cast<uint32_t>(q[7]);
-    rec.relief_n = static_cast<int>(q[8]);
-    rec.relief_steps = static_cast<int>(q[9]);
-    rec.relief_flags = static_cast<uint32_t>(q[10]);
+    rec.x = static_cast<int>(q.x);
+    rec.y = static_cast<int>(q.y);
+    rec.color = unpack_rgba(static_cast<uint32_t>(q.rgba));
+    rec.lod = static_cast<double>(q.level);
+    rec.texels = static_cast<int>(q.visited);
+    rec.texels_inside = static_cast<int>(q.inside);
+    rec.ewa_flags = static_cast<uint32_t>(q.flags);
+    rec.b2_flags = static_cast<uint32_t>(q.eflags);
+    rec.relief_n = static_cast<int>(q.rn);
+    rec.relief_steps = static_cast<int>(q.rsteps);
+    rec.relief_flags = static_cast<uint32_t>(q.rflags);
     if (i < expect.pixels.size()) {
       const auto& e = expect.pixels[i];
       rec.object = e.object, rec.u = e.u, rec.v = e.v;

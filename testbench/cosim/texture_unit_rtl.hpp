@@ -1,10 +1,12 @@
-// The RTL render engine: a scene's covered pixels pushed through the Verilated texture-unit top
-// (rtl/top/tu_texture_unit.sv via tu_texture_unit_sim with the texel RAM model) as spans, and
-// compared pixel by pixel with the C-model engine (render::render_cmodel).
+// The RTL render engine: a scene's covered pixels pushed through the Verilated texture unit
+// (rtl/top/tu_texture_unit.sv, the Verilator top; its texel and depth RAMs and its view and shade
+// streams modelled in C++: sync_read_ram.hpp, stream_source.hpp) as spans, and compared pixel by
+// pixel with the C-model engine (render::render_cmodel).
 //   * spans: maximal runs of consecutive covered pixels of one row with the same triangle (the
 //     same visibility as the other engines), with the B1 quantised coefficients, the per-triangle
 //     B2 constants (exact numerator constants and det3, ellipse::fx) and the material;
-//   * textures: every object's texture with its pyramid loaded into the RAM model during reset;
+//   * textures: every object's texture with its pyramid in the texel RAM model (preloaded: no
+//     clock is spent loading it, nor the depth maps, views and shade words);
 //   * filters: each material's filter (or the override), ewa or bilinear, chosen per span (filt_i);
 //     EWA with each material's (or the given) weight source and the 1024-texel cap;
 //   * units: the full unit (HasEwa = HasBilinear = 1) or the bilinear-only unit (HasEwa = 0, what

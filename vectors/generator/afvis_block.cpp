@@ -247,6 +247,7 @@ Block make_afvis() {
               field("g_ref", Role::Ref, "f64"),
               field("b_ref", Role::Ref, "f64"),
               field("a_ref", Role::Ref, "f64")};
+  b.ports = {{"b2flags", "eflags"}};  // tu_afvis's eflags_i (B2's footprint flags)
   b.sets = {"golden", "stiff", "random"};
   b.inputs = standard_sets(golden_inputs, stiff_inputs, random_inputs);
   b.model = [](const Row& r) {
