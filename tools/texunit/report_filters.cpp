@@ -20,11 +20,12 @@ using json = nlohmann::json;
 const std::vector<std::string> kScenes = {"default", "docs/scenes/ui_quad.json", "docs/scenes/hud_floor.json",
                                           "docs/scenes/corridor.json", "docs/scenes/shaded_sphere.json"};
 
-// The engine that runs a filter in tu_texture_unit and its own synthesis top (empty: the engine
-// is part of the unit's texture datapath, not synthesised alone).
+// The engine that runs a filter in tu_texture_unit and its own synthesis top (empty: the K = 4
+// engine, synthesised by scripts/yosys_ewa_k4.sh, not a manifest top).
 std::pair<std::string, std::string> engine(const std::string& filter) {
-  if (filter == "nearest") return {"tu_nearest (texel address + one read)", ""};
-  if (filter == "bilinear" || filter == "trilinear") return {"tu_trilinear (one texel per clock)", ""};
+  if (filter == "nearest") return {"tu_nearest (texel address + one read)", "tu_nearest"};
+  if (filter == "bilinear") return {"tu_bilinear (one texel per clock)", "tu_bilinear"};
+  if (filter == "trilinear") return {"tu_trilinear (one texel per clock)", "tu_trilinear"};
   if (filter.rfind("feline", 0) == 0) return {"tu_feline (probes through one tu_trilinear)", "tu_feline"};
   if (filter == "ewa") return {"tu_ewa Lanes 1 (one texel per clock)", "tu_ewa"};
   return {"tu_ewa Lanes 4, Setups 3 (2x2 block per clock)", ""};
@@ -58,7 +59,7 @@ std::vector<Row> filter_rows(const std::string& root, const std::function<void(R
       r.notes = scheme;
       r.rtl_top = top;
       if (top.empty()) {
-        r.area_source = f.name == "ewa K=4" ? "scripts/yosys_ewa_k4.sh (docs/blocks/ewa.md)" : "part of tu_texture_unit";
+        r.area_source = "scripts/yosys_ewa_k4.sh (docs/blocks/ewa.md)";
         r.stdcell_source = r.area_source;
       } else {
         area(r);
