@@ -2,7 +2,10 @@
 // PomRefineLatency (7):
 //   stage 0    : normalise den for the reciprocal (k = 0: den = 0, w forced to 0)
 //   stages 1-4 : tu_recip_core (1/den)
-//   stage 5    : w = min(round_half_up(a * 2^PomWF * R >> (p + RecipOutF)), 2^PomWF)
+//   stage 5    : w = min(round_half_up(a * 2^PomWF * R >> (p + RecipOutF)), 2^PomWF), as
+//                w = sat ? 2^PomWF : (a' * R + 2^(DW+RecipOutF-PomWF-2)) >> (DW+RecipOutF-PomWF-1)
+//                with a' = a << (DW - 1 - p) (stage 1) and sat = a >= den, a != 0 (stage 0): no
+//                shifter and no compare after the product (identities below)
 //   stage 6    : T'' = T_k + round_half_up(w * dT >> PomWF); wrap: fract(T''), else discard =
 //                T'' outside [0, 1]^2
 // side_i (the unit's back / clamped flags) is carried along unchanged.
@@ -43,7 +46,7 @@ module tu_pom_refine #(
   localparam int RW  = tu_formats_pkg::RecipOutW;
   localparam int PW  = tu_formats_pkg::RecipShiftW;
   localparam int RF  = tu_formats_pkg::RecipOutF;
-  localparam int AwW = DW + WF + RW;    // (a << WF) * R, unsigned
+  localparam int AwW = DW + RW;         // a' * R + rounding, unsigned (< 2^(DW+RW-1))
   localparam int ShW = UvW + WW + 1;    // w * dT, signed
   localparam int CoreLat = tu_formats_pkg::RecipCoreLatency;  // tu_recip_core
 
@@ -58,10 +61,13 @@ module tu_pom_refine #(
   logic [MW-1:0] m_d, m_q;
   logic [PW-1:0] p_d;
   tu_recip_norm #(.InW(DW)) u_norm (.q_i(den_i), .m_o(m_d), .p_o(p_d));
+  logic sat_d;
+  assign sat_d = a_i >= den_i && a_i != '0;
 
   // Operands delayed alongside the reciprocal core.
-  logic [PW-1:0]      p_q [CoreLat+1];
+  logic [PW-1:0]      p_q;
   logic [DW-1:0]      a_q [CoreLat+1];
+  logic               sat_q [CoreLat+1];
   logic [UvW-1:0]     u_q [Lat-1];
   logic [UvW-1:0]     v_q [Lat-1];
   logic [UvW-1:0]     du_q [Lat-1];
@@ -72,8 +78,13 @@ module tu_pom_refine #(
   always_ff @(posedge clk_i) begin
     if (en) begin
       m_q <= m_d;
-      p_q[0] <= p_d;
-      a_q[0] <= a_i;
+      p_q <= p_d;
+      // k = 0: w = 0 (a' = 0, no saturation); a >= den: w = 2^WF (a' unused, held at 0)
+      a_q[0] <= (steps_i == '0 || sat_d) ? '0 : a_i;
+      sat_q[0] <= steps_i != '0 && sat_d;
+      // a' = a << (DW - 1 - p): a < den < 2^(p+1) makes a' < 2^DW (den < 2^DW: p <= DW - 1)
+      a_q[1] <= DW'(a_q[0] << (PW'(DW - 1) - p_q));
+      sat_q[1] <= sat_q[0];
       u_q[0] <= u_i;
       v_q[0] <= v_i;
       du_q[0] <= du_i;
@@ -81,9 +92,9 @@ module tu_pom_refine #(
       steps_q[0] <= steps_i;
       wrap_q[0] <= wrap_i;
       side_q[0] <= side_i;
-      for (int i = 1; i <= CoreLat; i++) begin
-        p_q[i] <= p_q[i-1];
+      for (int i = 2; i <= CoreLat; i++) begin
         a_q[i] <= a_q[i-1];
+        sat_q[i] <= sat_q[i-1];
       end
       for (int i = 1; i < Lat - 1; i++) begin
         u_q[i] <= u_q[i-1];
@@ -104,15 +115,18 @@ module tu_pom_refine #(
   tu_recip_core u_core (.clk_i, .en_i(en), .m_i(m_q), .r_o(r));
 
   // ---- Stage 5: w ----------------------------------------------------------------------------
+  // round_half_up(a 2^WF R / 2^(p+RF)) = floor((a' R + 2^(XSh-1)) / 2^XSh), XSh = DW - 1 + RF - WF:
+  // multiply numerator and denominator by 2^(DW-1-p) (exact), then 2^WF divides both terms.
+  // The clamp: with R = recip::eval(den) the unclamped w is >= 2^WF for a = den and <= 2^WF for
+  // a = den - 1 for every den in 1 .. 2^DW - 1 (exhaustive, PomMarch.RefineClampIsTheCompareAGeDen),
+  // and w grows with a, so min(w, 2^WF) = 2^WF exactly when a >= den; den = 0 (outside the march's
+  // range) gives the C model's R = max, so w = 2^WF for a > 0 and 0 for a = 0: sat = a >= den, a != 0.
+  localparam int XSh = DW - 1 + RF - WF;
   logic [AwW-1:0] aw;
-  logic [6:0]     sh;
   logic [WW-1:0]  w_d, w_q;
   always_comb begin
-    sh = 7'(p_q[CoreLat]) + 7'(RF);
-    aw = (AwW'({a_q[CoreLat], WF'(0)}) * AwW'(r) + (AwW'(1) << (sh - 7'd1))) >> sh;
-    if (steps_q[CoreLat] == '0) w_d = '0;
-    else if (aw > AwW'(1 << WF)) w_d = WW'(1 << WF);
-    else w_d = WW'(aw);
+    aw = AwW'(a_q[CoreLat]) * AwW'(r) + (AwW'(1) << (XSh - 1));
+    w_d = sat_q[CoreLat] ? WW'(1 << WF) : aw[XSh +: WW];
   end
 
   // ---- Stage 6: T'' ----------------------------------------------------------------------------
@@ -155,7 +169,7 @@ module tu_pom_refine #(
 
   // T'' wraps to UvW bits (as T_k + the rounded product does): the sum's top bits are unused.
   logic unused_bits;
-  assign unused_bits = ^{stage_valid, su[ShW-1:UvW], sv[ShW-1:UvW]};
+  assign unused_bits = ^{stage_valid, su[ShW-1:UvW], sv[ShW-1:UvW], aw[AwW-1:XSh+WW], aw[XSh-1:0]};
 
   // valid/ready protocol checks (rtl/common/tu_assert.svh)
   `TU_ASSERT_HANDSHAKE(OutHandshake, out_valid_o, out_ready_i, {u_o, v_o, steps_o, w_o, discard_o, side_o})

@@ -6,6 +6,9 @@
 //   stage 5    : P  = round_half_up(S*Vxy * R_a >> (p_a + RecipOutF))
 //   stage 6    : dT = round_half_up(P * R_n >> (p_n + RecipOutF)); P itself on pu_o, pv_o (the
 //                iterative parallax's direction (P, 1), pom::ipx_dir_normalised)
+// Neither product is followed by a variable shift: S*Vxy is shifted left by AMax - p_a in stage 1
+// and R_n by NMax - p_n into its stage-5 register, so stages 5 and 6 shift by a constant (the
+// same integers: numerator and divisor multiplied by the same power of two).
 // side_i is carried along unchanged (the unit passes the pixel's T and wrap through it).
 `include "tu_assert.svh"
 module tu_pom_setup #(
@@ -42,7 +45,15 @@ module tu_pom_setup #(
   localparam int PW  = tu_formats_pkg::RecipShiftW;
   localparam int RF  = tu_formats_pkg::RecipOutF;
   localparam int XsW = VzW + SW + 1;   // S*Vx: signed
-  localparam int PrW = XsW + RW + 1;   // S*Vx * R_a, P * R_n (P fits in XsW)
+  localparam int AMax = VzW - 1;       // p_a = msb of a in [PomVzMin, 2^(VzW-1)]: 9 .. AMax
+  localparam int ASh = AMax - 9;       // largest left shift of S*Vxy (a >= PomVzMin = 2^9)
+  localparam int NMax = NW - 1;        // p_n = msb of N in 1 .. 63: 0 .. NMax
+  localparam int XaW = XsW + ASh;      // S*Vxy << (AMax - p_a): signed
+  localparam int RnW = RW + NMax;      // R_n << (NMax - p_n): unsigned
+  localparam int PaW = XaW + RW + 1;   // S*Vxy' * R_a
+  localparam int PnW = XsW + RnW + 1;  // P * R_n'
+  localparam int ShA = AMax + RF;      // the constant shifts
+  localparam int ShN = NMax + RF;
   localparam int CoreLat = tu_formats_pkg::RecipCoreLatency;  // tu_recip_core
 
   logic en;
@@ -70,10 +81,11 @@ module tu_pom_setup #(
 
   // Operands delayed alongside the reciprocal cores (stages 0 .. CoreLat).
   logic [MW-1:0]         ma_q, mn_q;
-  logic [PW-1:0]         pa_q [CoreLat+1];
-  logic [PW-1:0]         pn_q [CoreLat+2];
-  logic signed [XsW-1:0] xs_q [CoreLat+1];
-  logic signed [XsW-1:0] ys_q [CoreLat+1];
+  logic [PW-1:0]         pa_q;
+  logic [PW-1:0]         pn_q [CoreLat+1];
+  logic signed [XsW-1:0] xs_q0, ys_q0;
+  logic signed [XaW-1:0] xs_q [CoreLat];  // xs_q[i]: stage i + 1, shifted
+  logic signed [XaW-1:0] ys_q [CoreLat];
   logic [NW-1:0]         n_q [Lat];
   logic                  back_q [Lat];
   logic                  clamped_q [Lat];
@@ -82,20 +94,22 @@ module tu_pom_setup #(
     if (en) begin
       ma_q <= ma_d;
       mn_q <= mn_d;
-      pa_q[0] <= pa_d;
+      pa_q <= pa_d;
       pn_q[0] <= pn_d;
-      xs_q[0] <= xs_d;
-      ys_q[0] <= ys_d;
+      xs_q0 <= xs_d;
+      ys_q0 <= ys_d;
+      // p_a in 9 .. AMax (a = max(|Vz|, 2^9) <= 2^15): the shift is 0 .. ASh
+      xs_q[0] <= XaW'(xs_q0) <<< (PW'(AMax) - pa_q);
+      ys_q[0] <= XaW'(ys_q0) <<< (PW'(AMax) - pa_q);
       n_q[0] <= n_i;
       back_q[0] <= vz_i[VzW-1];
       clamped_q[0] <= clamped_d;
       side_q[0] <= side_i;
-      for (int i = 1; i <= CoreLat; i++) begin
-        pa_q[i] <= pa_q[i-1];
+      for (int i = 1; i < CoreLat; i++) begin
         xs_q[i] <= xs_q[i-1];
         ys_q[i] <= ys_q[i-1];
       end
-      for (int i = 1; i <= CoreLat + 1; i++) pn_q[i] <= pn_q[i-1];
+      for (int i = 1; i <= CoreLat; i++) pn_q[i] <= pn_q[i-1];
       for (int i = 1; i < Lat; i++) begin
         n_q[i] <= n_q[i-1];
         back_q[i] <= back_q[i-1];
@@ -106,33 +120,39 @@ module tu_pom_setup #(
   end
 
   // ---- Stages 1-4: reciprocals (outputs line up with stage CoreLat) ------------------------
-  logic [RW-1:0] ra, rn, rn_q5;
+  logic [RW-1:0]  ra, rn;
+  logic [RnW-1:0] rn_q5;
   tu_recip_core u_core_a (.clk_i, .en_i(en), .m_i(ma_q), .r_o(ra));
   tu_recip_core u_core_n (.clk_i, .en_i(en), .m_i(mn_q), .r_o(rn));
 
-  // round_half_up(x * R / 2^sh), the C model's mul_recip (x signed, R unsigned)
-  function automatic logic [UvW-1:0] mul_rsh(input logic signed [XsW-1:0] x,
-                                             input logic [RW-1:0] r, input logic [6:0] sh);
-    logic signed [PrW-1:0] p;
-    p = PrW'(x) * $signed({1'b0, r});
-    p = (p + (PrW'(1) <<< (sh - 7'd1))) >>> sh;
-    mul_rsh = UvW'(p);
+  // round_half_up(x * R / 2^p+RF), the C model's mul_recip (x signed, R unsigned), as
+  // floor((x 2^(Max-p) * R + 2^(Max+RF-1)) / 2^(Max+RF)): the operand shifted before, one
+  // multiply-add with a constant rounding term and a constant shift after.
+  function automatic logic [UvW-1:0] mul_ra(input logic signed [XaW-1:0] x, input logic [RW-1:0] r);
+    logic signed [PaW-1:0] p;
+    p = PaW'(x) * $signed({1'b0, r}) + (PaW'(1) <<< (ShA - 1));
+    p = p >>> ShA;  // |P| < 2^(UvW-1): the top bits are copies of the sign
+    mul_ra = UvW'(p);
+  endfunction
+  function automatic logic [UvW-1:0] mul_rn(input logic signed [XsW-1:0] x, input logic [RnW-1:0] r);
+    logic signed [PnW-1:0] p;
+    p = PnW'(x) * $signed({1'b0, r}) + (PnW'(1) <<< (ShN - 1));
+    p = p >>> ShN;  // |P| < 2^(UvW-1): the top bits are copies of the sign
+    mul_rn = UvW'(p);
   endfunction
 
   // ---- Stage 5: P = S*Vxy / a;  stage 6: dT = P / N ------------------------------------------
-  logic [6:0]            sh_a, sh_n;
   logic signed [UvW-1:0] pu_q, pv_q;
   logic [UvW-1:0]        du_q, dv_q, pu6_q, pv6_q;
-  assign sh_a = 7'(pa_q[CoreLat]) + 7'(RF);
-  assign sh_n = 7'(pn_q[CoreLat+1]) + 7'(RF);
 
   always_ff @(posedge clk_i) begin
     if (en) begin
-      pu_q  <= mul_rsh(xs_q[CoreLat], ra, sh_a);
-      pv_q  <= mul_rsh(ys_q[CoreLat], ra, sh_a);
-      rn_q5 <= rn;
-      du_q  <= mul_rsh(XsW'(pu_q), rn_q5, sh_n);
-      dv_q  <= mul_rsh(XsW'(pv_q), rn_q5, sh_n);
+      pu_q  <= mul_ra(xs_q[CoreLat-1], ra);
+      pv_q  <= mul_ra(ys_q[CoreLat-1], ra);
+      // p_n in 0 .. NMax (N in 1 .. 63; N = 0 gives p_n = 0 as before)
+      rn_q5 <= RnW'(rn) << (PW'(NMax) - pn_q[CoreLat]);
+      du_q  <= mul_rn(XsW'(pu_q), rn_q5);
+      dv_q  <= mul_rn(XsW'(pv_q), rn_q5);
       pu6_q <= pu_q;
       pv6_q <= pv_q;
     end

@@ -6,6 +6,7 @@
 
 #include "pom/pom_march.hpp"
 #include "pom/relief_quality.hpp"
+#include "reciprocal/reciprocal.hpp"
 
 namespace {
 using namespace tu;
@@ -226,3 +227,51 @@ TEST(ReliefQuality, TableInvariants) {
   }
 }
 }  // namespace
+
+// tu_pom_refine's stage 5 (rtl/pom/tu_pom_refine.sv) computes w without a shifter and without a
+// compare after the product: a' = a << (DW - 1 - p) (p = msb of den), w = (a' R + 2^22) >> 23, and
+// min(., 2^WF) replaced by the flag a >= den (a != 0). This checks, for every den of the 16-bit
+// port, that the C model's unclamped w is >= 2^WF at a = den and <= 2^WF at a = den - 1 (w grows
+// with a, so the clamp acts exactly when a >= den), and that the RTL's form equals refine()'s w at
+// a = 0, 1, den / 2, den - 1, den, den + 1 and 8 random a per den.
+TEST(PomMarch, RefineClampIsTheCompareAGeDen) {
+  constexpr int kDW = fmt::kPomDenW, kWF = fmt::kPomWF;
+  constexpr int64_t kOne = int64_t(1) << kWF;
+  auto unclamped = [](int64_t a, int64_t den) {
+    const auto r = recip::eval(static_cast<int32_t>(den));
+    const int sh = static_cast<int>(r.shift) + fmt::kRecipOutF;
+    return ((a << kWF) * int64_t(r.mant) + (int64_t(1) << (sh - 1))) >> sh;
+  };
+  auto rtl_w = [&](int64_t a, int64_t den) -> int64_t {
+    if (a >= den && a != 0) return kOne;
+    const auto r = recip::eval(static_cast<int32_t>(den));
+    const int64_t as = (a << (kDW - 1 - static_cast<int>(r.shift))) & ((int64_t(1) << kDW) - 1);
+    constexpr int xsh = kDW - 1 + fmt::kRecipOutF - kWF;
+    return ((as * int64_t(r.mant) + (int64_t(1) << (xsh - 1))) >> xsh) & ((int64_t(1) << (kWF + 1)) - 1);
+  };
+  std::mt19937_64 rng(14);
+  uint64_t checked = 0;
+  for (int64_t den = 1; den < (int64_t(1) << kDW); ++den) {
+    ASSERT_GE(unclamped(den, den), kOne) << den;
+    ASSERT_LE(unclamped(den - 1, den), kOne) << den;
+    std::vector<int64_t> as = {0, 1, den / 2, den - 1, den, den + 1};
+    for (int i = 0; i < 8; ++i) as.push_back(static_cast<int64_t>(rng() % (uint64_t(1) << kDW)));
+    for (int64_t a : as) {
+      a &= (int64_t(1) << kDW) - 1;
+      MarchCore c;
+      c.steps = 1;
+      c.a = static_cast<uint32_t>(a);
+      c.den = static_cast<uint32_t>(den);
+      ASSERT_EQ(rtl_w(a, den), int64_t(refine(c, 0, 0, true).w)) << "a " << a << " den " << den;
+      ++checked;
+    }
+  }
+  // den = 0 (outside the march's range): the C model's reciprocal saturates, w = 2^WF for a > 0.
+  for (int64_t a : {int64_t(0), int64_t(1), int64_t(65535)}) {
+    MarchCore c;
+    c.steps = 1;
+    c.a = static_cast<uint32_t>(a);
+    EXPECT_EQ(rtl_w(a, 0), int64_t(refine(c, 0, 0, true).w)) << a;
+  }
+  EXPECT_EQ(checked, uint64_t((int64_t(1) << kDW) - 1) * 14);
+}
