@@ -7,14 +7,14 @@
 #
 # scripts/gate_level.sh --unit SCENE.json [--filter F] [--window X0 Y0 X1 Y1] [--stall P] [--seed N]
 #   The plan's unit: `texunit plan SCENE` writes its configuration package; scripts/stdcell_flow.sh
-#   maps tu_texture_unit with that package (build/stdcell/tu_texture_unit_NAME.v and .json: area,
-#   fmax; re-made when the package or an RTL file changed); tu_unit_stimulus writes the scene's
-#   spans, texel RAM and C-model pixels (--filter: the plan's engine, default bilinear; --window: a
-#   crop of the pixel stream, the spans clipped to that rectangle); scripts/icarus_unit.sh runs the
-#   RTL with the package and then the netlist on them with the same stalls (default 30 %, seed 1).
-#   Passes when both match the C model on every pixel, their output logs (every output port of
-#   every pixel) are equal and so are their cycle counts. TU_UNIT_STIMULUS: the stimulus binary
-#   (default build/default/testbench/tu_unit_stimulus).
+#   maps tu_texture_unit with that package (build/stdcell/tu_texture_unit_NAME.v; .json: area,
+#   fmax; .seconds: flow time; re-made when the package or an RTL file changed; hours under load);
+#   tu_unit_stimulus writes the scene's spans, texel RAM and C-model pixels (--filter: the plan's
+#   engine, default bilinear; --window: a crop of the pixel stream, each span clipped to that
+#   rectangle); scripts/icarus_unit.sh runs the RTL with the package, then the netlist, on them
+#   with the same stalls (default 30 %, seed 1). Passes when both match the C model on every pixel,
+#   their output logs (every output port of every pixel) are equal and so are their cycle counts.
+#   TU_UNIT_STIMULUS: the stimulus binary (default build/default/testbench/tu_unit_stimulus).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ "${1:-}" = --unit ]; then
@@ -45,7 +45,7 @@ if [ "${1:-}" = --unit ]; then
     echo "gate_level.sh: mapping tu_texture_unit with the plan of $scene (scripts/stdcell_flow.sh; long)"
     t0=$(date +%s)
     scripts/stdcell_flow.sh tu_texture_unit "$net" "${files[@]}" >"${net%.v}.json"
-    echo "flow_seconds $(( $(date +%s) - t0 ))" >>"${net%.v}.json"
+    echo "$(( $(date +%s) - t0 ))" >"${net%.v}.seconds"
     cp "$work/tu_unit_cfg_pkg.sv" "${net%.v}.pkg.sv"
   fi
   cat "${net%.v}.json"
