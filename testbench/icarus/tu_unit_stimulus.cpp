@@ -11,7 +11,7 @@
 //                         each span clipped to it; a crop of the scene's pixel stream)
 // Writes OUTDIR/spans.txt (one span a line, hex fields in tu_unit_tb.sv's order), OUTDIR/texels.hex
 // ($readmemh: 64-bit texel RAM words from address 0) and OUTDIR/expect.txt (one pixel a line:
-// x y rgba visited, hex), and prints "spans N pixels N texel_words N".
+// x y rgba visited eflags, hex; eflags: B2's flags, compared as render_rtl compares them), and prints "spans N pixels N texel_words N".
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -162,7 +162,7 @@ int run(int argc, char** argv) {
         const render::PixelRecord& r = expect.pixels.at(first_pix + static_cast<size_t>(px - x));
         if (r.x != px || r.y != y) throw std::logic_error("C-model pixel order differs from the spans");
         char buf[64];
-        std::snprintf(buf, sizeof buf, "%x %x %08x %x\n", r.x, r.y, cosim::pack_rgba(r.color), visited);
+        std::snprintf(buf, sizeof buf, "%x %x %08x %x %x\n", r.x, r.y, cosim::pack_rgba(r.color), visited, r.b2_flags);
         fe << buf;
         ++npix;
       }

@@ -8,7 +8,7 @@
 // Spans go in with valid/ready and random bubbles, pixels come out under random back-pressure
 // (+stall percent each, one $urandom draw per side per cycle whatever happens, so that two runs
 // with the same +seed see the same stalls); every pixel is compared with expect.txt (x, y, rgba,
-// texels visited; inside count and filter flags 0: the texture path's engines) and written to
+// texels visited, B2 flags; inside count and filter flags 0: the texture path's engines) and written to
 // +log (every output port, hex) so that two runs (RTL, netlist) can be compared bit for bit.
 // Prints "tu_unit_tb: PASS S spans, N pixels, 0 mismatches, C cycles" (C: the first edge a span
 // can be taken to the last pixel's, as testbench/cosim/harness.hpp counts) and $finish, or "tu_unit_tb: FAIL ..." and $fatal.
@@ -93,7 +93,7 @@ module tu_unit_tb;
   // ---- stimulus and expected pixels ----
   reg [1023:0] dir, logpath;
   integer fs, fe, fl, r, stall, seed, seed0, progress;
-  reg [31:0] ex [0:MaxPix-1], ey [0:MaxPix-1], ergba [0:MaxPix-1], evis [0:MaxPix-1];
+  reg [31:0] ex [0:MaxPix-1], ey [0:MaxPix-1], ergba [0:MaxPix-1], evis [0:MaxPix-1], eef [0:MaxPix-1];
   integer npix, got, mismatches, cycles, idle, last_out, spans_in, drain;
   reg have, done;
 
@@ -133,9 +133,9 @@ module tu_unit_tb;
     if (fe == 0) fail("cannot open expect.txt");
     npix = 0;
     while (!$feof(fe) && npix < MaxPix) begin
-      r = $fscanf(fe, "%h %h %h %h\n", ex[npix], ey[npix], ergba[npix], evis[npix]);
-      if (r == 4) npix = npix + 1;
-      else if (r > 0) fail("expect.txt: a line without 4 fields");
+      r = $fscanf(fe, "%h %h %h %h %h\n", ex[npix], ey[npix], ergba[npix], evis[npix], eef[npix]);
+      if (r == 5) npix = npix + 1;
+      else if (r > 0) fail("expect.txt: a line without 5 fields");
       else r = $fgetc(fe);
     end
     fs = $fopen({dir, "/spans.txt"}, "r");
@@ -169,11 +169,12 @@ module tu_unit_tb;
                   flags_o, eflags_o, pflags_o, rn_o, rsteps_o, rflags_o);
       if (got >= npix) fail("a pixel more than expect.txt holds");
       if (x_o !== ex[got][XW-1:0] || y_o !== ey[got][XW-1:0] || rgba_o !== ergba[got] ||
-          visited_o !== evis[got][tu_formats_pkg::EwaCountW-1:0] || inside_o !== '0 || flags_o !== '0) begin
+          visited_o !== evis[got][tu_formats_pkg::EwaCountW-1:0] || inside_o !== '0 || flags_o !== '0 ||
+          eflags_o !== eef[got][4:0]) begin
         mismatches = mismatches + 1;
         if (mismatches <= 10)
-          $display("tu_unit_tb: mismatch pixel %0d: got (%0d,%0d) rgba %h visited %0d inside %0d flags %h; expected (%0d,%0d) rgba %h visited %0d",
-                   got, x_o, y_o, rgba_o, visited_o, inside_o, flags_o, ex[got], ey[got], ergba[got], evis[got]);
+          $display("tu_unit_tb: mismatch pixel %0d: got (%0d,%0d) rgba %h visited %0d inside %0d flags %h eflags %h; expected (%0d,%0d) rgba %h visited %0d eflags %h",
+                   got, x_o, y_o, rgba_o, visited_o, inside_o, flags_o, eflags_o, ex[got], ey[got], ergba[got], evis[got], eef[got]);
       end
       got = got + 1;
     end
