@@ -65,8 +65,10 @@ module tu_ellipse (
   localparam int PW  = DW + RW + 1;                   // det3 mantissa * R (signed)
   localparam logic [QW-1:0] GuardVal = QW'(1) << (tu_formats_pkg::PerspF - tu_formats_pkg::PerspGuardLog2);
   localparam logic signed [31:0] LogMax = 32'((1 << (LW - 1)) - 1);
-  // -2^(LW-1) as ~(2^(LW-1) - 1): Yosys 0.23 drops the minus of -32'(...) in a localparam.
-  localparam logic signed [31:0] LogMin = ~32'((1 << (LW - 1)) - 1);
+  // -2^(LW-1) bit by bit: Yosys 0.23 drops a unary minus or ~ before a size cast in a localparam
+  // (-32'(...) and ~32'(...) both gave +2^(LW-1) - 1 there: sat_log was the constant LogMax in every
+  // netlist; docs/area-timing.md "Gate-level simulation").
+  localparam logic signed [31:0] LogMin = {{(33 - LW){1'b1}}, {(LW - 1){1'b0}}};
   localparam int RhW = tu_formats_pkg::EllRhoW;
   localparam int BW  = tu_formats_pkg::TexLodBiasW;
   localparam int LDW = tu_formats_pkg::EllLodW;
