@@ -81,6 +81,23 @@ module tu_persp_pixel (
   // floor; only their carry into bit Sh0 is kept (cy).
   localparam int Sh0 = tu_formats_pkg::RecipOutF - tu_formats_pkg::PerspUvF;  // sh = Sh0 + e
   localparam int TW = ProdW - Sh0;
+`ifdef TU_SIM_PRODUCT_MUL
+  // Simulation only (the full texture-unit co-simulation models: testbench/cosim/CMakeLists.txt
+  // defines TU_SIM_PRODUCT_MUL for the Vtu_texture_unit* models; never synthesised): the same
+  // x = p * R + add modulo 2^ProdW as one product, returned as sum = x, carry = 0. S7 registers
+  // and S8 add only s + c (+ the carry of their low Sh0 bits, 0 here), so u_o, v_o and flag_o
+  // are bit-identical to the compressor tree's; Verilator evaluates the unrolled tree (26 rows of
+  // 80-bit words, 7 levels, twice) every clock at about half the full unit's simulation time
+  // (docs/performance.md section 10). The block models (Vtu_persp, Vtu_persp_klane,
+  // Vtu_objspace_sample) and Yosys keep the tree below.
+  function automatic logic [2*ProdW-1:0] csa_mul(input logic [PW-1:0] pp, input logic [RW-1:0] rr,
+                                                 input logic [ProdW-1:0] add);
+    logic [ProdW-1:0] pe, re;
+    pe = ProdW'($signed(pp));
+    re = ProdW'(rr);
+    csa_mul = {ProdW'(0), pe * re + add};
+  endfunction
+`else
   localparam int NRow = RW + 1;
   // levels of 3:2 compressors that bring n rows down to 2
   function automatic int csa_levels(input int n0);
@@ -122,6 +139,7 @@ module tu_persp_pixel (
     end
     csa_mul = {cur[ProdW +: ProdW], cur[0 +: ProdW]};
   endfunction
+`endif
 
   logic [ProdW-1:0] half, su, cu, sv, cv;
   logic [Sh0:0]     lo_u, lo_v;
