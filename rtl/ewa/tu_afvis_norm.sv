@@ -1,8 +1,9 @@
 // EWA normalisation of the visibility walker (tu_afvis_walk; ewa::fx::finish, the same datapath as
 // tu_ewa_walk's "normalisation" section): wsum leading-one normalised to EwaNrmW bits (floor),
-// tu_recip_core (RecipCoreLatency stages), channel = min(255, round_half_up(acc_c R 2^-(RecipOutF
-// + p))). load_i registers the mantissa and shift of wsum_i; rgba_o is valid EwaNormCycles - 1
-// clocks later while acc_i is held.
+// the reciprocal core, channel = min(255, round_half_up(acc_c R 2^-(RecipOutF + p))). load_i
+// registers the mantissa and shift of wsum_i (clock t); tu_recip_core_y's y at t + 4, acc_i read
+// at t + 3 (tu_ewa_norm_tail: pre-shift; t + 4 carry-save products; t + 5 carry chain, fixed
+// shift, saturation): rgba_o is valid EwaNormCycles - 1 clocks after the load while acc_i is held.
 module tu_afvis_norm (
   input  logic                                  clk_i,
   input  logic                                  load_i,
@@ -11,14 +12,12 @@ module tu_afvis_norm (
   output logic [31:0]                           rgba_o
 );
   localparam int WsW = tu_formats_pkg::EwaWsumW;
-  localparam int AcW = tu_formats_pkg::EwaAccW;
   localparam int NrW = tu_formats_pkg::EwaNrmW;
   localparam int MW  = tu_formats_pkg::RecipMantW;
-  localparam int RW  = tu_formats_pkg::RecipOutW;
   logic [6:0]     p_d, p_q;
   logic [NrW-1:0] m_d;
   logic [MW-1:0]  mant_q;
-  logic [RW-1:0]  r;
+  logic signed [tu_formats_pkg::RecipC0W+1:0] y;
   always_comb begin
     p_d = '0;
     for (int i = 0; i < WsW; i++) if (wsum_i[i]) p_d = 7'(i);
@@ -30,14 +29,6 @@ module tu_afvis_norm (
       mant_q <= MW'(m_d) << (MW - NrW);  // recip::eval: the msb of a positive code at bit MW-1
     end
   end
-  tu_recip_core u_core (.clk_i, .en_i(1'b1), .m_i(mant_q), .r_o(r));
-  always_comb begin
-    for (int c = 0; c < 4; c++) begin
-      logic [AcW+RW:0] pr;
-      logic [7:0]      sh;
-      sh = 8'(tu_formats_pkg::RecipOutF) + 8'(p_q);
-      pr = ((AcW+RW+1)'(acc_i[AcW*c +: AcW]) * (AcW+RW+1)'(r) + ((AcW+RW+1)'(1) << (sh - 8'd1))) >> sh;
-      rgba_o[8*c +: 8] = pr > (AcW+RW+1)'(255) ? 8'd255 : pr[7:0];
-    end
-  end
+  tu_recip_core_y u_core (.clk_i, .en_i(1'b1), .m_i(mant_q), .y_o(y));
+  tu_ewa_norm_tail u_tail (.clk_i, .p_i(p_q), .acc_i, .y_i(y), .rgba_o);
 endmodule

@@ -1,10 +1,12 @@
 // Normalisation of weighted colour sums, exactly ewa::fx::normalise (cmodel/blocks/ewa/ewa_fx.cpp):
-// wsum > 0 leading-one normalised to EwaNrmW bits (floor), tu_recip_core (4 stages) -> R,
+// wsum > 0 leading-one normalised to EwaNrmW bits (floor), the reciprocal core -> R,
 // channel = min(255, round_half_up(acc_c R 2^-(RecipOutF + p - (EwaNrmW - 1)))) with p = msb(wsum).
 //   load_i at clock t: p and the mantissa of wsum_i registered
-//   t + 1 .. t + 4: the reciprocal core
-//   t + 5 (= t + EwaNormCycles - 1): rgba_o = the channels of acc_i (combinational; acc_i must be
-//   stable at t + 5), to be registered by the caller
+//   t + 1 .. t + 3: the reciprocal core up to its unrounded y (tu_recip_core_y)
+//   t + 3: acc_i read (it must be stable then): pre-shifted by WsumW - 1 - p (tu_ewa_norm_tail)
+//   t + 4: the products as carry-save pairs (the core's rounding folded in)
+//   t + 5 (= t + EwaNormCycles - 1): rgba_o = the channels (combinational: the carry chain, a
+//   fixed shift, saturation), to be registered by the caller
 // Factored out of tu_ewa_walk's normalisation; tu_feline uses it on its probe sums.
 module tu_ewa_normalise #(
   parameter int AccW  = tu_formats_pkg::EwaAccW,   // per-channel weighted sum (GaussSqF fraction bits)
@@ -18,11 +20,10 @@ module tu_ewa_normalise #(
 );
   localparam int NrW = tu_formats_pkg::EwaNrmW;
   localparam int MW  = tu_formats_pkg::RecipMantW;
-  localparam int RW  = tu_formats_pkg::RecipOutW;
   logic [6:0]     p_d, p_q;
   logic [NrW-1:0] m_d;
   logic [MW-1:0]  mant_q;
-  logic [RW-1:0]  r;
+  logic signed [tu_formats_pkg::RecipC0W+1:0] y;
   logic [WsumW+NrW-1:0] wx;  // room for the left shift of a narrow sum
   always_comb begin
     p_d = '0;
@@ -36,14 +37,6 @@ module tu_ewa_normalise #(
       mant_q <= MW'(m_d) << (MW - NrW);  // recip::eval: the msb of a positive code at bit MW-1
     end
   end
-  tu_recip_core u_core (.clk_i, .en_i(1'b1), .m_i(mant_q), .r_o(r));
-  always_comb begin
-    for (int c = 0; c < 4; c++) begin
-      logic [AccW+RW:0] pr;
-      logic [7:0]       sh;
-      sh = 8'(tu_formats_pkg::RecipOutF) + 8'(p_q);
-      pr = ((AccW+RW+1)'(acc_i[c*AccW +: AccW]) * (AccW+RW+1)'(r) + ((AccW+RW+1)'(1) << (sh - 8'd1))) >> sh;
-      rgba_o[8*c +: 8] = pr > (AccW+RW+1)'(255) ? 8'd255 : pr[7:0];
-    end
-  end
+  tu_recip_core_y u_core (.clk_i, .en_i(1'b1), .m_i(mant_q), .y_o(y));
+  tu_ewa_norm_tail #(.AccW(AccW), .WsumW(WsumW)) u_tail (.clk_i, .p_i(p_q), .acc_i, .y_i(y), .rgba_o);
 endmodule

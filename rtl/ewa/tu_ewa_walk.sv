@@ -7,8 +7,9 @@
 //   P1..P5     weight: formula (tu_gauss_weight, 3 + 1 pad) | 1-D table (3 + 1) | 2-D table (4),
 //              selected at run time by wsrc; texel read issued at P4 (1-cycle RAM)
 //   P5         w = inside ? weight : 0; acc_c += w texel_c, wsum += w, inside count += (w > 0)
-// then normalisation: wsum leading-one normalised to EwaNrmW bits, tu_recip_core (4 stages),
-// channel = min(255, round_half_up(acc_c R 2^-(RecipOutF + p))); wsum = 0 -> the nearest texel
+// then normalisation (tu_ewa_normalise): wsum leading-one normalised to EwaNrmW bits, the
+// reciprocal core, channel = min(255, round_half_up(acc_c R 2^-(RecipOutF + p))) with the products
+// registered as carry-save pairs (tu_ewa_norm_tail); wsum = 0 -> the nearest texel
 // at level L (flag kNoWeight).
 // Border weights (HasClip, a pixel with clip_i; docs/blocks/ewa.md "Border weights"): at P5 the
 // texel's Q, xi, eta (delayed from P0), the frame k = d(xi, eta) / 2^PosF and the weight enter
@@ -73,9 +74,6 @@ module tu_ewa_walk #(
   localparam int WW   = tu_formats_pkg::GaussSqW;     // weight codes (u17.16)
   localparam int WsW  = tu_formats_pkg::EwaWsumW;
   localparam int AcW  = tu_formats_pkg::EwaAccW;
-  localparam int NrW  = tu_formats_pkg::EwaNrmW;
-  localparam int MW   = tu_formats_pkg::RecipMantW;
-  localparam int RW   = tu_formats_pkg::RecipOutW;
   localparam int NW   = tu_formats_pkg::EwaCountW;
   localparam int AW   = tu_formats_pkg::TexAddrW;
   localparam int KW   = tu_formats_pkg::EwaKW;
@@ -299,33 +297,12 @@ module tu_ewa_walk #(
     end
   end
 
-  // ---- normalisation
-  logic [6:0]    p_d, p_q;
-  logic [NrW-1:0] m_d;
-  logic [MW-1:0] mant_q;
-  logic [RW-1:0] r;
-  always_comb begin
-    p_d = '0;
-    for (int i = 0; i < WsW; i++) if (wsum_q[i]) p_d = 7'(i);
-    m_d = (p_d >= 7'(NrW - 1)) ? NrW'(wsum_q >> (p_d - 7'(NrW - 1))) : NrW'(wsum_q << (7'(NrW - 1) - p_d));
-  end
-  always_ff @(posedge clk_i) begin
-    if (st_q == WNorm && cnt_q == 6'd0) begin
-      p_q    <= p_d;
-      mant_q <= MW'(m_d) << (MW - NrW);  // recip::eval: the msb of a positive code at bit MW-1
-    end
-  end
-  tu_recip_core u_core (.clk_i, .en_i(1'b1), .m_i(mant_q), .r_o(r));
+  // ---- normalisation (tu_ewa_normalise: load at WNorm's first clock, the sums held; rgba_d in
+  // its last, NormCycles - 1 clocks later)
   logic [31:0] rgba_d;
-  always_comb begin
-    for (int c = 0; c < 4; c++) begin
-      logic [AcW+RW:0] pr;
-      logic [7:0]      sh;
-      sh = 8'(tu_formats_pkg::RecipOutF) + 8'(p_q);
-      pr = ((AcW+RW+1)'(acc_q[c]) * (AcW+RW+1)'(r) + ((AcW+RW+1)'(1) << (sh - 8'd1))) >> sh;
-      rgba_d[8*c +: 8] = pr > (AcW+RW+1)'(255) ? 8'd255 : pr[7:0];
-    end
-  end
+  tu_ewa_normalise #(.AccW(AcW), .WsumW(WsW)) u_norm (
+    .clk_i, .load_i(st_q == WNorm && cnt_q == 6'd0), .wsum_i(wsum_q),
+    .acc_i({acc_q[3], acc_q[2], acc_q[1], acc_q[0]}), .rgba_o(rgba_d));
 
   always_ff @(posedge clk_i) begin
     if (st_q == WNorm && cnt_q == 6'(NormCycles - 1)) rgba_o <= rgba_d;

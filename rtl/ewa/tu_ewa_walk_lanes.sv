@@ -15,7 +15,8 @@
 //          depth, its own border weights if clip_i, so pixels stay in order) the K-input sums:
 //          acc_c += sum_l w_l texel_lc (< 2^26 per clock), wsum, inside count; a pixel's first block
 //          restarts the sums, its last hands them to the normaliser
-//   N0..N5 normalisation as tu_ewa_walk's (mantissa, tu_recip_core 4 stages, round), pipelined:
+//   N0..N5 normalisation as tu_ewa_walk's (mantissa, the reciprocal core to y in 3 stages, the
+//          products' carry-save pairs, carry chain + shift + saturate: tu_ewa_norm_tail), pipelined:
 //          one pixel per clock; wsum = 0 or a B1-guard record: the nearest texel at L (the lane
 //          on it, captured at A) instead
 // The walker takes the next record in the clock it issues the current pixel's last block, so the
@@ -85,7 +86,6 @@ module tu_ewa_walk_lanes #(
   localparam int AcW  = tu_formats_pkg::EwaAccW;
   localparam int NrW  = tu_formats_pkg::EwaNrmW;
   localparam int MW   = tu_formats_pkg::RecipMantW;
-  localparam int RW   = tu_formats_pkg::RecipOutW;
   localparam int NW   = tu_formats_pkg::EwaCountW;
   localparam int AW   = tu_formats_pkg::TexAddrW;
   localparam int KW   = tu_formats_pkg::EwaKW;
@@ -453,32 +453,27 @@ module tu_ewa_walk_lanes #(
     for (int i = 0; i < WsW; i++) if (n0ws_q[i]) p_d = 7'(i);
     m_d = (p_d >= 7'(NrW - 1)) ? NrW'(n0ws_q >> (p_d - 7'(NrW - 1))) : NrW'(n0ws_q << (7'(NrW - 1) - p_d));
   end
-  localparam int NdW = 1 + 7 + 4 * AcW + NW + 32 + 1 + 1;  // v p acc ins near guard nowt
+  localparam int NdW = 1 + NW + 32 + 1 + 1;  // v ins near guard nowt
+  localparam int NaW = 7 + 4 * AcW;           // p acc: into tu_ewa_norm_tail at N3
   logic [MW-1:0]  mant_q;
   logic [NdW-1:0] n1_q, n5;
+  logic [NaW-1:0] na1_q, na3;
   always_ff @(posedge clk_i) begin
     mant_q <= MW'(m_d) << (MW - NrW);  // recip::eval: the msb of a positive code at bit MW-1
-    n1_q   <= {n0v_q, p_d, n0acc_q[3], n0acc_q[2], n0acc_q[1], n0acc_q[0], n0ins_q, n0near_q, n0g_q,
-               n0ws_q == '0};
+    n1_q   <= {n0v_q, n0ins_q, n0near_q, n0g_q, n0ws_q == '0};
+    na1_q  <= {p_d, n0acc_q[3], n0acc_q[2], n0acc_q[1], n0acc_q[0]};
   end
-  logic [RW-1:0] r;
-  tu_recip_core u_core (.clk_i, .en_i(1'b1), .m_i(mant_q), .r_o(r));
+  // N1..N3 the reciprocal core up to its unrounded y (N4); N3 the sums pre-shifted, N4 the
+  // products as carry-save pairs, N5 their carry chain, shift and saturation (tu_ewa_norm_tail)
+  logic signed [tu_formats_pkg::RecipC0W+1:0] y4;
+  tu_recip_core_y u_core (.clk_i, .en_i(1'b1), .m_i(mant_q), .y_o(y4));
   tu_brdf_delay #(.W(NdW), .Depth(4)) u_nd (.clk_i, .en_i(1'b1), .d_i(n1_q), .q_o(n5));
+  tu_brdf_delay #(.W(NaW), .Depth(2)) u_na (.clk_i, .en_i(1'b1), .d_i(na1_q), .q_o(na3));
   logic           v5n, g5n, nowt5;
-  logic [6:0]     p5n;
-  logic [AcW-1:0] acc5 [4];
   logic [NW-1:0]  ins5;
   logic [31:0]    near5, rgba_d;
-  assign {v5n, p5n, acc5[3], acc5[2], acc5[1], acc5[0], ins5, near5, g5n, nowt5} = n5;
-  always_comb begin
-    for (int c = 0; c < 4; c++) begin
-      logic [AcW+RW:0] pr;
-      logic [7:0]      sh;
-      sh = 8'(tu_formats_pkg::RecipOutF) + 8'(p5n);
-      pr = ((AcW+RW+1)'(acc5[c]) * (AcW+RW+1)'(r) + ((AcW+RW+1)'(1) << (sh - 8'd1))) >> sh;
-      rgba_d[8*c +: 8] = pr > (AcW+RW+1)'(255) ? 8'd255 : pr[7:0];
-    end
-  end
+  assign {v5n, ins5, near5, g5n, nowt5} = n5;
+  tu_ewa_norm_tail u_tail (.clk_i, .p_i(na3[NaW-1 -: 7]), .acc_i(na3[4*AcW-1:0]), .y_i(y4), .rgba_o(rgba_d));
 
   // ---- output: results in order (OutDepth credits: neither FIFO overflows)
   localparam int OfW = 32 + NW + 1;

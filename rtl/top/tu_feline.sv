@@ -3,8 +3,9 @@
 // a set-up unit (tu_feline_setup: probe count, probe lod, the major axis, the probe line) and a
 // prober joined by a one-record hand-over, then the EWA's normalisation (tu_ewa_normalise):
 //   probe i = 0 .. N-1, k = 2i - (N-1): (u, v) + k h rounded half up to TexUvF bits, saturated
-//   to PerspUvW; Q = (|k| tq)^2 >> (2 FelTF - GaussQF) (saturated to GaussQW bits) into
-//   tu_gauss_weight (3 clocks); the position into the one tu_trilinear at the probe lod (16
+//   to PerspUvW (k, |k| in registers stepped with i); Q = (|k| tq)^2 >> (2 FelTF - GaussQF)
+//   (saturated to GaussQW bits; |k| tq and Q each registered) into tu_gauss_weight (3 clocks):
+//   the weight 5 clocks after the issue; the position into the one tu_trilinear at the probe lod (16
 //   clocks a probe, 9 with one level); at its output acc_c += w c, wsum += w (exact);
 //   after the last probe: tu_ewa_normalise (6 clocks) while the next pixel's probes run.
 // A B1-guard pixel: one probe through tu_trilinear's guard pass (the top level's texel), output as is.
@@ -102,6 +103,13 @@ module tu_feline #(
   typedef enum logic [1:0] {PIdle, PIssue, PWait} pstate_e;
   pstate_e pst_q;
   logic [PW-1:0]         n_p, i_q;
+  // k = 2i - (N-1) and |k| in registers, stepped with i (they were formed from n_p and i_q in the
+  // issue clock, in front of the offsets k h and of |k| tq)
+  logic signed [KW-1:0]  k_q;
+  logic [PW-1:0]         ka_q;
+  function automatic logic [PW-1:0] abs_k(input logic signed [KW-1:0] kk);
+    abs_k = kk < 0 ? PW'(-kk) : PW'(kk);
+  endfunction
   logic [tu_formats_pkg::EllLodW-1:0] lod_p;
   logic                  single_p, guard_p;
   logic signed [StW-1:0] hu_p, hv_p;
@@ -148,37 +156,36 @@ module tu_feline #(
       lh_p     <= lh_q;
       wrap_p   <= wrap_q;
       i_q      <= '0;
+      k_q      <= -$signed(KW'(r_n - PW'(1)));  // i = 0: exactly 2i - KW'(N - 1)
+      ka_q     <= abs_k(-$signed(KW'(r_n - PW'(1))));
     end else if (tri_take) begin
-      i_q <= i_q + PW'(1);
+      i_q  <= i_q + PW'(1);
+      k_q  <= k_q + KW'(2);
+      ka_q <= abs_k(k_q + KW'(2));
     end
   end
 
-  // probe i's position and weight input
-  logic signed [KW-1:0] k;
-  logic [PW-1:0]        ka;
+  // probe i's position (into tu_trilinear's input register) and weight input
   logic signed [OW-1:0] ou, ov;
   logic signed [UW:0]   pu, pv;
   logic [UW-1:0]        pu_sat, pv_sat;
-  logic [TW-1:0]        t;
+  logic [TW-1:0]        t_q;
   logic [2*TW-1:0]      tt;
-  logic [QW-1:0]        q;
+  logic [QW-1:0]        q, q_q;
   function automatic logic [UW-1:0] sat_uv(input logic signed [UW:0] x);
     if (x > $signed((UW+1)'({1'b0, {(UW-1){1'b1}}}))) sat_uv = {1'b0, {(UW-1){1'b1}}};
     else if (x < -$signed((UW+1)'({1'b0, 1'b1, {(UW-1){1'b0}}}))) sat_uv = {1'b1, {(UW-1){1'b0}}};
     else sat_uv = UW'(x);
   endfunction
   always_comb begin
-    k  = $signed(KW'({i_q, 1'b0})) - $signed(KW'(n_p - PW'(1)));
-    ka = k < 0 ? PW'(-k) : PW'(k);
-    ou = (OW'(k) * OW'(hu_p) + $signed(OW'(1) <<< (Sh - 1))) >>> Sh;
-    ov = (OW'(k) * OW'(hv_p) + $signed(OW'(1) <<< (Sh - 1))) >>> Sh;
+    ou = (OW'(k_q) * OW'(hu_p) + $signed(OW'(1) <<< (Sh - 1))) >>> Sh;
+    ov = (OW'(k_q) * OW'(hv_p) + $signed(OW'(1) <<< (Sh - 1))) >>> Sh;
     // |k h| >> Sh < 2^(StW + PW - Sh) = 2^29: within one bit of u's s32.8 range
     pu = (UW+1)'(uc_p) + (UW+1)'(ou);
     pv = (UW+1)'(vc_p) + (UW+1)'(ov);
     pu_sat = sat_uv(pu);
     pv_sat = sat_uv(pv);
-    t  = TW'(ka) * TW'(tq_p);
-    tt = (2*TW)'(t) * (2*TW)'(t);
+    tt = (2*TW)'(t_q) * (2*TW)'(t_q);
     q  = (tt >> QSh) > (2*TW)'({QW{1'b1}}) ? {QW{1'b1}} : QW'(tt >> QSh);
   end
   logic issue;
@@ -190,11 +197,27 @@ module tu_feline #(
     .wrap_i(wrap_p), .tex_req_o, .tex_addr_o, .tex_data_i,
     .out_valid_o(tri_out_valid), .out_ready_i(tri_take), .rgba_o(tri_rgba), .level_o(tri_level)
   );
-  // the probe's weight, 3 clocks after the issue (the trilinear output comes >= 8 clocks after)
+  // the probe's weight: t = |k| tq registered at the issue, Q = t^2 >> QSh (saturated) one clock
+  // later, tu_gauss_weight (3 clocks): w 5 clocks after the issue (the trilinear output comes >= 8
+  // clocks after)
+  logic          wv1_q, wv2_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      wv1_q <= 1'b0;
+      wv2_q <= 1'b0;
+    end else begin
+      wv1_q <= issue;
+      wv2_q <= wv1_q;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    t_q <= TW'(ka_q) * TW'(tq_p);
+    q_q <= q;
+  end
   logic          w_valid, w_ready_unused;
   logic [WW-1:0] w, w_q;
   tu_gauss_weight u_w (
-    .clk_i, .rst_ni, .in_valid_i(issue), .in_ready_o(w_ready_unused), .q_i(q),
+    .clk_i, .rst_ni, .in_valid_i(wv2_q), .in_ready_o(w_ready_unused), .q_i(q_q),
     .out_valid_o(w_valid), .out_ready_i(1'b1), .w_o(w)
   );
   always_ff @(posedge clk_i) if (w_valid) w_q <= w;

@@ -44,6 +44,32 @@ TEST(Reciprocal, CoreExhaustiveFaithfulAndMonotonic) {
   EXPECT_EQ(non_monotonic, 0u);
 }
 
+TEST(Reciprocal, CoreRoundingIsCarryBit) {
+  // tu_ewa_norm_tail takes the core's unrounded y (tu_recip_core_y) and folds the rounding into
+  // its product: R = sat(round_half_up(y / 2^6)) = floor(y / 2^6) + y[5] needs y >= 0 and no
+  // saturation, and its overflow flag needs R >= 2^(RecipOutF-1). Every mantissa code.
+  constexpr int kRnd = fmt::kRecipC0F - fmt::kRecipOutF;
+  const uint32_t lo = 1u << (fmt::kRecipMantW - 1), hi = 1u << fmt::kRecipMantW;
+  int64_t min_r = INT64_MAX, max_r = 0;
+  uint64_t bad = 0;
+  for (uint32_t m = lo; m < hi; ++m) {
+    const auto mm = recip::Mant::from_raw(m);
+    const auto& c = recip::table()[mm.slice(fmt::kRecipDxW, fmt::kRecipIdxW)];
+    const recip::Dx dx = recip::Dx::from_raw(mm.slice(0, fmt::kRecipDxW));
+    const recip::T1 t1 = (c.c2 * dx).as<recip::T1>();
+    const recip::S s = (c.c1 + t1).as<recip::S>();
+    const recip::T2 t2 = (s * dx).as<recip::T2>();
+    const int64_t y = static_cast<int64_t>((c.c0 + t2).raw());
+    const int64_t r = static_cast<int64_t>(recip::core(mm).raw());
+    if (y < 0 || (y >> kRnd) + ((y >> (kRnd - 1)) & 1) != r) ++bad;
+    min_r = std::min(min_r, r);
+    max_r = std::max(max_r, r);
+  }
+  EXPECT_EQ(bad, 0u);
+  EXPECT_GE(min_r, int64_t(1) << (fmt::kRecipOutF - 1));
+  EXPECT_LE(max_r, int64_t(1) << fmt::kRecipOutF);
+}
+
 TEST(Reciprocal, EveryInputCodeIsFaithfulOrFlagged) {
   // All 2^RecipInW codes of the full unit (normaliser + core + guards).
   const int64_t n = int64_t(1) << kW;
