@@ -100,6 +100,23 @@ std::vector<Cover> visibility(const scene::Scene& s, int threads) {
   return cov;
 }
 
+std::vector<CoverRun> cover_runs(const std::vector<Cover>& cov, int width) {
+  std::vector<CoverRun> runs;
+  const auto w = static_cast<size_t>(width);
+  for (size_t row = 0; w > 0 && row < cov.size() / w; ++row) {
+    const Cover* line = cov.data() + row * w;
+    for (size_t x = 0; x < w;) {
+      const Cover c = line[x];
+      size_t x1 = x;
+      while (x1 + 1 < w && line[x1 + 1].object == c.object && line[x1 + 1].triangle == c.triangle) ++x1;
+      if (c.object >= 0)
+        runs.push_back({static_cast<int>(row), static_cast<int>(x), static_cast<int>(x1), c});
+      x = x1 + 1;
+    }
+  }
+  return runs;
+}
+
 size_t covered(const std::vector<Cover>& cov) {
   return static_cast<size_t>(std::count_if(cov.begin(), cov.end(), [](const Cover& c) { return c.object >= 0; }));
 }

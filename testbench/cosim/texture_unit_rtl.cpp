@@ -191,7 +191,7 @@ Env<V> unit_env(const UnitImages& im) {
 
 RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   using Coefs = persp::Unit::Coefs;
-  const int w = s.camera.width, h = s.camera.height;
+  const int w = s.camera.width;
   // Each material's filter engine on this unit.
   std::map<std::string, ewa::Engine> engine_of;
   for (const auto& [name, m] : s.materials) {
@@ -337,132 +337,120 @@ RtlRender render_rtl(const scene::Scene& s, const RtlRenderOptions& o) {
   auto lw_of = [](const Obj& ob) { return log2_size(ob.tex.levels[0].width); };
   auto lh_of = [](const Obj& ob) { return log2_size(ob.tex.levels[0].height); };
   size_t pix = 0;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w;) {
-      const render::Cover c = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)];
-      if (c.object < 0) {
-        ++x;
-        continue;
+  for (const render::CoverRun& run : render::cover_runs(cov, w)) {
+    const int y = run.y, x = run.x0, x1 = run.x1;
+    const render::Cover c = run.c;
+    const Obj& ob = objs[static_cast<size_t>(c.object)];
+    const auto& m = s.materials.at(s.objects[static_cast<size_t>(c.object)].material);
+    const Coefs& k = ob.coefs[static_cast<size_t>(c.triangle)];
+    const int top = ob.tex.num_levels() - 1;
+    const i128 a = k.a.raw(), b = k.b.raw(), cc = k.c.raw(), d = k.d.raw(), e = k.e.raw(),
+               f = k.f.raw(), g = k.g.raw(), hh = k.h.raw(), i = k.i.raw();
+    const i128 kk[6] = {a * i - cc * g, d * i - f * g, b * i - cc * hh, e * i - f * hh,
+                        a * hh - b * g, d * hh - e * g};
+    int64_t dm;
+    int32_t dexp;
+    ellipse::fx::det3(k, &dm, &dexp);
+    Span r;
+    r.a = code(a, fmt::kPerspPW), r.b = code(b, fmt::kPerspPW), r.c = code(cc, fmt::kPerspPW);
+    r.d = code(d, fmt::kPerspPW), r.e = code(e, fmt::kPerspPW), r.f = code(f, fmt::kPerspPW);
+    r.g = code(g, fmt::kPerspQW), r.h = code(hh, fmt::kPerspQW), r.i = code(i, fmt::kPerspQW);
+    r.x0 = static_cast<uint64_t>(x);
+    r.x1 = static_cast<uint64_t>(x1);
+    r.y = static_cast<uint64_t>(y);
+    r.kux = kk[0], r.kvx = kk[1], r.kuy = kk[2], r.kvy = kk[3], r.m = kk[4], r.nn = kk[5];
+    r.dm = code(dm, fmt::kEllDetW);
+    r.dexp = code(dexp, fmt::kEllDetExpW);
+    r.laniso = render::laniso_code(m.max_aniso);
+    r.maxlod = static_cast<uint64_t>(top);
+    const tex::LodParams lp = render::lod_params(m);
+    r.lbias = code(lp.bias, fmt::kTexLodBiasW);
+    r.lminlod = lp.min_lod;
+    r.lmaxlod = lp.max_lod;
+    const tex::LevelRange lv = tex::level_range(lp, top);
+    r.lbase = static_cast<uint64_t>(lv.base);
+    r.ltop = static_cast<uint64_t>(lv.top);
+    r.tbase = ob.base;
+    r.tlw = static_cast<uint64_t>(log2_size(ob.tex.levels[0].width));
+    r.tlh = static_cast<uint64_t>(log2_size(ob.tex.levels[0].height));
+    r.twrap = wrap_code(ob.tex.addressing);
+    r.tfmt = static_cast<uint64_t>(ob.tex.format);
+    r.tsrgb = ob.tex.srgb;
+    r.wsrc = static_cast<uint64_t>(o.weights.value_or(m.weights));
+    r.cap = ewa::kDefaultMaxTexels;
+    const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(c.object)].material);
+    r.filt = static_cast<uint64_t>(eng);
+    r.fnmax = static_cast<uint64_t>(m.feline_max_probes);
+    r.clip = clip_on(m);
+    if (ob.proc) {
+      r.proc = pack_proc(*ob.proc);
+    }
+    if (ob.maps) {
+      const auto& rel = *m.relief;
+      const pom::View q = relief::quantise({}, rel.scale);
+      r.rel = 1;
+      r.radapt = rel.method == scene::ReliefMethod::PomAdaptive;
+      r.riter = rel.method == scene::ReliefMethod::Iterative;
+      r.rdm = ob.maps->dist != nullptr;
+      r.rlayers = r.rdm ? relief::dm_cap(rel.layers) : static_cast<uint64_t>(std::clamp(rel.layers, 1, 63));
+      r.dlayers = r.rdm ? static_cast<uint64_t>(ob.maps->dist->layers) : 0;
+      r.dbase = ob.dbase;
+      r.rscale = q.scale;
+      r.hbase = ob.hbase;
+      r.hlw = static_cast<uint64_t>(log2_size(ob.maps->depth.width));
+      r.hlh = static_cast<uint64_t>(log2_size(ob.maps->depth.height));
+      r.afv = afv_on(m);
+      r.admin = afvis::min_depth(ob.maps->depth);
+      r.abias = afvis::kDefaultBias;
+      r.arule = static_cast<uint64_t>(afvis::Rule::Row);
+      // One view word per pixel: {ok, vx, vy, vz, complexity at the unshifted uv}.
+      for (int px = x; px <= x1; ++px) {
+        relief::TangentView tv;
+        const bool ok = relief::pixel_view(s, c.object, c.triangle, px, y, &tv);
+        const pom::View v = relief::quantise(ok ? tv : relief::TangentView{}, rel.scale);
+        const persp::Pixel p = persp::Unit::pixel(persp::Unit::direct(k, px, y));
+        const int du = fmt::kPomUvF - fmt::kTexUvF;
+        const uint64_t cplx = pom::tex_nearest(ob.maps->complexity, relief::shift_code(p.u, du - lw_of(ob)),
+                                               relief::shift_code(p.v, du - lh_of(ob)));
+        views.push_back({.ok = ok, .vx = code(v.vx, fmt::kPomVzW), .vy = code(v.vy, fmt::kPomVzW),
+                         .vz = code(v.vz, fmt::kPomVzW), .c = cplx});
       }
-      int x1 = x;
-      while (x1 + 1 < w) {
-        const render::Cover n = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x1 + 1)];
-        if (n.object != c.object || n.triangle != c.triangle) break;
-        ++x1;
+    }
+    spans.push_back(r);
+    for (int px = x; px <= x1; ++px, ++pix) {
+      ewa::fx::In in;
+      in.b2 = ellipse::fx::pixel(k, px, y, static_cast<uint32_t>(r.laniso), static_cast<uint32_t>(top), rec);
+      in.b2.lod = tex::trilinear_lod(in.b2.lmin, lp, top).lod;  // the EWA's level (render_cmodel)
+      const bool guard = persp::Unit::pixel(persp::Unit::direct(k, px, y)).flag;
+      ewa::PixelCost pc;
+      if (eng == ewa::Engine::Ewa && pix < expect.pixels.size()) {
+        const auto& rec = expect.pixels[pix];
+        pc = ewa::pixel_cost(in, static_cast<int>(rec.lod), rec.ewa_flags, static_cast<uint64_t>(rec.texels), top);
+        pc.afv_walk = rec.afv_clocks;  // tu_afvis (0: tu_ewa)
+        pc.blocks = static_cast<uint64_t>(rec.ewa_blocks);
       }
-      const Obj& ob = objs[static_cast<size_t>(c.object)];
-      const auto& m = s.materials.at(s.objects[static_cast<size_t>(c.object)].material);
-      const Coefs& k = ob.coefs[static_cast<size_t>(c.triangle)];
-      const int top = ob.tex.num_levels() - 1;
-      const i128 a = k.a.raw(), b = k.b.raw(), cc = k.c.raw(), d = k.d.raw(), e = k.e.raw(),
-                 f = k.f.raw(), g = k.g.raw(), hh = k.h.raw(), i = k.i.raw();
-      const i128 kk[6] = {a * i - cc * g, d * i - f * g, b * i - cc * hh, e * i - f * hh,
-                          a * hh - b * g, d * hh - e * g};
-      int64_t dm;
-      int32_t dexp;
-      ellipse::fx::det3(k, &dm, &dexp);
-      Span r;
-      r.a = code(a, fmt::kPerspPW), r.b = code(b, fmt::kPerspPW), r.c = code(cc, fmt::kPerspPW);
-      r.d = code(d, fmt::kPerspPW), r.e = code(e, fmt::kPerspPW), r.f = code(f, fmt::kPerspPW);
-      r.g = code(g, fmt::kPerspQW), r.h = code(hh, fmt::kPerspQW), r.i = code(i, fmt::kPerspQW);
-      r.x0 = static_cast<uint64_t>(x);
-      r.x1 = static_cast<uint64_t>(x1);
-      r.y = static_cast<uint64_t>(y);
-      r.kux = kk[0], r.kvx = kk[1], r.kuy = kk[2], r.kvy = kk[3], r.m = kk[4], r.nn = kk[5];
-      r.dm = code(dm, fmt::kEllDetW);
-      r.dexp = code(dexp, fmt::kEllDetExpW);
-      r.laniso = render::laniso_code(m.max_aniso);
-      r.maxlod = static_cast<uint64_t>(top);
-      const tex::LodParams lp = render::lod_params(m);
-      r.lbias = code(lp.bias, fmt::kTexLodBiasW);
-      r.lminlod = lp.min_lod;
-      r.lmaxlod = lp.max_lod;
-      const tex::LevelRange lv = tex::level_range(lp, top);
-      r.lbase = static_cast<uint64_t>(lv.base);
-      r.ltop = static_cast<uint64_t>(lv.top);
-      r.tbase = ob.base;
-      r.tlw = static_cast<uint64_t>(log2_size(ob.tex.levels[0].width));
-      r.tlh = static_cast<uint64_t>(log2_size(ob.tex.levels[0].height));
-      r.twrap = wrap_code(ob.tex.addressing);
-      r.tfmt = static_cast<uint64_t>(ob.tex.format);
-      r.tsrgb = ob.tex.srgb;
-      r.wsrc = static_cast<uint64_t>(o.weights.value_or(m.weights));
-      r.cap = ewa::kDefaultMaxTexels;
-      const ewa::Engine eng = engine_of.at(s.objects[static_cast<size_t>(c.object)].material);
-      r.filt = static_cast<uint64_t>(eng);
-      r.fnmax = static_cast<uint64_t>(m.feline_max_probes);
-      r.clip = clip_on(m);
-      if (ob.proc) {
-        r.proc = pack_proc(*ob.proc);
+      pc.engine = eng;
+      pc.guard = guard;
+      pc.clip = r.clip != 0;
+      pc.noise = ob.proc.has_value();
+      // A format change drains (fk_q), and so does another BC1 texture (btex_q: its base, one per object).
+      pc.texfmt = ob.tex.format * 2 + (ob.tex.srgb ? 1 : 0) +
+                  (ob.tex.format == static_cast<int>(tex::TexelFormat::Bc1) ? static_cast<int>(c.object + 1) << 4 : 0);
+      pc.water = ob.proc && ob.proc->water;
+      // Trilinear: one bilinear pass for a guard pixel or a lod (GL rule) at the top level.
+      const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;
+      pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(tlod >> fmt::kTexLodF), top);
+      if (eng == ewa::Engine::Feline && pix < expect.pixels.size()) {  // its probes at their lod
+        const auto& rec = expect.pixels[pix];
+        pc.probes = guard ? 1 : rec.probes;
+        pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(std::floor(rec.lod)), top);
       }
-      if (ob.maps) {
-        const auto& rel = *m.relief;
-        const pom::View q = relief::quantise({}, rel.scale);
-        r.rel = 1;
-        r.radapt = rel.method == scene::ReliefMethod::PomAdaptive;
-        r.riter = rel.method == scene::ReliefMethod::Iterative;
-        r.rdm = ob.maps->dist != nullptr;
-        r.rlayers = r.rdm ? relief::dm_cap(rel.layers) : static_cast<uint64_t>(std::clamp(rel.layers, 1, 63));
-        r.dlayers = r.rdm ? static_cast<uint64_t>(ob.maps->dist->layers) : 0;
-        r.dbase = ob.dbase;
-        r.rscale = q.scale;
-        r.hbase = ob.hbase;
-        r.hlw = static_cast<uint64_t>(log2_size(ob.maps->depth.width));
-        r.hlh = static_cast<uint64_t>(log2_size(ob.maps->depth.height));
-        r.afv = afv_on(m);
-        r.admin = afvis::min_depth(ob.maps->depth);
-        r.abias = afvis::kDefaultBias;
-        r.arule = static_cast<uint64_t>(afvis::Rule::Row);
-        // One view word per pixel: {ok, vx, vy, vz, complexity at the unshifted uv}.
-        for (int px = x; px <= x1; ++px) {
-          relief::TangentView tv;
-          const bool ok = relief::pixel_view(s, c.object, c.triangle, px, y, &tv);
-          const pom::View v = relief::quantise(ok ? tv : relief::TangentView{}, rel.scale);
-          const persp::Pixel p = persp::Unit::pixel(persp::Unit::direct(k, px, y));
-          const int du = fmt::kPomUvF - fmt::kTexUvF;
-          const uint64_t cplx = pom::tex_nearest(ob.maps->complexity, relief::shift_code(p.u, du - lw_of(ob)),
-                                                 relief::shift_code(p.v, du - lh_of(ob)));
-          views.push_back({.ok = ok, .vx = code(v.vx, fmt::kPomVzW), .vy = code(v.vy, fmt::kPomVzW),
-                           .vz = code(v.vz, fmt::kPomVzW), .c = cplx});
-        }
-      }
-      spans.push_back(r);
-      for (int px = x; px <= x1; ++px, ++pix) {
-        ewa::fx::In in;
-        in.b2 = ellipse::fx::pixel(k, px, y, static_cast<uint32_t>(r.laniso), static_cast<uint32_t>(top), rec);
-        in.b2.lod = tex::trilinear_lod(in.b2.lmin, lp, top).lod;  // the EWA's level (render_cmodel)
-        const bool guard = persp::Unit::pixel(persp::Unit::direct(k, px, y)).flag;
-        ewa::PixelCost pc;
-        if (eng == ewa::Engine::Ewa && pix < expect.pixels.size()) {
-          const auto& rec = expect.pixels[pix];
-          pc = ewa::pixel_cost(in, static_cast<int>(rec.lod), rec.ewa_flags, static_cast<uint64_t>(rec.texels), top);
-          pc.afv_walk = rec.afv_clocks;  // tu_afvis (0: tu_ewa)
-          pc.blocks = static_cast<uint64_t>(rec.ewa_blocks);
-        }
-        pc.engine = eng;
-        pc.guard = guard;
-        pc.clip = r.clip != 0;
-        pc.noise = ob.proc.has_value();
-        // A format change drains (fk_q), and so does another BC1 texture (btex_q: its base, one per object).
-        pc.texfmt = ob.tex.format * 2 + (ob.tex.srgb ? 1 : 0) +
-                    (ob.tex.format == static_cast<int>(tex::TexelFormat::Bc1) ? static_cast<int>(c.object + 1) << 4 : 0);
-        pc.water = ob.proc && ob.proc->water;
-        // Trilinear: one bilinear pass for a guard pixel or a lod (GL rule) at the top level.
-        const uint32_t tlod = tex::trilinear_lod(in.b2.lrho, lp, top).lod;
-        pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(tlod >> fmt::kTexLodF), top);
-        if (eng == ewa::Engine::Feline && pix < expect.pixels.size()) {  // its probes at their lod
-          const auto& rec = expect.pixels[pix];
-          pc.probes = guard ? 1 : rec.probes;
-          pc.one_level = ewa::trilinear_one_level(guard, static_cast<int>(std::floor(rec.lod)), top);
-        }
-        costs.push_back(pc);
-        if (shade_unit) shades.push_back(brdf::shade::pack(shade.fx_in(rays, c.object, c.triangle, px, y)));
-        relief::StagePixel rp;
-        if (ob.maps && pix < expect.pixels.size() && expect.pixels[pix].relief_n > 0)
-          rp = relief::stage_pixel(true, static_cast<uint32_t>(expect.pixels[pix].relief_steps), m.relief->method);
-        relief_px.push_back(rp);
-      }
-      x = x1 + 1;
+      costs.push_back(pc);
+      if (shade_unit) shades.push_back(brdf::shade::pack(shade.fx_in(rays, c.object, c.triangle, px, y)));
+      relief::StagePixel rp;
+      if (ob.maps && pix < expect.pixels.size() && expect.pixels[pix].relief_n > 0)
+        rp = relief::stage_pixel(true, static_cast<uint32_t>(expect.pixels[pix].relief_steps), m.relief->method);
+      relief_px.push_back(rp);
     }
   }
 

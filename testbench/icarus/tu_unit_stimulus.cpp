@@ -105,68 +105,55 @@ int run(int argc, char** argv) {
     std::snprintf(buf, sizeof buf, "%016llx\n", static_cast<unsigned long long>(w));
     ft << buf;
   }
-  const int w = s.camera.width, h = s.camera.height;
+  const int w = s.camera.width;
   const auto cov = render::visibility(s);
   size_t pix = 0, nspans = 0, npix = 0;
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w;) {
-      const render::Cover c = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)];
-      if (c.object < 0) {
-        ++x;
-        continue;
-      }
-      int x1 = x;
-      while (x1 + 1 < w) {
-        const render::Cover n = cov[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x1 + 1)];
-        if (n.object != c.object || n.triangle != c.triangle) break;
-        ++x1;
-      }
-      const size_t first_pix = pix;
-      pix += static_cast<size_t>(x1 - x + 1);
-      // The part of the span inside the window.
-      const int cx0 = std::max(x, wx0), cx1 = std::min(x1, wx1);
-      if (y < wy0 || y > wy1 || cx0 > cx1) {
-        x = x1 + 1;
-        continue;
-      }
-      const auto oi = static_cast<size_t>(c.object);
-      const tex::Texture& t = texs[oi];
-      const auto& m = s.materials.at(s.objects[oi].material);
-      const persp::Unit::Coefs& k = coefs[oi][static_cast<size_t>(c.triangle)];
-      const int top = t.num_levels() - 1;
-      const i128 a = k.a.raw(), b = k.b.raw(), cc = k.c.raw(), d = k.d.raw(), e = k.e.raw(), f = k.f.raw(),
-                 g = k.g.raw(), hh = k.h.raw(), i = k.i.raw();
-      const i128 kk[6] = {a * i - cc * g, d * i - f * g, b * i - cc * hh, e * i - f * hh, a * hh - b * g, d * hh - e * g};
-      int64_t dm;
-      int32_t dexp;
-      ellipse::fx::det3(k, &dm, &dexp);
-      const tex::LodParams lp = render::lod_params(m);
-      const tex::LevelRange lv = tex::level_range(lp, top);
-      const uint64_t f1[] = {code(a, fmt::kPerspPW), code(b, fmt::kPerspPW), code(cc, fmt::kPerspPW),
-                             code(d, fmt::kPerspPW), code(e, fmt::kPerspPW), code(f, fmt::kPerspPW),
-                             code(g, fmt::kPerspQW), code(hh, fmt::kPerspQW), code(i, fmt::kPerspQW),
-                             static_cast<uint64_t>(cx0), static_cast<uint64_t>(cx1), static_cast<uint64_t>(y)};
-      for (uint64_t v : f1) fs << std::hex << v << ' ';
-      for (i128 v : kk) fs << hex112(v) << ' ';
-      const uint64_t f2[] = {code(dm, fmt::kEllDetW), code(dexp, fmt::kEllDetExpW), render::laniso_code(m.max_aniso),
-                             static_cast<uint64_t>(top), code(lp.bias, fmt::kTexLodBiasW), static_cast<uint64_t>(lp.min_lod),
-                             static_cast<uint64_t>(lp.max_lod), static_cast<uint64_t>(lv.base), static_cast<uint64_t>(lv.top),
-                             bases[oi], static_cast<uint64_t>(cosim::log2_size(t.levels[0].width)),
-                             static_cast<uint64_t>(cosim::log2_size(t.levels[0].height)), cosim::wrap_code(t.addressing),
-                             static_cast<uint64_t>(t.format), static_cast<uint64_t>(t.srgb),
-                             static_cast<uint64_t>(m.weights), static_cast<uint64_t>(ewa::kDefaultMaxTexels),
-                             static_cast<uint64_t>(eng), static_cast<uint64_t>(m.feline_max_probes), 0};
-      for (size_t j = 0; j < std::size(f2); ++j) fs << std::hex << f2[j] << (j + 1 < std::size(f2) ? ' ' : '\n');
-      ++nspans;
-      for (int px = cx0; px <= cx1; ++px) {
-        const render::PixelRecord& r = expect.pixels.at(first_pix + static_cast<size_t>(px - x));
-        if (r.x != px || r.y != y) throw std::logic_error("C-model pixel order differs from the spans");
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "%x %x %08x %x %x\n", r.x, r.y, cosim::pack_rgba(r.color), visited, r.b2_flags);
-        fe << buf;
-        ++npix;
-      }
-      x = x1 + 1;
+  for (const render::CoverRun& run : render::cover_runs(cov, w)) {
+    const int y = run.y, x = run.x0, x1 = run.x1;
+    const render::Cover c = run.c;
+    const size_t first_pix = pix;
+    pix += static_cast<size_t>(x1 - x + 1);
+    // The part of the span inside the window.
+    const int cx0 = std::max(x, wx0), cx1 = std::min(x1, wx1);
+    if (y < wy0 || y > wy1 || cx0 > cx1) {
+      continue;
+    }
+    const auto oi = static_cast<size_t>(c.object);
+    const tex::Texture& t = texs[oi];
+    const auto& m = s.materials.at(s.objects[oi].material);
+    const persp::Unit::Coefs& k = coefs[oi][static_cast<size_t>(c.triangle)];
+    const int top = t.num_levels() - 1;
+    const i128 a = k.a.raw(), b = k.b.raw(), cc = k.c.raw(), d = k.d.raw(), e = k.e.raw(), f = k.f.raw(),
+               g = k.g.raw(), hh = k.h.raw(), i = k.i.raw();
+    const i128 kk[6] = {a * i - cc * g, d * i - f * g, b * i - cc * hh, e * i - f * hh, a * hh - b * g, d * hh - e * g};
+    int64_t dm;
+    int32_t dexp;
+    ellipse::fx::det3(k, &dm, &dexp);
+    const tex::LodParams lp = render::lod_params(m);
+    const tex::LevelRange lv = tex::level_range(lp, top);
+    const uint64_t f1[] = {code(a, fmt::kPerspPW), code(b, fmt::kPerspPW), code(cc, fmt::kPerspPW),
+                           code(d, fmt::kPerspPW), code(e, fmt::kPerspPW), code(f, fmt::kPerspPW),
+                           code(g, fmt::kPerspQW), code(hh, fmt::kPerspQW), code(i, fmt::kPerspQW),
+                           static_cast<uint64_t>(cx0), static_cast<uint64_t>(cx1), static_cast<uint64_t>(y)};
+    for (uint64_t v : f1) fs << std::hex << v << ' ';
+    for (i128 v : kk) fs << hex112(v) << ' ';
+    const uint64_t f2[] = {code(dm, fmt::kEllDetW), code(dexp, fmt::kEllDetExpW), render::laniso_code(m.max_aniso),
+                           static_cast<uint64_t>(top), code(lp.bias, fmt::kTexLodBiasW), static_cast<uint64_t>(lp.min_lod),
+                           static_cast<uint64_t>(lp.max_lod), static_cast<uint64_t>(lv.base), static_cast<uint64_t>(lv.top),
+                           bases[oi], static_cast<uint64_t>(cosim::log2_size(t.levels[0].width)),
+                           static_cast<uint64_t>(cosim::log2_size(t.levels[0].height)), cosim::wrap_code(t.addressing),
+                           static_cast<uint64_t>(t.format), static_cast<uint64_t>(t.srgb),
+                           static_cast<uint64_t>(m.weights), static_cast<uint64_t>(ewa::kDefaultMaxTexels),
+                           static_cast<uint64_t>(eng), static_cast<uint64_t>(m.feline_max_probes), 0};
+    for (size_t j = 0; j < std::size(f2); ++j) fs << std::hex << f2[j] << (j + 1 < std::size(f2) ? ' ' : '\n');
+    ++nspans;
+    for (int px = cx0; px <= cx1; ++px) {
+      const render::PixelRecord& r = expect.pixels.at(first_pix + static_cast<size_t>(px - x));
+      if (r.x != px || r.y != y) throw std::logic_error("C-model pixel order differs from the spans");
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%x %x %08x %x %x\n", r.x, r.y, cosim::pack_rgba(r.color), visited, r.b2_flags);
+      fe << buf;
+      ++npix;
     }
   }
   std::printf("spans %zu pixels %zu texel_words %zu\n", nspans, npix, ram.size());

@@ -59,6 +59,13 @@ struct Cover {
 // Rows on `threads` threads (<= 0: every core); the same result for any count.
 std::vector<Cover> visibility(const scene::Scene& s, int threads = 0);
 size_t covered(const std::vector<Cover>& cov);  // pixels with an object
+// The unit's spans: maximal runs of one row's pixels covered by the same triangle, row-major
+// (the order of the covered pixels in Frame::pixels); `width` is the camera's.
+struct CoverRun {
+  int y = 0, x0 = 0, x1 = 0;  // pixels x0 .. x1 (inclusive) of row y
+  Cover c;
+};
+std::vector<CoverRun> cover_runs(const std::vector<Cover>& cov, int width);
 // Each object's material (resolved once per render instead of per pixel by name).
 std::vector<const scene::Material*> object_materials(const scene::Scene& s);
 
