@@ -13,13 +13,15 @@
 //                          shift: a_c is pre-shifted), saturate at 255; combinational, the caller
 //                          registers it
 // so the same integers: acc_c R / 2^sh = a_c R / 2^(RecipOutF + K).
-// Timing: p_i, acc_i in clock A; y_i (the core's stage-3 register) in clock A + 1; rgba_o in A + 2.
+// Timing: p_i in clock A - 1 and A (each channel registers its own copy of K - p_i every clock: one
+// flip-flop per channel drives that channel's shifter only), acc_i in clock A; y_i (the core's
+// stage-3 register) in clock A + 1; rgba_o in A + 2.
 module tu_ewa_norm_tail #(
   parameter int AccW  = tu_formats_pkg::EwaAccW,   // per-channel weighted sum
   parameter int WsumW = tu_formats_pkg::EwaWsumW   // weight sum (p <= WsumW - 1)
 ) (
   input  logic                                        clk_i,
-  input  logic [6:0]                                  p_i,
+  input  logic [6:0]                                  p_i,    // clock A - 1 (held through A)
   input  logic [4*AccW-1:0]                           acc_i,  // channel c at [c AccW +: AccW]
   input  logic signed [tu_formats_pkg::RecipC0W+1:0]  y_i,
   output logic [31:0]                                 rgba_o
@@ -78,11 +80,15 @@ module tu_ewa_norm_tail #(
   assign rb = y_i[RndShift-1];
 
   for (genvar c = 0; c < 4; c++) begin : g_ch
+    // clock A - 1: the shift amount K - p, one register per channel (keep: Yosys would merge
+    // the four identical flip-flops back into one driving all four shifters)
+    logic [6:0]        sh_q;
+    (* keep *) always_ff @(posedge clk_i) sh_q <= 7'(K) - p_i;
     // clock A: pre-shift, overflow flag
     logic [AccW+K-1:0] ax;
     logic [AW-1:0]     a_q;
     logic              big_q, big2_q;
-    assign ax = (AccW+K)'(acc_i[c*AccW +: AccW]) << (7'(K) - p_i);
+    assign ax = (AccW+K)'(acc_i[c*AccW +: AccW]) << sh_q;
     always_ff @(posedge clk_i) begin
       a_q   <= AW'(ax);
       big_q <= (ax >> AW) != '0;
