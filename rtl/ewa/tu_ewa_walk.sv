@@ -212,7 +212,6 @@ module tu_ewa_walk #(
   always_ff @(posedge clk_i) begin
     v1_q    <= issue;
     in1_q   <= issue && q_q < (64'sd1 <<< QF);
-    qc1_q   <= GQW'(q_q >>> (QF - tu_formats_pkg::GaussQF));
     xic1_q  <= GXW'(xi_q >>> (tu_formats_pkg::EwaKF + PosF - tu_formats_pkg::GaussXiF));
     etac1_q <= GXW'(eta_q >>> (tu_formats_pkg::EwaKF + PosF - tu_formats_pkg::GaussXiF));
     addr_q[0] <= addr;
@@ -220,8 +219,9 @@ module tu_ewa_walk #(
     in_q[2] <= in1_q;
     for (int i = 3; i <= 5; i++) in_q[i] <= in_q[i-1];
   end
-  // the formula unit's own copy of qc1_q (its multiply-add alone on it; keep: Yosys would merge
-  // the two identical registers back into one)
+  // Q for the 1-D table and the formula unit's own copy (its squarer alone on it): keep on both,
+  // or Yosys merges the two identical registers back into one driving both units
+  (* keep *) always_ff @(posedge clk_i) qc1_q  <= GQW'(q_q >>> (QF - tu_formats_pkg::GaussQF));
   (* keep *) always_ff @(posedge clk_i) qcf1_q <= GQW'(q_q >>> (QF - tu_formats_pkg::GaussQF));
   // the nearest-texel read (WNear) bypasses the delay line
   assign tex_req_o  = 1'b1;
