@@ -8,7 +8,7 @@
 //   clock B (y_i):         a_c R + 2^(RecipOutF+K-1) as a carry-save pair: rows a_c R_hi[j] 2^j,
 //                          a_c y[5] (R = R_hi + y[5], R_hi = floor(y / 2^6): the core's rounding
 //                          without its carry chain; no saturation, 2^23 <= R <= 2^24) and the
-//                          rounding term, 3:2 compressor levels (as csa_mul in tu_persp_pixel)
+//                          rounding term, 3:2 compressor levels (rtl/common/tu_csa.svh, as in tu_persp_pixel)
 //   clock C (rgba_o):      x = sum + carry (the one carry chain), x >> (RecipOutF + K) (a fixed
 //                          shift: a_c is pre-shifted), saturate at 255; combinational, the caller
 //                          registers it
@@ -33,47 +33,13 @@ module tu_ewa_norm_tail #(
   localparam int RndShift = tu_formats_pkg::RecipC0F - tu_formats_pkg::RecipOutF;
   localparam int Sh   = tu_formats_pkg::RecipOutF + K;  // fixed shift
   localparam int SW   = AW + RW;                        // a R + 2^(Sh-1) < 2^(AW+RW-1) + 2^(Sh-1)
-  localparam int NRow = RW + 2;
-
+  
   // ---- clock B: carry-save pair of a R + 2^(Sh-1)
-  function automatic int csa_levels(input int n0);
-    int n, l;
-    n = n0;
-    l = 0;
-    for (int i = 0; i < 64; i++) begin
-      if (n > 2) begin
-        n = (n / 3) * 2 + n % 3;
-        l = l + 1;
-      end
-    end
-    csa_levels = l;
-  endfunction
-  localparam int NLvl = csa_levels(NRow);
-  // {carry, sum} modulo 2^SW; live rows stay at the front of the row vector (tu_persp_pixel's csa_mul)
-  function automatic logic [2*SW-1:0] csa_mul(input logic [AW-1:0] aa, input logic [RW-1:0] rh,
-                                              input logic rb);
-    logic [NRow*SW-1:0] cur, nxt;
-    logic [SW-1:0]      a, b, c, ae;
-    ae = SW'(aa);
-    for (int j = 0; j < RW; j++) cur[j*SW +: SW] = {SW{rh[j]}} & (ae << j);
-    cur[RW*SW +: SW]     = {SW{rb}} & ae;
-    cur[(RW+1)*SW +: SW] = SW'(1) << (Sh - 1);
-    for (int l = 0; l < NLvl; l++) begin
-      nxt = '0;
-      for (int g = 0; g < NRow / 3; g++) begin
-        a = cur[(3*g)*SW +: SW];
-        b = cur[(3*g+1)*SW +: SW];
-        c = cur[(3*g+2)*SW +: SW];
-        nxt[(2*g)*SW +: SW]   = a ^ b ^ c;
-        nxt[(2*g+1)*SW +: SW] = ((a & b) | (a & c) | (b & c)) << 1;
-      end
-      for (int k = 0; k < NRow % 3; k++) begin
-        nxt[(2*(NRow/3)+k)*SW +: SW] = cur[(3*(NRow/3)+k)*SW +: SW];
-      end
-      cur = nxt;
-    end
-    csa_mul = {cur[SW +: SW], cur[0 +: SW]};
-  endfunction
+  // tu_csa.svh: the rows and the compressor tree, shared with tu_persp_pixel.
+  localparam int CsaW = SW;
+  localparam int CsaM = RW;
+  localparam int CsaB = 1;
+`include "tu_csa.svh"
   logic [RW-1:0] rh;
   logic          rb;
   assign rh = RW'(y_i >>> RndShift);
@@ -95,7 +61,7 @@ module tu_ewa_norm_tail #(
     end
     // clock B: carry-save pair
     logic [SW-1:0] s_d, c_d, s_q, c_q;
-    assign {c_d, s_d} = csa_mul(a_q, rh, rb);
+    assign {c_d, s_d} = csa_mul(SW'(a_q), rh, rb, SW'(1) << (Sh - 1));
     always_ff @(posedge clk_i) begin
       s_q    <= s_d;
       c_q    <= c_d;

@@ -81,73 +81,19 @@ module tu_persp_pixel (
   // floor; only their carry into bit Sh0 is kept (cy).
   localparam int Sh0 = tu_formats_pkg::RecipOutF - tu_formats_pkg::PerspUvF;  // sh = Sh0 + e
   localparam int TW = ProdW - Sh0;
-`ifdef TU_SIM_PRODUCT_MUL
-  // Simulation only (the full texture-unit co-simulation models: testbench/cosim/CMakeLists.txt
-  // defines TU_SIM_PRODUCT_MUL for the Vtu_texture_unit* models; never synthesised): the same
-  // x = p * R + add modulo 2^ProdW as one product, returned as sum = x, carry = 0. S7 registers
-  // and S8 add only s + c (+ the carry of their low Sh0 bits, 0 here), so u_o, v_o and flag_o
-  // are bit-identical to the compressor tree's; Verilator evaluates the unrolled tree (26 rows of
-  // 80-bit words, 7 levels, twice) every clock at about half the full unit's simulation time
-  // (docs/performance.md section 10). The block models (Vtu_persp, Vtu_persp_klane,
-  // Vtu_objspace_sample) and Yosys keep the tree below.
-  function automatic logic [2*ProdW-1:0] csa_mul(input logic [PW-1:0] pp, input logic [RW-1:0] rr,
-                                                 input logic [ProdW-1:0] add);
-    logic [ProdW-1:0] pe, re;
-    pe = ProdW'($signed(pp));
-    re = ProdW'(rr);
-    csa_mul = {ProdW'(0), pe * re + add};
-  endfunction
-`else
-  localparam int NRow = RW + 1;
-  // levels of 3:2 compressors that bring n rows down to 2
-  function automatic int csa_levels(input int n0);
-    int n, l;
-    n = n0;
-    l = 0;
-    for (int i = 0; i < 64; i++) begin
-      if (n > 2) begin
-        n = (n / 3) * 2 + n % 3;
-        l = l + 1;
-      end
-    end
-    csa_levels = l;
-  endfunction
-  localparam int NLvl = csa_levels(NRow);
-  // {carry, sum} of p * r + add, modulo 2^ProdW. Live rows stay at the front of the row vector:
-  // the groups of 3 before the last live row are full, a group with 1 or 2 live rows passes 1 or
-  // 2 rows (a constant-zero third input), groups of zeros give zeros (constant-folded).
-  function automatic logic [2*ProdW-1:0] csa_mul(input logic [PW-1:0] pp, input logic [RW-1:0] rr,
-                                                 input logic [ProdW-1:0] add);
-    logic [NRow*ProdW-1:0] cur, nxt;
-    logic [ProdW-1:0]      a, b, c, pe;
-    pe = ProdW'($signed(pp));
-    for (int j = 0; j < RW; j++) cur[j*ProdW +: ProdW] = {ProdW{rr[j]}} & (pe << j);
-    cur[RW*ProdW +: ProdW] = add;
-    for (int l = 0; l < NLvl; l++) begin
-      nxt = '0;
-      for (int g = 0; g < NRow / 3; g++) begin
-        a = cur[(3*g)*ProdW +: ProdW];
-        b = cur[(3*g+1)*ProdW +: ProdW];
-        c = cur[(3*g+2)*ProdW +: ProdW];
-        nxt[(2*g)*ProdW +: ProdW]   = a ^ b ^ c;
-        nxt[(2*g+1)*ProdW +: ProdW] = ((a & b) | (a & c) | (b & c)) << 1;
-      end
-      for (int k = 0; k < NRow % 3; k++) begin
-        nxt[(2*(NRow/3)+k)*ProdW +: ProdW] = cur[(3*(NRow/3)+k)*ProdW +: ProdW];
-      end
-      cur = nxt;
-    end
-    csa_mul = {cur[ProdW +: ProdW], cur[0 +: ProdW]};
-  endfunction
-`endif
+  // tu_csa.svh: the rows and the compressor tree, shared with tu_ewa_norm_tail.
+  localparam int CsaW = ProdW;
+  localparam int CsaM = RW;
+  localparam int CsaB = 0;
+`include "tu_csa.svh"
 
   logic [ProdW-1:0] half, su, cu, sv, cv;
   logic [Sh0:0]     lo_u, lo_v;
   logic [TW-1:0]    su_q, cu_q, sv_q, cv_q;
   logic             cyu_q, cyv_q;
   assign half = ProdW'(1) << (Sh0 - 1 + 32'(e_q[CoreLat]));
-  assign {cu, su} = csa_mul(pu_q[CoreLat], r, half);
-  assign {cv, sv} = csa_mul(pv_q[CoreLat], r, half);
+  assign {cu, su} = csa_mul(ProdW'($signed(pu_q[CoreLat])), r, 1'b0, half);
+  assign {cv, sv} = csa_mul(ProdW'($signed(pv_q[CoreLat])), r, 1'b0, half);
   assign lo_u = (Sh0+1)'(su[Sh0-1:0]) + (Sh0+1)'(cu[Sh0-1:0]);
   assign lo_v = (Sh0+1)'(sv[Sh0-1:0]) + (Sh0+1)'(cv[Sh0-1:0]);
   always_ff @(posedge clk_i) begin

@@ -1,9 +1,8 @@
 // Reciprocal core: R ~ 1/M for a normalised mantissa M in [1,2), four pipeline stages.
 // Piecewise quadratic, Horner form; formats and rounding exactly as cmodel/blocks/reciprocal:
-//   stage 1: ROM lookup (c0, c1, c2) by the top RecipIdxW fraction bits, dx = the rest
-//   stage 2: s  = c1 + floor(c2 * dx)      (t1 truncated to RecipT1F fraction bits)
-//   stage 3: y  = c0 + floor(s * dx)       (t2 truncated to RecipT2F fraction bits)
+//   stages 1-3 (tu_recip_core_y): y = c0 + floor((c1 + floor(c2 dx)) dx), RecipC0F fraction bits
 //   stage 4: R  = sat(round_half_up(y))    (RecipOutF fraction bits)
+// The EWA normalisation uses tu_recip_core_y alone and folds stage 4 into its product.
 module tu_recip_core
 (
   input  logic                 clk_i,
@@ -11,44 +10,12 @@ module tu_recip_core
   input  logic [tu_formats_pkg::RecipMantW-1:0] m_i,
   output logic [tu_formats_pkg::RecipOutW-1:0]  r_o
 );
-  localparam int P1W = tu_formats_pkg::RecipC2W + tu_formats_pkg::RecipDxW;            // c2 * dx
-  localparam int P1F = tu_formats_pkg::RecipC2F + tu_formats_pkg::RecipMantW - 1;
-  localparam int P2W = tu_formats_pkg::RecipSW + tu_formats_pkg::RecipDxW + 1;         // s * dx (signed)
-  localparam int P2F = tu_formats_pkg::RecipC1F + tu_formats_pkg::RecipMantW - 1;
   localparam int YW  = tu_formats_pkg::RecipC0W + 2;                   // c0 + t2 (signed)
   localparam int RndShift = tu_formats_pkg::RecipC0F - tu_formats_pkg::RecipOutF;
 
-  // Stage 1: ROM
-  logic [tu_formats_pkg::RecipC0W-1:0]        c0_rom;
-  logic signed [tu_formats_pkg::RecipC1W-1:0] c1_rom;
-  logic [tu_formats_pkg::RecipC2W-1:0]        c2_rom;
-  tu_recip_rom u_rom (
-    .idx_i (m_i[tu_formats_pkg::RecipDxW +: tu_formats_pkg::RecipIdxW]),
-    .c0_o  (c0_rom),
-    .c1_o  (c1_rom),
-    .c2_o  (c2_rom)
-  );
-
-  logic [tu_formats_pkg::RecipC0W-1:0]        c0_q1, c0_q2;
-  logic signed [tu_formats_pkg::RecipC1W-1:0] c1_q1;
-  logic [tu_formats_pkg::RecipC2W-1:0]        c2_q1;
-  logic [tu_formats_pkg::RecipDxW-1:0]        dx_q1, dx_q2;
-
-  // Stage 2: s = c1 + t1
-  logic [P1W-1:0]              p1;
-  logic [tu_formats_pkg::RecipT1W-1:0]         t1;
-  logic signed [tu_formats_pkg::RecipSW-1:0]   s_d, s_q2;
-  assign p1  = c2_q1 * dx_q1;
-  assign t1  = tu_formats_pkg::RecipT1W'(p1 >> (P1F - tu_formats_pkg::RecipT1F));
-  assign s_d = c1_q1 + $signed({{(tu_formats_pkg::RecipSW - tu_formats_pkg::RecipT1W){1'b0}}, t1});
-
-  // Stage 3: y = c0 + t2
-  logic signed [P2W-1:0]       p2;
-  logic signed [tu_formats_pkg::RecipT2W-1:0]  t2;
-  logic signed [YW-1:0]        y_d, y_q3;
-  assign p2  = P2W'(s_q2) * $signed({1'b0, dx_q2});
-  assign t2  = tu_formats_pkg::RecipT2W'(p2 >>> (P2F - tu_formats_pkg::RecipT2F));
-  assign y_d = $signed({2'b00, c0_q2}) + YW'(t2);
+  // Stages 1-3
+  logic signed [YW-1:0] y_q3;
+  tu_recip_core_y u_y (.clk_i, .en_i, .m_i, .y_o(y_q3));
 
   // Stage 4: round half up, saturate to the unsigned output format
   logic signed [YW-1:0]        y_rnd;
@@ -66,21 +33,9 @@ module tu_recip_core
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      c0_q1 <= c0_rom;
-      c1_q1 <= c1_rom;
-      c2_q1 <= c2_rom;
-      dx_q1 <= m_i[tu_formats_pkg::RecipDxW-1:0];
-      s_q2  <= s_d;
-      c0_q2 <= c0_q1;
-      dx_q2 <= dx_q1;
-      y_q3  <= y_d;
       r_q4  <= r_d;
     end
   end
 
   assign r_o = r_q4;
-
-  // The leading one of M is implicit in the table index.
-  logic unused_msb;
-  assign unused_msb = m_i[tu_formats_pkg::RecipMantW-1];
 endmodule

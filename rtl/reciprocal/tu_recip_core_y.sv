@@ -1,13 +1,12 @@
-// Reciprocal core up to its unrounded result: tu_recip_core's stages 1-3 (the same arithmetic,
-// formats and register names), y = c0 + floor(s dx) in RecipC0F fraction bits, three pipeline
-// stages. tu_recip_core's stage 4 is R = sat(round_half_up(y)) to RecipOutF fraction bits; the
-// EWA normalisation (tu_ewa_norm_tail) takes y instead and folds that rounding into its product:
+// Reciprocal core up to its unrounded result: tu_recip_core's stages 1-3, y = c0 + floor(s dx)
+// in RecipC0F fraction bits, three pipeline stages. tu_recip_core's stage 4 is
+// R = sat(round_half_up(y)) to RecipOutF fraction bits; the EWA normalisation (tu_ewa_norm_tail)
+// takes y instead and folds that rounding into its product:
 // for a normalised mantissa R = floor(y / 2^6) + y[5] (never saturates: 2^23 <= R <= 2^24,
 // testbench/unit/reciprocal_test.cpp CoreRoundingIsCarryBit, every mantissa).
 //   stage 1: ROM lookup (c0, c1, c2) by the top RecipIdxW fraction bits, dx = the rest
 //   stage 2: s  = c1 + floor(c2 * dx)      (t1 truncated to RecipT1F fraction bits)
 //   stage 3: y  = c0 + floor(s * dx)       (t2 truncated to RecipT2F fraction bits)
-// (A separate module, not a port of tu_recip_core: its other users keep their netlists.)
 module tu_recip_core_y
 (
   input  logic                                            clk_i,
