@@ -2,7 +2,7 @@
 // two register levels so that no clock holds a product, a carry chain and a variable shift:
 //   channel = min(255, floor((acc_c R + 2^(sh-1)) / 2^sh)),  sh = RecipOutF + p,  p = msb(wsum)
 // with R = sat(round_half_up(y / 2^6)) from the reciprocal core's unrounded y (tu_recip_core_y).
-//   clock A (p_i, acc_i):  a_c = acc_c 2^(K-p) (K = WsumW - 1, exact, < 2^(K+9) unless big_c),
+//   clock A (K - p, acc_i): a_c = acc_c 2^(K-p) (K = WsumW - 1, exact, < 2^(K+9) unless big_c),
 //                          big_c = acc_c >= 2^(p+9): then acc_c R >= 2^(p+9) 2^23 = 256 2^sh
 //                          (R >= 2^23 for every mantissa), so the channel saturates to 255
 //   clock B (y_i):         a_c R + 2^(RecipOutF+K-1) as a carry-save pair: rows a_c R_hi[j] 2^j,
