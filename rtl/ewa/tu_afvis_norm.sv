@@ -2,7 +2,8 @@
 // tu_ewa_walk's "normalisation" section): wsum leading-one normalised to EwaNrmW bits (floor),
 // the reciprocal core, channel = min(255, round_half_up(acc_c R 2^-(RecipOutF + p))). load_i
 // registers the mantissa and shift of wsum_i (clock t); tu_recip_core_y's y at t + 4, acc_i read
-// at t + 3 (tu_ewa_norm_tail: pre-shift; t + 4 carry-save products; t + 5 carry chain, fixed
+// at t + 3 (tu_ewa_norm_tail: its shift amounts from p_q at t + 2, the pre-shift at t + 3; t + 4
+// carry-save products; t + 5 carry chain, fixed
 // shift, saturation): rgba_o is valid EwaNormCycles - 1 clocks after the load while acc_i is held.
 module tu_afvis_norm (
   input  logic                                  clk_i,

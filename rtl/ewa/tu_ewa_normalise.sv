@@ -3,7 +3,8 @@
 // channel = min(255, round_half_up(acc_c R 2^-(RecipOutF + p - (EwaNrmW - 1)))) with p = msb(wsum).
 //   load_i at clock t: p and the mantissa of wsum_i registered
 //   t + 1 .. t + 3: the reciprocal core up to its unrounded y (tu_recip_core_y)
-//   t + 3: acc_i read (it must be stable then): pre-shifted by WsumW - 1 - p (tu_ewa_norm_tail)
+//   t + 2: WsumW - 1 - p registered per channel (tu_ewa_norm_tail; p_q held since t + 1)
+//   t + 3: acc_i read (it must be stable then): pre-shifted by WsumW - 1 - p
 //   t + 4: the products as carry-save pairs (the core's rounding folded in)
 //   t + 5 (= t + EwaNormCycles - 1): rgba_o = the channels (combinational: the carry chain, a
 //   fixed shift, saturation), to be registered by the caller

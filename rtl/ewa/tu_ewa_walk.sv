@@ -200,7 +200,7 @@ module tu_ewa_walk #(
 
   // ---- P1: weight-unit inputs and the texel address
   logic                  v1_q, in1_q;
-  logic [GQW-1:0]        qc1_q;
+  logic [GQW-1:0]        qc1_q, qcf1_q;  // Q for the 1-D table; its copy for the formula unit
   logic [GXW-1:0]        xic1_q, etac1_q;
   logic [AW-1:0]         addr, addr_q [AddrDly];
   logic                  in_q [2:5];
@@ -212,7 +212,6 @@ module tu_ewa_walk #(
   always_ff @(posedge clk_i) begin
     v1_q    <= issue;
     in1_q   <= issue && q_q < (64'sd1 <<< QF);
-    qc1_q   <= GQW'(q_q >>> (QF - tu_formats_pkg::GaussQF));
     xic1_q  <= GXW'(xi_q >>> (tu_formats_pkg::EwaKF + PosF - tu_formats_pkg::GaussXiF));
     etac1_q <= GXW'(eta_q >>> (tu_formats_pkg::EwaKF + PosF - tu_formats_pkg::GaussXiF));
     addr_q[0] <= addr;
@@ -220,6 +219,10 @@ module tu_ewa_walk #(
     in_q[2] <= in1_q;
     for (int i = 3; i <= 5; i++) in_q[i] <= in_q[i-1];
   end
+  // Q for the 1-D table and the formula unit's own copy (its squarer alone on it): keep on both,
+  // or Yosys merges the two identical registers back into one driving both units
+  (* keep *) always_ff @(posedge clk_i) qc1_q  <= GQW'(q_q >>> (QF - tu_formats_pkg::GaussQF));
+  (* keep *) always_ff @(posedge clk_i) qcf1_q <= GQW'(q_q >>> (QF - tu_formats_pkg::GaussQF));
   // the nearest-texel read (WNear) bypasses the delay line
   assign tex_req_o  = 1'b1;
   assign tex_addr_o = near_q ? addr : clip_q ? addr_q[AddrDly-1] : addr_q[3];
@@ -229,7 +232,7 @@ module tu_ewa_walk #(
   logic [tu_formats_pkg::WtabEntryW-1:0] w_1, w_1_q, w_2;
   logic [5:0] hs_unused;
   tu_gauss_weight u_wf (
-    .clk_i, .rst_ni, .in_valid_i(v1_q), .in_ready_o(hs_unused[0]), .q_i(qc1_q),
+    .clk_i, .rst_ni, .in_valid_i(v1_q), .in_ready_o(hs_unused[0]), .q_i(qcf1_q),
     .out_valid_o(hs_unused[1]), .out_ready_i(1'b1), .w_o(w_f));
   tu_weight_table_1d #(.Log2N(8)) u_w1 (
     .clk_i, .rst_ni, .in_valid_i(v1_q), .in_ready_o(hs_unused[2]), .q_i(qc1_q),

@@ -454,14 +454,17 @@ module tu_ewa_walk_lanes #(
     m_d = (p_d >= 7'(NrW - 1)) ? NrW'(n0ws_q >> (p_d - 7'(NrW - 1))) : NrW'(n0ws_q << (7'(NrW - 1) - p_d));
   end
   localparam int NdW = 1 + NW + 32 + 1 + 1;  // v ins near guard nowt
-  localparam int NaW = 7 + 4 * AcW;           // p acc: into tu_ewa_norm_tail at N3
+  localparam int NaW = 4 * AcW;               // acc: into tu_ewa_norm_tail at N3 (p at N2)
   logic [MW-1:0]  mant_q;
   logic [NdW-1:0] n1_q, n5;
   logic [NaW-1:0] na1_q, na3;
+  logic [6:0]     np1_q, np2_q;
   always_ff @(posedge clk_i) begin
     mant_q <= MW'(m_d) << (MW - NrW);  // recip::eval: the msb of a positive code at bit MW-1
     n1_q   <= {n0v_q, n0ins_q, n0near_q, n0g_q, n0ws_q == '0};
-    na1_q  <= {p_d, n0acc_q[3], n0acc_q[2], n0acc_q[1], n0acc_q[0]};
+    na1_q  <= {n0acc_q[3], n0acc_q[2], n0acc_q[1], n0acc_q[0]};
+    np1_q  <= p_d;
+    np2_q  <= np1_q;
   end
   // N1..N3 the reciprocal core up to its unrounded y (N4); N3 the sums pre-shifted, N4 the
   // products as carry-save pairs, N5 their carry chain, shift and saturation (tu_ewa_norm_tail)
@@ -473,7 +476,7 @@ module tu_ewa_walk_lanes #(
   logic [NW-1:0]  ins5;
   logic [31:0]    near5, rgba_d;
   assign {v5n, ins5, near5, g5n, nowt5} = n5;
-  tu_ewa_norm_tail u_tail (.clk_i, .p_i(na3[NaW-1 -: 7]), .acc_i(na3[4*AcW-1:0]), .y_i(y4), .rgba_o(rgba_d));
+  tu_ewa_norm_tail u_tail (.clk_i, .p_i(np2_q), .acc_i(na3), .y_i(y4), .rgba_o(rgba_d));
 
   // ---- output: results in order (OutDepth credits: neither FIFO overflows)
   localparam int OfW = 32 + NW + 1;

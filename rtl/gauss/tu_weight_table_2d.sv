@@ -3,9 +3,13 @@
 // (cmodel/blocks/gauss/weight.cpp, docs/blocks/gaussian.md); Fb = GaussXiF - Log2N:
 //   stage 1: x = |xi|, y = |eta|; i = x >> Fb, j = y >> Fb, fx, fy = low Fb bits;
 //            ROM row {j, i} -> the cell corners e00, e10, e01, e11                 (registered)
-//   stage 2: p0 = (e10 - e00) * fx, p1 = (e11 - e01) * fx (signed)                  (registered)
-//   stage 3: r0 = e00 + floor((p0 + 2^(Fb-1)) / 2^Fb), r1 likewise; p2 = (r1 - r0) * fy (registered)
-//   stage 4: w = r0 + floor((p2 + 2^(Fb-1)) / 2^Fb), 0 if x > 1 or y > 1            (registered)
+//   stage 2: p0 = (e10 - e00) * fx + 2^(Fb-1), p1 = (e11 - e01) * fx + 2^(Fb-1) (signed; the
+//            rounding term inside the multiply-add), d = e01 - e00                   (registered)
+//   stage 3: r0 = e00 + floor(p0 / 2^Fb) (r1 = e01 + floor(p1 / 2^Fb) likewise);
+//            p2 = (r1 - r0) * fy + 2^(Fb-1) with r1 - r0 = d + floor(p1 / 2^Fb) - floor(p0 / 2^Fb)
+//            (one three-input add before the multiply-add, not r0, r1 and their difference in
+//            series; r0, r1 are lerps between two entries, so in [0, 2^EW): no wrap) (registered)
+//   stage 4: w = r0 + floor(p2 / 2^Fb), 0 if x > 1 or y > 1                         (registered)
 // The ROM tu_wtab2d_rom is generated from the C model's table (`texunit gen-rtl`).
 `include "tu_assert.svh"
 module tu_weight_table_2d #(
@@ -40,7 +44,7 @@ module tu_weight_table_2d #(
   logic [XW-1:0] x, y;
   logic          out_d, out_q1, out_q2, out_q3;
   logic [EW-1:0] e00_rom, e10_rom, e01_rom, e11_rom;
-  logic [EW-1:0] e00_q1, e10_q1, e01_q1, e11_q1, e00_q2, e01_q2, r0_q3;
+  logic [EW-1:0] e00_q1, e10_q1, e01_q1, e11_q1, e00_q2, r0_q3;
   logic [Fb-1:0] fx_q1, fy_q1, fy_q2;
   assign x     = xi_i[XW-1]  ? XW'(-xi_i)  : xi_i;
   assign y     = eta_i[XW-1] ? XW'(-eta_i) : eta_i;
@@ -50,37 +54,37 @@ module tu_weight_table_2d #(
     .e00_o(e00_rom), .e10_o(e10_rom), .e01_o(e01_rom), .e11_o(e11_rom)
   );
 
-  // ---- stage 2: the two x-lerp multiplies
-  logic signed [DW-1:0] dx0, dx1;
+  // ---- stage 2: the two x-lerp multiply-adds (with the rounding term), the y difference
+  logic signed [DW-1:0] dx0, dx1, dy0_d, dy0_q2;
   logic signed [PW-1:0] p0_d, p1_d, p0_q2, p1_q2;
-  assign dx0  = $signed({1'b0, e10_q1}) - $signed({1'b0, e00_q1});
-  assign dx1  = $signed({1'b0, e11_q1}) - $signed({1'b0, e01_q1});
-  assign p0_d = PW'(dx0) * $signed({1'b0, fx_q1});
-  assign p1_d = PW'(dx1) * $signed({1'b0, fx_q1});
+  assign dx0   = $signed({1'b0, e10_q1}) - $signed({1'b0, e00_q1});
+  assign dx1   = $signed({1'b0, e11_q1}) - $signed({1'b0, e01_q1});
+  assign dy0_d = $signed({1'b0, e01_q1}) - $signed({1'b0, e00_q1});
+  assign p0_d  = PW'(dx0) * $signed({1'b0, fx_q1}) + PW'(1 << (Fb - 1));
+  assign p1_d  = PW'(dx1) * $signed({1'b0, fx_q1}) + PW'(1 << (Fb - 1));
 
   // ---- stage 3: round the x-lerps, y-lerp multiply
-  logic [EW-1:0]        r0_d, r1_d;
+  logic [EW-1:0]        r0_d;
   logic signed [DW-1:0] dy;
   logic signed [PW-1:0] p2_d, p2_q3;
-  // the C model's lerp: e + floor((p + 2^(Fb-1)) / 2^Fb)
+  // the C model's lerp: e + floor((p + 2^(Fb-1)) / 2^Fb), the 2^(Fb-1) already in p
   logic signed [PW-1:0] rnd0, rnd1, rnd2;
-  assign rnd0 = (p0_q2 + PW'(1 << (Fb - 1))) >>> Fb;
-  assign rnd1 = (p1_q2 + PW'(1 << (Fb - 1))) >>> Fb;
+  assign rnd0 = p0_q2 >>> Fb;
+  assign rnd1 = p1_q2 >>> Fb;
   assign r0_d = EW'(PW'($signed({1'b0, e00_q2})) + rnd0);
-  assign r1_d = EW'(PW'($signed({1'b0, e01_q2})) + rnd1);
-  assign dy   = $signed({1'b0, r1_d}) - $signed({1'b0, r0_d});
-  assign p2_d = PW'(dy) * $signed({1'b0, fy_q2});
+  assign dy   = DW'(PW'(dy0_q2) + rnd1 - rnd0);  // r1 - r0
+  assign p2_d = PW'(dy) * $signed({1'b0, fy_q2}) + PW'(1 << (Fb - 1));
 
   // ---- stage 4: round the y-lerp, zero outside [-1, 1]^2
   logic [EW-1:0] w_d, w_q4;
-  assign rnd2 = (p2_q3 + PW'(1 << (Fb - 1))) >>> Fb;
+  assign rnd2 = p2_q3 >>> Fb;
   assign w_d  = out_q3 ? '0 : EW'(PW'($signed({1'b0, r0_q3})) + rnd2);
 
   always_ff @(posedge clk_i) begin
     if (en) begin
       e00_q1 <= e00_rom;  e10_q1 <= e10_rom;  e01_q1 <= e01_rom;  e11_q1 <= e11_rom;
       fx_q1  <= x[Fb-1:0];  fy_q1 <= y[Fb-1:0];  out_q1 <= out_d;
-      e00_q2 <= e00_q1;  e01_q2 <= e01_q1;  p0_q2 <= p0_d;  p1_q2 <= p1_d;
+      e00_q2 <= e00_q1;  dy0_q2 <= dy0_d;  p0_q2 <= p0_d;  p1_q2 <= p1_d;
       fy_q2  <= fy_q1;   out_q2 <= out_q1;
       r0_q3  <= r0_d;    p2_q3 <= p2_d;   out_q3 <= out_q2;
       w_q4   <= w_d;

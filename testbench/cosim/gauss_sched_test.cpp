@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "cosim.hpp"
+#include "cosim_checks.hpp"
 #include "gauss/schemes.hpp"
 
 namespace {
@@ -24,5 +25,31 @@ TEST(GaussSched, PredictionEqualsVerilatorMeasurement) {
     ++checked;
   }
   EXPECT_EQ(checked, 7);
+}
+
+// tu_gauss_weight's first stage forms t^2 = (2^15 - q)^2 as the multiply-add q^2 - 2^16 q + 2^30
+// (no subtractor in front of the multiplier): every one of the 2^16 Q codes through the RTL, with
+// 30% stalls, against the file's and the live C model's w (gauss::weight: t = 1 - Q/2, t^2).
+TEST(GaussWeightRtl, EveryQCodeEqualsCModel) {
+  const auto& b = blocks::find("gauss_weight");
+  vec::VectorFile vf = blocks::generate(b, "golden", 0, 1);
+  const auto in = vf.indices(vec::Role::In);
+  const auto out = vf.indices(vec::Role::Out);
+  const auto ref = vf.indices(vec::Role::Ref);
+  ASSERT_EQ(in.size(), 1u);
+  ASSERT_EQ(out.size(), 1u);
+  vf.rows.clear();
+  for (uint64_t q = 0; q < (uint64_t(1) << fmt::kGaussQW); ++q) {
+    blocks::Row row(vf.fields.size());
+    const blocks::Row x{q};
+    row[static_cast<size_t>(in[0])] = q;
+    row[static_cast<size_t>(out[0])] = b.model(x)[0];
+    for (size_t k = 0; k < ref.size(); ++k) row[static_cast<size_t>(ref[k])] = b.ref(x)[k];
+    vf.rows.push_back(row);
+  }
+  const auto rep = cosim::run(vf, cosim::checks::with_stalls(0.3));
+  cosim::checks::expect_stream_clean(rep);
+  EXPECT_EQ(rep.vectors, uint64_t(1) << fmt::kGaussQW);
+  EXPECT_TRUE(rep.ok()) << rep.json();
 }
 }  // namespace
