@@ -7,6 +7,8 @@
 //   stage 1: ROM lookup (c0, c1, c2) by the top RecipIdxW fraction bits, dx = the rest
 //   stage 2: s  = c1 + floor(c2 * dx)      (t1 truncated to RecipT1F fraction bits)
 //   stage 3: y  = c0 + floor(s * dx)       (t2 truncated to RecipT2F fraction bits)
+`include "tu_assert.svh"
+
 module tu_recip_core_y
 (
   input  logic                                            clk_i,
@@ -44,13 +46,22 @@ module tu_recip_core_y
   assign t1  = tu_formats_pkg::RecipT1W'(p1 >> (P1F - tu_formats_pkg::RecipT1F));
   assign s_d = c1_q1 + $signed({{(tu_formats_pkg::RecipSW - tu_formats_pkg::RecipT1W){1'b0}}, t1});
 
-  // Stage 3: y = c0 + t2
+  // Stage 3: y = c0 + t2 as one multiply-add, c0 2^T2Sh + s dx, whose top YW bits are y:
+  // c0 2^T2Sh has no bits below T2Sh, so floor((c0 2^T2Sh + p2) / 2^T2Sh) = c0 + floor(p2 / 2^T2Sh)
+  // = c0 + t2 (t2 keeps every bit of p2 >>> T2Sh: P2W - T2Sh = RecipT2W, checked below).
+  // Synthesis (maccmap) then builds one carry-save tree and one carry chain, where the product
+  // truncated and then added kept two chains: tu_reciprocal 163.3 -> 173.9 MHz (critical path
+  // now stage 2), tu_persp_klane 147.1 MHz before (docs/area-timing.md).
+  localparam int T2Sh = P2F - tu_formats_pkg::RecipT2F;
+  localparam int XW   = YW + T2Sh;
   logic signed [P2W-1:0]       p2;
-  logic signed [tu_formats_pkg::RecipT2W-1:0]  t2;
+  logic signed [XW-1:0]        x3;
   logic signed [YW-1:0]        y_d, y_q3;
   assign p2  = P2W'(s_q2) * $signed({1'b0, dx_q2});
-  assign t2  = tu_formats_pkg::RecipT2W'(p2 >>> (P2F - tu_formats_pkg::RecipT2F));
-  assign y_d = $signed({2'b00, c0_q2}) + YW'(t2);
+  assign x3  = $signed({2'b00, c0_q2, T2Sh'(0)}) + XW'(p2);
+  assign y_d = x3[XW-1:T2Sh];
+  `TU_ASSERT_PARAM(g_t2_whole, P2W - T2Sh == tu_formats_pkg::RecipT2W,
+                   "t2 = p2 >>> T2Sh must keep every bit of p2 for the fused c0 add")
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -66,6 +77,10 @@ module tu_recip_core_y
   end
 
   assign y_o = y_q3;
+
+  // The fraction below y: its carry is all the sum needs from it.
+  logic unused_low;
+  assign unused_low = ^x3[T2Sh-1:0];
 
   // The leading one of M is implicit in the table index.
   logic unused_msb;

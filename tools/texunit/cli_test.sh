@@ -48,6 +48,24 @@ case $case in
     sed -i 's/localparam int RecipIdxW = [0-9]*;/localparam int RecipIdxW = 9;/' "$pkg"
     [ "$(key tu_reciprocal yosys)" != "$k_rec" ] || fail "a changed width kept tu_reciprocal's key"
     ;;
+  stdcell_concurrent)
+    # Two `texunit stdcell` runs at once on one cache keep each other's entries (each save re-reads
+    # the file under a lock and writes only its own top). A stand-in flow script (0.3 s, fixed
+    # figures) replaces the osu018 flow; the tops, files and keys are the real ones.
+    mkdir -p "$tmp/r/scripts"; cp -r rtl "$tmp/r/"
+    printf '#!/bin/sh\nsleep 0.3\necho "{\\"top\\": \\"$1\\", \\"area_um2\\": 1.0, \\"period_ns\\": 5.0, \\"path_from\\": \\"a\\", \\"path_to\\": \\"b\\"}"\n' \
+      > "$tmp/r/scripts/stdcell_flow.sh"
+    chmod +x "$tmp/r/scripts/stdcell_flow.sh"
+    c="$tmp/cache.json"
+    "$tu" stdcell tu_reciprocal tu_persp tu_clip_p1 tu_nearest --root "$tmp/r" --cache "$c" --netlists "$tmp/n" 2>/dev/null &
+    a=$!
+    "$tu" stdcell tu_bilinear tu_gauss_weight tu_pom_march tu_texel_addr --root "$tmp/r" --cache "$c" --netlists "$tmp/n" 2>/dev/null &
+    b=$!
+    wait $a || fail "first stdcell run failed"
+    wait $b || fail "second stdcell run failed"
+    [ "$(val "$c" "len(d)")" = 8 ] || fail "entries lost by two runs at once: $(val "$c" "sorted(d)")"
+    [ "$(val "$c" "d['tu_persp']['hash'] == '$("$tu" rtl-files tu_persp --root "$tmp/r" --key stdcell)'")" = True ] || fail "entry key"
+    ;;
   report_bad_block)
     if "$tu" report --blocks recip --no-yosys --json "$tmp/r.json" 2>"$tmp/err"; then fail "accepted an unknown block"; fi
     grep -q "unknown block 'recip' (known: reciprocal, persp" "$tmp/err" || fail "message: $(cat "$tmp/err")"

@@ -18,10 +18,15 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include "block.hpp"
 #include "cosim.hpp"
@@ -228,11 +233,29 @@ struct AreaCache {
       throw std::runtime_error(path + ": not a Yosys cache (" + e.what() + "); delete it to rebuild");
     }
   }
-  void save() const {
+  // Writes entry `top` to the file: under an exclusive lock (PATH.lock), re-reads the file and
+  // replaces only that entry, so two runs at once (two background `texunit stdcell` jobs, or
+  // stdcell beside `report --yosys-cache`) keep each other's results; saving the whole in-memory
+  // cache would drop what the other run measured since this one started.
+  void save_entry(const std::string& top) const {
     if (path.empty()) return;
     if (fs::path(path).has_parent_path()) fs::create_directories(fs::path(path).parent_path());
-    std::ofstream(path + ".tmp") << j.dump(1) << "\n";
-    fs::rename(path + ".tmp", path);
+    const std::string lock = path + ".lock";
+    const int fd = ::open(lock.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+    if (fd < 0 || ::flock(fd, LOCK_EX) != 0) {
+      if (fd >= 0) ::close(fd);
+      throw std::runtime_error(lock + ": cannot lock the cache");
+    }
+    const std::unique_ptr<int, void (*)(int*)> unlock(new int(fd), [](int* f) {
+      ::flock(*f, LOCK_UN);
+      ::close(*f);
+      delete f;
+    });
+    json disk = AreaCache(path).j;
+    disk[top] = j.at(top);
+    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+    std::ofstream(tmp) << disk.dump(1) << "\n";
+    fs::rename(tmp, path);
   }
 };
 
@@ -303,7 +326,7 @@ void area(Row& r, const Options& opt, AreaCache& cache) {
     std::cerr << "yosys: synthesising " << r.rtl_top << " (" << files.size() << " files)\n";
     e = run_flow(opt.root + "/scripts/yosys_area.sh " + r.rtl_top + " " + file_list(files), "Yosys on " + r.rtl_top);
     e["hash"] = key;
-    cache.save();
+    cache.save_entry(r.rtl_top);
   }
   r.cells = e.at("cells").get<int64_t>();
   r.flip_flops = e.at("flip_flops").get<int64_t>();
@@ -727,7 +750,7 @@ int stdcell(const std::vector<std::string>& tops, const std::string& root, const
                  "the standard-cell flow on " + top);
     e["hash"] = key;
     e["flow_seconds"] = std::round(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    cache.save();  // after every top: a long background run keeps what it measured
+    cache.save_entry(top);  // after every top: a long background run keeps what it measured
     std::cerr << "stdcell: " << top << " " << e.at("area_um2") << " um2, " << e.at("period_ns") << " ns, "
               << e.at("path_from").get<std::string>() << " -> " << e.at("path_to").get<std::string>() << "\n";
   }
