@@ -8,7 +8,8 @@
 //   clock B (y_i):         a_c R + 2^(RecipOutF+K-1) as a carry-save pair: rows a_c R_hi[j] 2^j,
 //                          a_c y[5] (R = R_hi + y[5], R_hi = floor(y / 2^6): the core's rounding
 //                          without its carry chain; no saturation, 2^23 <= R <= 2^24) and the
-//                          rounding term, 3:2 compressor levels (rtl/common/tu_csa.svh, as in tu_persp_pixel)
+//                          rounding term, 3:2 compressor levels (rtl/common/tu_csa.svh, as in
+//                          tu_persp_pixel)
 //   clock C (rgba_o):      x = sum + carry (the one carry chain), x >> (RecipOutF + K) (a fixed
 //                          shift: a_c is pre-shifted), saturate at 255; combinational, the caller
 //                          registers it
@@ -33,7 +34,7 @@ module tu_ewa_norm_tail #(
   localparam int RndShift = tu_formats_pkg::RecipC0F - tu_formats_pkg::RecipOutF;
   localparam int Sh   = tu_formats_pkg::RecipOutF + K;  // fixed shift
   localparam int SW   = AW + RW;                        // a R + 2^(Sh-1) < 2^(AW+RW-1) + 2^(Sh-1)
-  
+
   // ---- clock B: carry-save pair of a R + 2^(Sh-1)
   // tu_csa.svh: the rows and the compressor tree, shared with tu_persp_pixel.
   localparam int CsaW = SW;
