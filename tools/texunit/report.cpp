@@ -18,7 +18,6 @@
 #include <functional>
 #include <iostream>
 #include <map>
-#include <memory>
 #include <set>
 #include <sstream>
 
@@ -246,11 +245,13 @@ struct AreaCache {
       if (fd >= 0) ::close(fd);
       throw std::runtime_error(lock + ": cannot lock the cache");
     }
-    const std::unique_ptr<int, void (*)(int*)> unlock(new int(fd), [](int* f) {
-      ::flock(*f, LOCK_UN);
-      ::close(*f);
-      delete f;
-    });
+    struct Held {  // unlocks and closes on every way out, a throw included
+      int fd;
+      ~Held() {
+        ::flock(fd, LOCK_UN);
+        ::close(fd);
+      }
+    } held{fd};
     json disk = AreaCache(path).j;
     disk[top] = j.at(top);
     const std::string tmp = path + ".tmp." + std::to_string(::getpid());
