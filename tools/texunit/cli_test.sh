@@ -427,7 +427,7 @@ sys.exit(0 if len(a) > 3 and t(a) == t(b) else 1)
 PY
     grep -q "^## ellipse" "$tmp/m.md" && grep -q "texunit merge. of 4" "$tmp/m.md" || fail "merged markdown"
     if "$tu" merge "$tmp"/r0.json "$tmp"/r0.json --json "$tmp/x.json" 2>"$tmp/err"; then fail "merged a report shard twice"; fi
-    grep -q "block 'reciprocal' is in shard files 1 and 2" "$tmp/err" && [ ! -e "$tmp/x.json" ] || fail "message: $(cat "$tmp/err")"
+    grep -q "r0.json: shard 0/4 given twice" "$tmp/err" && [ ! -e "$tmp/x.json" ] || fail "message: $(cat "$tmp/err")"
     ;;
   *) fail "unknown case" ;;
 esac
