@@ -229,28 +229,20 @@ PY
     expect 2 "b1.json: shard 1/2 is of another run: seed 6, shard 0 (.*a0.json) has 5" "$tu" merge "$tmp"/a0.json "$tmp"/b1.json --json "$tmp/m.json"
     expect 2 "f6_1.json: shard 1/2 is of another run: seed 6" "$tu" merge "$tmp"/f5_0.json "$tmp"/f6_1.json --json "$tmp/m.json"
     expect 2 "a1.json: shard 1/2 is of another run: file_hash '[0-9a-f]*', shard 0 (.*f5_0.json) has ''" "$tu" merge "$tmp"/f5_0.json "$tmp"/a1.json --json "$tmp/m.json"
-    # Hand-edited shards: every field is read with its type, a count is a non-negative integer.
-    edit() {  # edit OUT PYTHON-EXPRESSION-ON-TEXT-t
-      python3 -c "import sys; t = open('$tmp/a1.json').read(); open('$tmp/' + sys.argv[1], 'w').write($2)" "$1"
+    # Hand-edited shard 1: every field is read with its type, a count is a non-negative integer.
+    refused() {  # refused NAME FROM TO PATTERN: shard 1 with FROM replaced by TO, merged with shard 0
+      python3 -c "import sys; t = open('$tmp/a1.json').read(); assert sys.argv[2] in t; open('$tmp/' + sys.argv[1], 'w').write(t.replace(sys.argv[2], sys.argv[3]))" "$1" "$2" "$3"
+      expect 2 "$1: $4" "$tu" merge "$tmp"/a0.json "$tmp/$1" --json "$tmp/m.json"
     }
-    edit neg.json 't.replace("\"vectors\": 300", "\"vectors\": -5")'
-    expect 2 'neg.json: "vectors": expected a non-negative integer, not -5' "$tu" merge "$tmp"/a0.json "$tmp"/neg.json --json "$tmp/m.json"
-    edit mis.json 't.replace("\"mismatches\": 0", "\"mismatches\": -1")'
-    expect 2 'mis.json: "mismatches": expected a non-negative integer, not -1' "$tu" merge "$tmp"/a0.json "$tmp"/mis.json --json "$tmp/m.json"
-    edit frac.json 't.replace("\"vectors\": 300", "\"vectors\": 1.7")'
-    expect 2 'frac.json: "vectors": expected a non-negative integer, not 1.7' "$tu" merge "$tmp"/a0.json "$tmp"/frac.json --json "$tmp/m.json"
-    edit str.json 't.replace("\"vectors\": 300", "\"vectors\": \"300\"")'
-    expect 2 'str.json: "vectors": expected a non-negative integer, not "300"' "$tu" merge "$tmp"/a0.json "$tmp"/str.json --json "$tmp/m.json"
-    edit err.json 't.replace("\"max_abs_err\": ", "\"max_abs_err\": \"x\", \"was\": ")'
-    expect 2 'err.json: "max_abs_err": expected a number, not "x"' "$tu" merge "$tmp"/a0.json "$tmp"/err.json --json "$tmp/m.json"
-    edit dup.json 't.replace("\"vectors\": 300", "\"vectors\": 300, \"vectors\": 600")'
-    expect 2 'dup.json: key "vectors" appears twice in one object' "$tu" merge "$tmp"/a0.json "$tmp"/dup.json --json "$tmp/m.json"
-    edit sh.json 't.replace("\"shard\": \"1/2\"", "\"shard\": \"7/3\"")'
-    expect 2 "sh.json: \"shard\": shard '7/3': need 0 <= K < N" "$tu" merge "$tmp"/a0.json "$tmp"/sh.json --json "$tmp/m.json"
-    edit gap.json 't.replace("\"first_vector\": 300", "\"first_vector\": 301")'
-    expect 2 "gap.json: shard 1/2 starts at vector 301, the shards before it end at 300 (a gap or an overlap)" "$tu" merge "$tmp"/a0.json "$tmp"/gap.json --json "$tmp/m.json"
-    edit noid.json 't.replace(", \"set\": \"random\"", "")'
-    expect 2 'noid.json: no "set"' "$tu" merge "$tmp"/a0.json "$tmp"/noid.json --json "$tmp/m.json"
+    refused neg.json '"vectors": 300' '"vectors": -5' '"vectors": expected a non-negative integer, not -5'
+    refused mis.json '"mismatches": 0' '"mismatches": -1' '"mismatches": expected a non-negative integer, not -1'
+    refused frac.json '"vectors": 300' '"vectors": 1.7' '"vectors": expected a non-negative integer, not 1.7'
+    refused str.json '"vectors": 300' '"vectors": "300"' '"vectors": expected a non-negative integer, not "300"'
+    refused err.json '"max_abs_err": ' '"max_abs_err": "x", "was": ' '"max_abs_err": expected a number, not "x"'
+    refused dup.json '"vectors": 300' '"vectors": 300, "vectors": 600' 'key "vectors" appears twice in one object'
+    refused sh.json '"shard": "1/2"' '"shard": "7/3"' "\"shard\": shard '7/3': need 0 <= K < N"
+    refused gap.json '"first_vector": 300' '"first_vector": 301' "shard 1/2 starts at vector 301, the shards before it end at 300 (a gap or an overlap)"
+    refused noid.json ', "set": "random"' '' 'no "set"'
     # Report shards: element 0 is the identity; a missing shard, another --count, a malformed row.
     for k in 0 1 2; do
       "$tu" report --blocks reciprocal,persp,ellipse --count 50 --no-yosys --shard $k/3 --json "$tmp/r$k.json" >/dev/null 2>&1
