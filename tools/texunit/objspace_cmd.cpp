@@ -1,4 +1,4 @@
-// `texunit objspace-compare SCENE|default [--ss N]`: the object-space pipeline (seed 003 §5)
+// `texunit objspace-compare SCENE|default [--ss N]`: the object-space pipeline (docs/methods/objspace.md)
 // against the screen-space pipeline (B1 -> B2 -> trilinear / EWA) on one scene, texture path
 // (relief off: the object-space pipeline has no relief step): PSNR against the ground truth,
 // samples and texels per pixel, holes, overlaps and clocks per pixel (docs/blocks/objspace.md).
