@@ -192,7 +192,7 @@ int cmd_relief_quality(const tu::pom::QualityParams& p) {
   return 0;
 }
 
-// relief-quality --afvis SCENE (docs/blocks/afvis.md §4): plain EWA and each visibility rule against
+// relief-quality --afvis SCENE (docs/blocks/afvis-appendix.md §4): plain EWA and each visibility rule against
 // the truth on the scene's relief pixels, per height map and camera height. The height PNGs go to a
 // private temporary directory, removed afterwards.
 int cmd_afvis_quality(const std::string& scene_arg, tu::afvis::QualityParams p, const std::string& plot_dir) {
