@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The documentation reads as a reference for someone who has only this repository:
-#  - no history of the work ("session N", "issue N") and no path outside the repository ("shared/")
+#  - no history of the work ("session", "issue N") and no path outside the repository ("shared/")
 #    in docs/ or README.md;
 #  - no block page (docs/blocks/*.md, appendix pages excepted) over 2,500 words, README.md <= 1,000;
 #  - every relative link in docs/ and README.md names a file that exists.
@@ -43,7 +43,7 @@ mapfile -t pages < <(find docs -name '*.md' | sort; echo README.md)
 
 # 1. History and outside paths.
 while IFS= read -r hit; do say "history or outside path: $hit"; done < <(
-  grep -HnoiE '.{0,30}(\bsessions? [0-9]|\bissues? #?[0-9]|shared/).{0,30}' "${pages[@]}")
+  grep -HnoiE '.{0,30}(\bsessions?\b|\bissues? #?[0-9]|shared/).{0,30}' "${pages[@]}")
 
 # 2. Word limits.
 for f in docs/blocks/*.md; do
