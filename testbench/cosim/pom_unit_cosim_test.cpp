@@ -17,7 +17,7 @@ class PomStageCosim : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PomStageCosim, GoldenStiffRandomWithStalls) {
   const auto& b = blocks::find(GetParam());
-  if (GetParam() == "pom_unit") {  // data-dependent latency; error vs march_ref: §8 of relief.md
+  if (GetParam() == "pom_unit") {  // data-dependent latency; error vs march_ref: §8 of docs/blocks/relief-appendix.md
     cosim::checks::for_each_set_with_stalls(b, [](const vec::VectorFile&, const cosim::Report&) {});
     return;
   }
