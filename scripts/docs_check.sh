@@ -54,7 +54,7 @@ done
 n=$(wc -w < README.md)
 [ "$n" -le 1000 ] || say "README.md: $n words (<= 1000)"
 
-# 3. Relative links: [text](target) and [text]: target, anchors and URLs aside; code spans ignored.
+# 3. Relative links [text](target), anchors and URLs aside; code spans ignored.
 for f in "${pages[@]}"; do
   dir=$(dirname "$f")
   while IFS= read -r target; do
