@@ -139,7 +139,7 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
     texs.push_back(scene::build_texture(s, s.materials.at(s.objects[o].material).texture));
     coefs.push_back(setup_ref(s, o, texs.back().levels[0].width, texs.back().levels[0].height));
   }
-  // Per object with relief: depth / complexity maps (docs/blocks/relief.md §9).
+  // Per object with relief: depth / complexity maps (docs/blocks/relief-appendix.md §9).
   std::vector<std::optional<relief::Maps>> reliefs;
   for (const auto& o : s.objects)
     reliefs.push_back(s.materials.at(o.material).relief ? std::optional(relief::make_maps(s, o.material))

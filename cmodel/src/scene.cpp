@@ -160,6 +160,15 @@ class Node {
     if (!has(k) && def) return used_.insert(k), *def;
     return numbers(raw(k), k, n, max_abs);
   }
+  // A fixed-length array of numbers, each in [lo, hi] (colours: the message names the real bounds).
+  std::vector<double> vec_in(const std::string& k, size_t n, double lo, double hi,
+                             std::optional<std::vector<double>> def = {}) {
+    const auto out = vec(k, n, HUGE_VAL, std::move(def));
+    for (size_t i = 0; i < n; ++i)
+      if (!(out[i] >= lo && out[i] <= hi))
+        fail_at(k + "/" + std::to_string(i), "value " + fmt(out[i]) + " is out of range [" + fmt(lo) + ", " + fmt(hi) + "]");
+    return out;
+  }
   // The same for an array element `json_at` of field k (k names it in messages, e.g. "uv/2").
   std::vector<double> numbers(const json& v, const std::string& k, size_t n, double max_abs) const {
     if (!v.is_array() || v.size() != n)
@@ -237,8 +246,14 @@ TextureSpec parse_texture(Node n, const std::string& name, const std::string& ba
     const std::filesystem::path fp = std::filesystem::path(p).is_absolute()
                                          ? std::filesystem::path(p)
                                          : std::filesystem::path(base_dir) / p;
-    if (!std::filesystem::is_regular_file(fp))
-      n.fail_at("png", "file '" + fp.string() + "' does not exist");
+    using std::filesystem::file_type;
+    std::error_code ec;
+    const file_type ft = std::filesystem::status(fp, ec).type();
+    if (ft == file_type::not_found) n.fail_at("png", "file '" + fp.string() + "' does not exist");
+    if (ft == file_type::none) n.fail_at("png", "file '" + fp.string() + "' cannot be accessed (" + ec.message() + ")");
+    if (ft == file_type::directory) n.fail_at("png", "'" + fp.string() + "' is a directory, not a PNG file");
+    if (ft != file_type::regular)  // a FIFO or a device: no image, and maybe no end
+      n.fail_at("png", "'" + fp.string() + "' is not a regular file (a FIFO, a device or a socket), not a PNG file");
     t.png = fp.string();
   }
   // `wrap` sets both axes; `wrap_u` / `wrap_v` override one.
@@ -276,10 +291,10 @@ Procedural parse_procedural(Node p) {
   const auto kind = p.str("kind", {}, {"fbm", "smoke", "water"});
   pr.kind = kind == "smoke" ? ProceduralKind::Smoke : kind == "water" ? ProceduralKind::Water : ProceduralKind::Fbm;
   pr.octaves = p.integer("octaves", 1, fmt::kNoiseOctaves, fmt::kNoiseOctaves);
-  // f / texture width < 256 keeps the frequency code in u32.24 (docs/blocks/noise.md §5).
+  // f / texture width < 256 keeps the frequency code in u32.24 (docs/blocks/noise-appendix.md §5).
   pr.frequency = p.num("frequency", 1.0 / 256, 128, 8.0);
   pr.seed = p.integer("seed", 0, 255, 0);
-  pr.time = p.num("time", -1e6, 1e6, 0.0);
+  pr.time = p.num("time", -kMaxTime, kMaxTime, 0.0);
   pr.speed = p.num("speed", 0, 256, pr.kind == ProceduralKind::Smoke ? 1.0 : 0.0);
   pr.footprint_limit = p.has("footprint_limit") ? p.boolean("footprint_limit") : true;
   if (pr.kind == ProceduralKind::Smoke) {
@@ -296,9 +311,7 @@ Procedural parse_procedural(Node p) {
   }
   for (const char* k : {"color0", "color1"}) {
     if (!p.has(k)) continue;
-    const auto c = p.vec(k, 3, 255);
-    for (size_t i = 0; i < 3; ++i)
-      if (c[i] < 0) p.fail_at(std::string(k) + "/" + std::to_string(i), "value is out of range [0, 255]");
+    const auto c = p.vec_in(k, 3, 0, 255);
     auto& dst = std::string(k) == "color0" ? pr.color0 : pr.color1;
     for (size_t i = 0; i < 3; ++i) dst[i] = c[i];
   }
@@ -346,6 +359,9 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
     rel.layers = r.integer("layers", 1, 256, 32);
     rel.map_layers = r.integer("map_layers", 1, 255, 16);
     if (r.has("af_visibility")) rel.af_visibility = r.boolean("af_visibility");
+    if (rel.af_visibility && m.filter != Filter::Ewa)  // it selects texels of the EWA footprint
+      r.fail_at("af_visibility", std::string("needs filter ewa (the visibility rule keeps EWA footprint texels); the "
+                                             "material's filter is ") + to_string(m.filter));
     r.finish();
     m.relief = rel;
   }
@@ -355,11 +371,8 @@ Material parse_material(Node n, const std::string& name, const Scene& s) {
     Specular spec;
     spec.model = sp.str("model", std::string("auto"), {"auto", "blinn", "schlick", "msh", "dsh", "scos2", "st16", "qr"});
     spec.n = sp.integer("n", 1, 1000, 32);
-    const auto c = sp.vec("color", 3, 2, {{1, 1, 1}});
-    for (int k = 0; k < 3; ++k) {
-      if (c[static_cast<size_t>(k)] < 0) sp.fail_at("color/" + std::to_string(k), "is negative");
-      spec.color[k] = c[static_cast<size_t>(k)];
-    }
+    const auto c = sp.vec_in("color", 3, 0, 2, {{1, 1, 1}});
+    for (int k = 0; k < 3; ++k) spec.color[k] = c[static_cast<size_t>(k)];
     sp.finish();
     m.specular = spec;
   }
@@ -472,11 +485,8 @@ Scene parse(const std::string& text, const std::string& source, const std::strin
       const auto p = light.positional ? l.vec("position", 3, kMaxCoord) : l.vec("direction", 3, kMaxCoord);
       if (!light.positional && !(std::hypot(p[0], p[1], p[2]) > 0)) l.fail_at("direction", "is the zero vector");
       for (int k = 0; k < 3; ++k) (light.positional ? light.position : light.direction)[k] = p[static_cast<size_t>(k)];
-      const auto c = l.vec("color", 3, 2, {{1, 1, 1}});
-      for (int k = 0; k < 3; ++k) {
-        if (c[static_cast<size_t>(k)] < 0) l.fail_at("color/" + std::to_string(k), "is negative");
-        light.color[k] = c[static_cast<size_t>(k)];
-      }
+      const auto c = l.vec_in("color", 3, 0, 2, {{1, 1, 1}});
+      for (int k = 0; k < 3; ++k) light.color[k] = c[static_cast<size_t>(k)];
       light.ambient = l.num("ambient", 0, 2, 0.2);
       l.finish();
       s.lights.push_back(light);
@@ -490,6 +500,8 @@ Scene parse(const std::string& text, const std::string& source, const std::strin
 }
 
 Scene load(const std::string& path) {
+  if (std::error_code ec; std::filesystem::is_directory(path, ec))
+    throw SceneError(path + ": is a directory, not a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path + ": cannot open file");
   std::ostringstream ss;

@@ -52,19 +52,41 @@ Row Row::from_json(const std::string& text) {
     if (!j.contains(k)) throw std::invalid_argument(std::string("report row without \"") + k + "\"");
     return j.at(k);
   };
-  // A number, or the string json() writes in its place when the value was not measured (-1).
-  const auto num = [&](const char* k) { const auto& v = need(k); return v.is_null() ? INFINITY : v.is_string() ? -1.0 : v.get<double>(); };
-  const auto cnt = [&](const char* k) { const auto& v = need(k); return v.is_string() ? int64_t{-1} : v.get<int64_t>(); };
-  const auto str = [&](const char* k) { return need(k).get<std::string>(); };
+  // Each key as json() writes it; any other type names the key (nlohmann's own message does not).
+  const auto bad = [&](const char* k, const char* want) {
+    throw std::invalid_argument(std::string("\"") + k + "\": expected " + want + ", not " + j.at(k).dump());
+  };
+  const auto num = [&](const char* k) {  // jnum: a number, null when not finite
+    const auto& v = need(k);
+    if (!v.is_number() && !v.is_null()) bad(k, "a number");
+    return v.is_null() ? INFINITY : v.get<double>();
+  };
+  // jmeasured: a number >= 0, or the string naming why it was not measured (-1).
+  const auto measured = [&](const char* k) {
+    const auto& v = need(k);
+    if (v.is_string()) return -1.0;
+    if (!v.is_null() && !(v.is_number() && v.get<double>() >= 0)) bad(k, "a number >= 0 or the reason it is missing");
+    return v.is_null() ? INFINITY : v.get<double>();
+  };
+  const auto cnt = [&](const char* k) {  // jint: an integer >= 0, or the reason it is missing (-1)
+    const auto& v = need(k);
+    if (v.is_string()) return int64_t{-1};
+    if (!v.is_number_unsigned() || v.get<uint64_t>() > uint64_t(INT64_MAX)) bad(k, "an integer >= 0 or the reason it is missing");
+    return v.get<int64_t>();
+  };
+  const auto str = [&](const char* k) {
+    if (!need(k).is_string()) bad(k, "a string");
+    return j.at(k).get<std::string>();
+  };
   Row r;
   r.block = str("block"), r.variant = str("variant"), r.scheme = str("scheme"), r.err_unit = str("err_unit");
   r.max_abs_err = num("max_abs_err"), r.rms_err = num("rms_err"), r.max_ulp_err = num("max_ulp_err");
   r.latency_cycles = cnt("latency_cycles"), r.ii_cycles = num("ii_cycles"), r.cycles_source = str("cycles_source");
   r.cells = cnt("cells"), r.flip_flops = cnt("flip_flops"), r.multipliers = cnt("multipliers");
   r.area_source = str("area_source"), r.rtl_top = str("rtl_top"), r.memory_bits = cnt("memory_bits");
-  r.cmodel_ns_per_item = num("cmodel_ns_per_item"), r.rtl_sim_items_per_s = num("rtl_sim_items_per_s");
+  r.cmodel_ns_per_item = num("cmodel_ns_per_item"), r.rtl_sim_items_per_s = measured("rtl_sim_items_per_s");
   r.rtl_sim_source = str("rtl_sim_source");
-  r.area_um2 = num("area_um2"), r.period_ns = num("period_ns"), r.fmax_mhz = num("fmax_mhz");
+  r.area_um2 = measured("area_um2"), r.period_ns = measured("period_ns"), r.fmax_mhz = measured("fmax_mhz");
   r.stdcell_cells = cnt("stdcell_cells"), r.critical_path = str("critical_path"), r.stdcell_source = str("stdcell_source");
   r.notes = str("notes");
   // The keys json() always writes (a default row has no extra keys): the rest are the extras.

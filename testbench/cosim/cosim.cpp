@@ -79,15 +79,22 @@ std::string Report::json() const {
      << ", \"flagged\": " << flagged << ", \"latency_cycles\": " << latency_cycles
      << ", \"ii_cycles\": " << num(ii_cycles) << ", \"sim_cycles\": " << sim_cycles
      << ", \"stall_prob\": " << num(stall_prob) << ", \"wall_s\": " << num(wall_s)
-     << (err_metric.empty() ? "" : ", \"" + err_metric + "\": " + num(max_abs_err))
-     << (shard.empty() ? "" : ", \"shard\": \"" + shard + "\"")
-     << ", \"ok\": " << (ok() ? "true" : "false") << "}";
+     << (err_metric.empty() ? "" : ", \"" + err_metric + "\": " + num(max_abs_err));
+  if (!shard.empty()) {
+    os << ", \"shard\": \"" << shard << "\", \"set\": \"" << set << "\", \"seed\": " << seed
+       << ", \"first_vector\": " << first_vector << ", \"rtl\": \"" << rtl << "\"";
+    if (!file_hash.empty()) os << ", \"file_vectors\": " << file_vectors << ", \"file_hash\": \"" << file_hash << "\"";
+  }
+  os << ", \"ok\": " << (ok() ? "true" : "false") << "}";
   return os.str();
 }
 
 Report run(const vec::VectorFile& vf, const Options& opt) {
   const auto& block = blocks::find(vf.block);
   const auto& rtl = find_rtl(opt.rtl.empty() ? vf.block : opt.rtl);
+  if (rtl.block != vf.block)  // another block's ports: its outputs would only "mismatch"
+    throw std::invalid_argument("RTL '" + rtl.name + "' runs block '" + rtl.block + "' vectors, not block '" +
+                                vf.block + "' (--rtl)");
   if (vf.fields.size() != block.fields.size())
     throw std::invalid_argument("vector file fields do not match block '" + block.name + "'");
   for (size_t i = 0; i < vf.fields.size(); ++i) {
@@ -104,6 +111,19 @@ Report run(const vec::VectorFile& vf, const Options& opt) {
   std::vector<Row> inputs;
   inputs.reserve(vf.rows.size());
   for (const auto& r : vf.rows) inputs.push_back(blocks::pick(r, in_idx));
+  // A non-finite reference value must be the block's own (a reciprocal of 0 is +inf, an undefined
+  // LOD NaN): any other is a corrupt file, and would drop out of the error statistics unseen.
+  for (size_t i = 0; i < vf.rows.size(); ++i)
+    for (size_t k = 0; k < ref_idx.size(); ++k) {
+      const double x = vec::bits_f64(vf.rows[i][static_cast<size_t>(ref_idx[k])]);
+      if (std::isfinite(x)) continue;
+      const double want = vec::bits_f64(block.ref(inputs[i]).at(k));
+      if (std::isnan(x) ? std::isnan(want) : x == want) continue;
+      std::ostringstream os;
+      os << "vector " << i + opt.first_vector << ": ref field '" << vf.fields[static_cast<size_t>(ref_idx[k])].name
+         << "' is " << x << ", the block's float reference gives " << want;
+      throw std::invalid_argument(os.str());
+    }
 
   Report rep;
   rep.block = vf.block;

@@ -17,6 +17,7 @@ namespace tu::cosim {
 // One Verilated RTL block: run a stream of input rows, and time a stall-free stream.
 struct RtlBlock {
   std::string name;
+  std::string block;  // the registry block whose vectors it runs (make_rtl: its name; ewa_k4: ewa)
   std::function<RunResult(const std::vector<Row>&, const RunOptions&)> run;
   std::function<std::pair<uint64_t, double>(const std::vector<Row>&)> timing;
 };
@@ -32,6 +33,7 @@ template <class V, class Drive, class Sample>
 RtlBlock make_rtl(const std::string& name, Drive drive, Sample sample, typename Harness<V>::MakeEnv make_env = {}) {
   RtlBlock b;
   b.name = name;
+  b.block = name;
   b.run = [=](const std::vector<Row>& in, const RunOptions& o) {
     return Harness<V>(drive, sample, make_env).run(in, o);
   };
@@ -62,6 +64,11 @@ struct Report {
   std::string first_mismatch;  // human-readable description of the first mismatch
   std::string err_metric;      // block's extra key for max_abs_err (empty: none)
   std::string shard;           // "K/N" for a `--shard` run (texunit merge combines them); empty: whole
+  // A shard's identity, written with "shard": `texunit merge` refuses shards of different runs, a
+  // gap or an overlap. The vector file's set and seed, the shard's first row in the set, the RTL
+  // variant; when the run cut the file itself (`cosim --shard`), the file's rows and content hash.
+  std::string set, rtl, file_hash;  // file_hash: 16 hex digits; empty: the file was itself a shard
+  uint64_t seed = 0, first_vector = 0, file_vectors = 0;
   bool ok() const {
     return mismatches == 0 && model_mismatches == 0 && extra_outputs == 0 && !hung &&
            outputs == vectors;

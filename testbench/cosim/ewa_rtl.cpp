@@ -51,9 +51,15 @@ std::shared_ptr<const tex::Texture> block_texture() {
 }  // namespace
 
 RtlBlock rtl_ewa() { return ewa_block<Vtu_ewa, 1>("ewa", block_texture()); }
-RtlBlock rtl_ewa_k4() { return ewa_block<Vtu_ewa_k4, 4>("ewa_k4", block_texture()); }
 RtlBlock rtl_ewa_k4_with(const tex::Texture& t) {
-  return ewa_block<Vtu_ewa_k4, 4>("ewa_k4", std::make_shared<const tex::Texture>(t));
+  RtlBlock b = ewa_block<Vtu_ewa_k4, 4>("ewa_k4", std::make_shared<const tex::Texture>(t));
+  b.block = "ewa";  // the ewa block's vectors on the multi-texel engine
+  return b;
+}
+RtlBlock rtl_ewa_k4() {
+  RtlBlock b = ewa_block<Vtu_ewa_k4, 4>("ewa_k4", block_texture());
+  b.block = "ewa";
+  return b;
 }
 
 }  // namespace tu::cosim

@@ -56,7 +56,7 @@ RtlBlock rtl_persp_texel_depth() {
     return r;
   };
   RtlBlock b;
-  b.name = "persp_texel_depth";
+  b.name = b.block = "persp_texel_depth";
   b.run = [=](const std::vector<Row>& in, const RunOptions& o) { return td.run(records(in), o); };
   b.timing = [=](const std::vector<Row>& in) { return td.timing(records(in)); };
   return b;

@@ -4,6 +4,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "texture/texel_format.hpp"
 #include "texunit/scene.hpp"
 
@@ -196,6 +199,59 @@ TEST(Scene, MissingFileAndPngTextureRelativeToTheScene) {
   }
   std::filesystem::remove_all(dir);
 }
+// A texture path that is a directory, a FIFO or a device, and a scene path that is a directory,
+// are named as what they are (not "does not exist", not "malformed JSON"); a FIFO is never opened.
+TEST(Scene, TextureAndScenePathsThatAreNotFiles) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tu_scene_nonfiles_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir / "d.png");
+  ASSERT_EQ(::mkfifo((dir / "f.png").c_str(), 0600), 0);
+  const std::string scene = (dir / "s.json").string();
+  auto error_with = [&](const std::string& png) {
+    std::ofstream(scene) << edited("\"builtin\": \"bricks\", \"size\": 256", "\"png\": \"" + png + "\"");
+    try {
+      load(scene);
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string at = scene + ": /textures/bricks/png: ";
+  const std::string not_regular = "' is not a regular file (a FIFO, a device or a socket), not a PNG file";
+  EXPECT_EQ(error_with("d.png"), at + "'" + (dir / "d.png").string() + "' is a directory, not a PNG file");
+  EXPECT_EQ(error_with("f.png"), at + "'" + (dir / "f.png").string() + not_regular);
+  EXPECT_EQ(error_with("/dev/zero"), at + "'/dev/zero" + not_regular);
+  EXPECT_EQ(error_with("none.png"), at + "file '" + (dir / "none.png").string() + "' does not exist");
+  try {
+    load(dir.string());
+    ADD_FAILURE() << "loaded a directory";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), dir.string() + ": is a directory, not a scene file");
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// Colour ranges name their real bounds ([0, 2] for light and specular colours, [0, 255] for a
+// procedural material's); af_visibility, which keeps texels of the EWA footprint, needs filter ewa.
+TEST(Scene, ColourBoundsAndAfVisibilityOnANonEwaMaterial) {
+  const std::string ground = "\"max_aniso\": 16},";
+  EXPECT_EQ(error_of(edited(ground, "\"max_aniso\": 16, \"specular\": {\"color\": [1, 3, 1]}},")),
+            "s.json: /materials/ground/specular/color/1: value 3 is out of range [0, 2]");
+  EXPECT_EQ(error_of(edited(ground, "\"max_aniso\": 16, \"procedural\": {\"kind\": \"fbm\", \"color0\": [0, 0, 300]}},")),
+            "s.json: /materials/ground/procedural/color0/2: value 300 is out of range [0, 255]");
+  EXPECT_EQ(error_of(edited(ground, "\"max_aniso\": 16, \"procedural\": {\"kind\": \"fbm\", \"color1\": [-1, 0, 0]}},")),
+            "s.json: /materials/ground/procedural/color1/0: value -1 is out of range [0, 255]");
+  const std::string wall = "\"filter\": \"ewa\", \"weights\": \"table1d\"";
+  const std::string relief = "\"layers\": 32}";
+  for (const char* f : {"trilinear", "feline", "bilinear", "nearest"}) {
+    std::string t = edited(wall, std::string("\"filter\": \"") + f + "\", \"weights\": \"table1d\"");
+    t.replace(t.find(relief), relief.size(), "\"layers\": 32, \"af_visibility\": true}");
+    EXPECT_EQ(error_of(t), std::string("s.json: /materials/wall/relief/af_visibility: needs filter ewa (the visibility "
+                                       "rule keeps EWA footprint texels); the material's filter is ") + f);
+    t.replace(t.find("\"af_visibility\": true"), 21, "\"af_visibility\": false");
+    EXPECT_EQ(error_of(t), "");  // off: any filter
+  }
+}
+
 // Bad input found by testing as a new user would (issue 13 §5): each names the file and the
 // line or the field.
 TEST(Scene, NumberOutsideDoubleRangeNamesTheLine) {
@@ -272,7 +328,8 @@ TEST(Scene, LightsSpecularAndNormals) {
   EXPECT_EQ(with("\"position\": [1, 5, -3]", "\"position\": [1, 5, -3], \"direction\": [0, -1, 0]"),
             "s.json: /lights/0: give exactly one of 'position' or 'direction'");
   EXPECT_EQ(with("\"position\": [1, 5, -3]", "\"direction\": [0, 0, 0]"), "s.json: /lights/0/direction: is the zero vector");
-  EXPECT_EQ(with("\"color\": [1, 0.5, 0.25]", "\"color\": [1, -0.5, 0.25]"), "s.json: /lights/0/color/1: is negative");
+  EXPECT_EQ(with("\"color\": [1, 0.5, 0.25]", "\"color\": [1, -0.5, 0.25]"),
+            "s.json: /lights/0/color/1: value -0.5 is out of range [0, 2]");
   EXPECT_EQ(with("\"color\": [1, 0.5, 0.25]}", "\"color\": [1, 0.5, 0.25]}, {\"direction\": [0, -1, 0]}"),
             "s.json: /lights: expected an array of at most one light (one shading pass)");
   const std::string spec = "\"max_aniso\": 16},";

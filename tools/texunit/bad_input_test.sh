@@ -188,6 +188,128 @@ PY
     "$tu" render docs/scenes/ui_quad.json --engine cmodel --out "$tmp/o" 2>"$tmp/err" >/dev/null
     ! grep -q $'\r' "$tmp/err" || fail "progress bar in a log: $(cat -A "$tmp/err" | head -3)"
     ;;
+  numeric_options)
+    # Every numeric option: finite, in range, in decimal, named in the message (one check for all
+    # options, tools/texunit/cli_checks.hpp check_values); nothing written.
+    expect 2 "dt: 'nan' is not a finite number" "$tu" render docs/scenes/procedural.json --frames 2 --dt nan --out "$tmp/o"
+    expect 2 "os-stall-prob: 'nan' is not a finite number" "$tu" render default --pipeline object-space --engine rtl --os-stall-prob nan --out "$tmp/o"
+    expect 2 "os-spacing: 'nan' is not a finite number" "$tu" render default --pipeline object-space --os-spacing nan --out "$tmp/o"
+    expect 2 "os-spacing: 'nan' is not a finite number" "$tu" objspace-compare default --os-spacing nan
+    expect 2 "max-cycles: 'nan' is not a FINITE in \[0 - 1e+18\]" "$tu" plan default --max-cycles nan
+    expect 2 "max-cycles: 'inf' is not a FINITE in \[0 - 1e+18\]" "$tu" plan default --max-cycles inf
+    expect 2 "afvis-heights: '-nan' is not a FINITE" "$tu" relief-quality --afvis default --afvis-heights 1,-nan
+    expect 2 "seed: '18446744073709551616' is out of range" "$tu" vectors --block reciprocal --set random --count 5 --seed 18446744073709551616 --out "$tmp/r.vec"
+    expect 2 "seed: '99999999999999999999999' is out of range" "$tu" cosim --block reciprocal --vectors vectors/golden/reciprocal.vec --seed 99999999999999999999999
+    expect 2 "count: '010' is not a non-negative integer in decimal" "$tu" vectors --block reciprocal --set random --count 010 --out "$tmp/r.vec"
+    expect 2 "threads: '0x4' is not an integer in decimal" "$tu" vectors --block reciprocal --set golden --threads 0x4 --out "$tmp/r.vec"
+    expect 2 "cache-size: " "$tu" sysmodel default --cache-size -1
+    expect 2 "frames: " "$tu" render default --frames 1e3 --out "$tmp/o"
+    [ ! -e "$tmp/o" ] && [ ! -e "$tmp/r.vec" ] || fail "wrote output"
+    # The largest seed is still a seed.
+    "$tu" vectors --block reciprocal --set random --count 5 --seed 18446744073709551615 --out "$tmp/r.vec" 2>/dev/null ||
+      fail "refused seed 2^64 - 1"
+    grep -q "^# seed: 18446744073709551615$" "$tmp/r.vec" || fail "seed header"
+    ;;
+  merge_identity)
+    # Each shard carries what identifies its run; merge refuses a mismatch, a gap, a repeat or a
+    # malformed field, naming the file and the field (exit 2, nothing written).
+    "$tu" vectors --block reciprocal --set random --count 600 --seed 5 --out "$tmp/a.vec" 2>/dev/null
+    "$tu" vectors --block reciprocal --set random --count 600 --seed 6 --out "$tmp/b.vec" 2>/dev/null
+    for k in 0 1; do
+      "$tu" cosim --block reciprocal --vectors "$tmp/a.vec" --shard $k/2 --json >"$tmp/a$k.json"
+      "$tu" cosim --block reciprocal --vectors "$tmp/b.vec" --shard $k/2 --json >"$tmp/b$k.json"
+      "$tu" vectors --block reciprocal --set random --count 600 --seed 5 --shard $k/2 --out "$tmp/v5_$k.vec" 2>/dev/null
+      "$tu" vectors --block reciprocal --set random --count 600 --seed 6 --shard $k/2 --out "$tmp/v6_$k.vec" 2>/dev/null
+      "$tu" cosim --block reciprocal --vectors "$tmp/v5_$k.vec" --json >"$tmp/f5_$k.json"
+      "$tu" cosim --block reciprocal --vectors "$tmp/v6_$k.vec" --json >"$tmp/f6_$k.json"
+    done
+    grep -q '"shard": "1/2", "set": "random", "seed": 5, "first_vector": 300, "rtl": "", "file_vectors": 600, "file_hash": "' "$tmp/a1.json" ||
+      fail "no identity in a cosim shard: $(cat "$tmp/a1.json")"
+    "$tu" merge "$tmp"/a{0,1}.json --json "$tmp/ok.json" || fail "merge of one run's shards"
+    expect 2 "b1.json: shard 1/2 is of another run: seed 6, shard 0 (.*a0.json) has 5" "$tu" merge "$tmp"/a0.json "$tmp"/b1.json --json "$tmp/m.json"
+    expect 2 "f6_1.json: shard 1/2 is of another run: seed 6" "$tu" merge "$tmp"/f5_0.json "$tmp"/f6_1.json --json "$tmp/m.json"
+    expect 2 "a1.json: shard 1/2 is of another run: file_hash '[0-9a-f]*', shard 0 (.*f5_0.json) has ''" "$tu" merge "$tmp"/f5_0.json "$tmp"/a1.json --json "$tmp/m.json"
+    # Hand-edited shard 1: every field is read with its type, a count is a non-negative integer.
+    refused() {  # refused NAME FROM TO PATTERN: shard 1 with FROM replaced by TO, merged with shard 0
+      python3 -c "import sys; t = open('$tmp/a1.json').read(); assert sys.argv[2] in t; open('$tmp/' + sys.argv[1], 'w').write(t.replace(sys.argv[2], sys.argv[3]))" "$1" "$2" "$3"
+      expect 2 "$1: $4" "$tu" merge "$tmp"/a0.json "$tmp/$1" --json "$tmp/m.json"
+    }
+    refused neg.json '"vectors": 300' '"vectors": -5' '"vectors": expected a non-negative integer, not -5'
+    refused mis.json '"mismatches": 0' '"mismatches": -1' '"mismatches": expected a non-negative integer, not -1'
+    refused frac.json '"vectors": 300' '"vectors": 1.7' '"vectors": expected a non-negative integer, not 1.7'
+    refused str.json '"vectors": 300' '"vectors": "300"' '"vectors": expected a non-negative integer, not "300"'
+    refused err.json '"max_abs_err": ' '"max_abs_err": "x", "was": ' '"max_abs_err": expected a number, not "x"'
+    refused dup.json '"vectors": 300' '"vectors": 300, "vectors": 600' 'key "vectors" appears twice in one object'
+    refused sh.json '"shard": "1/2"' '"shard": "7/3"' "\"shard\": shard '7/3': need 0 <= K < N"
+    refused gap.json '"first_vector": 300' '"first_vector": 301' "shard 1/2 starts at vector 301, the shards before it end at 300 (a gap or an overlap)"
+    refused noid.json ', "set": "random"' '' 'no "set"'
+    # Report shards: element 0 is the identity; a missing shard, another --count, a malformed row.
+    for k in 0 1 2; do
+      "$tu" report --blocks reciprocal,persp,ellipse --count 50 --no-yosys --shard $k/3 --json "$tmp/r$k.json" >/dev/null 2>&1
+    done
+    "$tu" report --blocks reciprocal,persp,ellipse --count 60 --no-yosys --shard 1/3 --json "$tmp/c1.json" >/dev/null 2>&1
+    head -2 "$tmp/r1.json" | grep -q '{"blocks":\["reciprocal","persp","ellipse"\],"count":50,"report_shard":"1/3"' ||
+      fail "no identity in a report shard: $(head -2 "$tmp/r1.json")"
+    "$tu" merge "$tmp"/r{0,1,2}.json --json "$tmp/ok.json" >/dev/null 2>&1 || fail "merge of one report's shards"
+    expect 2 "report shards 1 of 3 are missing" "$tu" merge "$tmp"/r{0,2}.json --json "$tmp/m.json"
+    expect 2 'c1.json: shard 1/3 is of another run: .*"count":60' "$tu" merge "$tmp"/r0.json "$tmp"/c1.json "$tmp"/r2.json --json "$tmp/m.json"
+    expect 2 "r0.json: shard 0/3 given twice" "$tu" merge "$tmp"/r{0,0,1,2}.json --json "$tmp/m.json"
+    python3 -c "
+t = open('$tmp/r1.json').read()
+open('$tmp/rx.json', 'w').write(t.replace('\"max_abs_err\": ', '\"max_abs_err\": \"x\", \"was\": ', 1))"
+    expect 2 'rx.json: row 1: "max_abs_err": expected a number, not "x"' "$tu" merge "$tmp"/r0.json "$tmp"/rx.json "$tmp"/r2.json --json "$tmp/m.json"
+    [ ! -e "$tmp/m.json" ] || fail "merge wrote a partial result"
+    ;;
+  messages_name_field)
+    # Each message names the file and the field (or the path and what it is).
+    "$tu" cosim --block reciprocal --vectors vectors/golden/reciprocal.vec --shard 0/2 --json >"$tmp/s0.json"
+    sed 's/"hung": false/"hung": "no"/' "$tmp/s0.json" >"$tmp/t.json"
+    expect 2 't.json: "hung": expected true or false, not "no"' "$tu" merge "$tmp/t.json"
+    ! grep -q "json.exception" "$tmp/err" || fail "nlohmann's message: $(cat "$tmp/err")"
+    # A stdcell cache entry of the current hash without area_um2.
+    key=$("$tu" rtl-files tu_reciprocal --key stdcell)
+    printf '{"tu_reciprocal": {"hash": "%s", "period_ns": 5}}\n' "$key" >"$tmp/sc.json"
+    expect 2 "sc.json: /tu_reciprocal/area_um2: missing" "$tu" report --blocks reciprocal --count 50 --no-yosys --stdcell-cache "$tmp/sc.json" --json "$tmp/r.json"
+    [ ! -e "$tmp/r.json" ] || fail "report wrote a partial result"
+    # A directory, a FIFO or a device as a texture; a directory as the scene.
+    mkdir -p "$tmp/dir.png"; mkfifo "$tmp/fifo.png"
+    for png in "$tmp/dir.png" "$tmp/fifo.png" /dev/zero; do
+      sed "s|\"builtin\": \"checkerboard\"|\"png\": \"$png\"|" docs/scenes/ui_quad.json >"$tmp/tex.json"
+      grep -q "\"png\": \"$png\"" "$tmp/tex.json" || fail "edit"
+      case $png in *dir.png) what="is a directory, not a PNG file" ;; *) what="is not a regular file" ;; esac
+      expect 2 "tex.json: /textures/.*/png: '$png' $what" timeout 20 "$tu" render "$tmp/tex.json" --out "$tmp/o"
+    done
+    expect 2 "$tmp: is a directory, not a scene file" "$tu" render "$tmp" --out "$tmp/o"
+    [ ! -e "$tmp/o" ] || fail "left output"
+    ;;
+  silent_acceptance)
+    # What was accepted silently and is now refused (exit 2), naming the option or field.
+    expect 2 "RTL 'perlin3d_serial' runs block 'perlin3d' vectors, not block 'bc1_decode' (--rtl)" \
+      "$tu" cosim --block bc1_decode --vectors vectors/golden/bc1_decode.vec --rtl perlin3d_serial
+    expect 2 "dump $tmp/o/ref.png: the render writes its image" "$tu" render default --engine ref --out "$tmp/o" --dump "$tmp/o/ref.png"
+    expect 2 "dump $tmp/o/../o/layers.png: the render writes its image" "$tu" render default --engine ref --out "$tmp/o" --dump "$tmp/o/../o/layers.png"
+    [ ! -e "$tmp/o" ] || fail "left the --out directory"
+    sed 's/"filter": "ewa"/"filter": "trilinear"/' docs/scenes/af_visibility.json >"$tmp/afv.json"
+    grep -q '"filter": "trilinear"' "$tmp/afv.json" || fail "edit"
+    for e in ref cmodel rtl; do
+      expect 2 "afv.json: /materials/.*/relief/af_visibility: needs filter ewa" "$tu" render "$tmp/afv.json" --engine $e --out "$tmp/o"
+    done
+    expect 2 "direction-step requires --refined" "$tu" distance-map docs/blocks/relief/layers_default.png "$tmp/d" --depth 4 --direction-step 10
+    expect 2 "stdcell-cache: File does not exist: $tmp/none.json" "$tu" report --blocks reciprocal --count 50 --no-yosys --stdcell-cache "$tmp/none.json"
+    expect 2 "out: empty value" "$tu" render default --out ""
+    expect 2 "OUT $tmp/dd/: a base name" "$tu" distance-map docs/blocks/relief/layers_default.png "$tmp/dd/" --depth 4
+    [ ! -e "$tmp/dd/.raw" ] && [ ! -e "$tmp/dd/.json" ] || fail "wrote DIR/.raw"
+    # Vector files: a set the block does not have; a NaN reference where the block's is finite.
+    sed 's/^# set: golden/# set: bogus/' vectors/golden/reciprocal.vec >"$tmp/set.vec"
+    expect 2 "set.vec: set 'bogus' is not a set of block 'reciprocal' (golden, stiff, random)" "$tu" cosim --block reciprocal --vectors "$tmp/set.vec"
+    awk '!/^#/ && !done { $NF = "7ff8000000000000"; done = 1 } { print }' vectors/golden/reciprocal.vec >"$tmp/nan.vec"
+    expect 2 "nan.vec: vector 0: ref field 'ref' is nan, the block's float reference gives" "$tu" cosim --block reciprocal --vectors "$tmp/nan.vec"
+    # The golden set's own non-finite references (a reciprocal of 0 is +inf) still pass.
+    "$tu" cosim --block reciprocal --vectors vectors/golden/reciprocal.vec >/dev/null || fail "golden set refused"
+    # --frames / --dt: the last frame's time stays in the scene format's |t| <= 1e6.
+    expect 2 "frames 3 --dt 600000: material '.*' reaches time 1.2e+06 in the last frame" "$tu" render docs/scenes/procedural.json --frames 3 --dt 600000 --out "$tmp/o"
+    [ ! -e "$tmp/o" ] || fail "left output"
+    ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"

@@ -22,14 +22,20 @@ case $case in
     ;;
   report_stdcell)
     # Standard-cell columns from the committed cache: numbers where the cache is current, with
-    # latency_ns = latency x period and ns_per_item = II x period; a missing cache says why.
+    # latency_ns = latency x period and ns_per_item = II x period; a top missing from the cache says
+    # why; a cache file that does not exist is refused (exit 2).
     "$tu" report --blocks reciprocal --count 2000 --no-yosys --stdcell-cache docs/report/stdcell_cache.json \
       --json "$tmp/r.json" >/dev/null
     [ "$(val "$tmp/r.json" "all(isinstance(r[k], (int, float)) and r[k] > 0 for r in d for k in ('area_um2', 'period_ns', 'fmax_mhz'))")" = True ] ||
       fail "stdcell fields: $(val "$tmp/r.json" "d[0]['stdcell_source']")"
     [ "$(val "$tmp/r.json" "all(abs(r['latency_ns'] - r['latency_cycles'] * r['period_ns']) < 1e-6 * r['latency_ns'] and abs(r['ns_per_item'] - r['ii_cycles'] * r['period_ns']) < 1e-6 * r['ns_per_item'] for r in d)")" = True ] || fail "ns columns"
-    "$tu" report --blocks reciprocal --count 2000 --no-yosys --stdcell-cache "$tmp/none.json" --json "$tmp/r2.json" >/dev/null
-    [ "$(val "$tmp/r2.json" "d[0]['area_um2'].startswith('not measured: tu_reciprocal not in')")" = True ] || fail "missing-cache reason"
+    echo '{}' >"$tmp/empty.json"
+    "$tu" report --blocks reciprocal --count 2000 --no-yosys --stdcell-cache "$tmp/empty.json" --json "$tmp/r2.json" >/dev/null
+    [ "$(val "$tmp/r2.json" "d[0]['area_um2'].startswith('not measured: tu_reciprocal not in')")" = True ] || fail "missing-top reason"
+    if "$tu" report --blocks reciprocal --count 50 --no-yosys --stdcell-cache "$tmp/none.json" --json "$tmp/r3.json" 2>"$tmp/err"; then
+      fail "accepted a missing --stdcell-cache"
+    fi
+    grep -q "stdcell-cache: File does not exist" "$tmp/err" && [ ! -e "$tmp/r3.json" ] || fail "message: $(cat "$tmp/err")"
     ;;
   report_cache_key)
     # A top's synthesis cache key covers the package constants and enums its files name, not the
@@ -164,7 +170,7 @@ SV
     ;;
   plan_procedural)
     # Procedural materials: the noise unit, 3-D cores (the smoke moves through time), the fewest
-    # octave cores meeting min_psnr_db on the procedural pixels (docs/blocks/noise.md §5).
+    # octave cores meeting min_psnr_db on the procedural pixels (docs/blocks/noise-appendix.md §5).
     "$tu" plan docs/scenes/procedural.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
     [ "$(val "$tmp/p.json" "d['noise']['dims'], sorted(d['noise']['materials'])")" = "(3, ['marble', 'smoke'])" ] || fail "$(cat "$tmp/p.json")"
     k=$(val "$tmp/p.json" "d['noise']['octave_cores']")
@@ -199,7 +205,7 @@ SV
     [ "$(val "$tmp/p.json" "any('iter_parallax' in b for b in d['specialised']['blocks'])")" = True ] || fail "iterative relief"
     ;;
   plan_af_visibility)
-    # AF with parallax visibility (docs/blocks/afvis.md §5): the unit keeps tu_afvis when a material
+    # AF with parallax visibility (docs/blocks/afvis-appendix.md §5): the unit keeps tu_afvis when a material
     # asks for it and reports its clocks; a scene without the flag leaves it out.
     "$tu" plan docs/scenes/af_visibility.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
     grep -q "localparam bit HasAfvis = 1'b1;" "$tmp/cfg.sv" || fail "af_visibility.json: HasAfvis not 1: $(cat "$tmp/cfg.sv")"
@@ -269,7 +275,7 @@ SV
     [ ! -e "$tmp/bad2/objspace_ref.png" ] || fail "partial output written"
     ;;
   relief_quality_afvis)
-    # relief-quality --afvis (docs/blocks/afvis.md §4): one row per visibility variant, plain traces
+    # relief-quality --afvis (docs/blocks/afvis-appendix.md §4): one row per visibility variant, plain traces
     # nothing; the height PNGs' temporary directory is removed; a scene without relief is refused.
     mkdir -p "$tmp/p"
     "$tu" relief-quality --afvis docs/scenes/af_visibility.json --afvis-maps bricks,gravel --afvis-heights 1 --afvis-ss 2 \
@@ -427,7 +433,7 @@ sys.exit(0 if len(a) > 3 and t(a) == t(b) else 1)
 PY
     grep -q "^## ellipse" "$tmp/m.md" && grep -q "texunit merge. of 4" "$tmp/m.md" || fail "merged markdown"
     if "$tu" merge "$tmp"/r0.json "$tmp"/r0.json --json "$tmp/x.json" 2>"$tmp/err"; then fail "merged a report shard twice"; fi
-    grep -q "block 'reciprocal' is in shard files 1 and 2" "$tmp/err" && [ ! -e "$tmp/x.json" ] || fail "message: $(cat "$tmp/err")"
+    grep -q "r0.json: shard 0/4 given twice" "$tmp/err" && [ ! -e "$tmp/x.json" ] || fail "message: $(cat "$tmp/err")"
     ;;
   stdcell_tool_reasons)
     # A missing tool or Liberty file: exit 2, the reason and the Debian package, no cache written

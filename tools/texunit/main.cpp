@@ -1,6 +1,7 @@
 // texunit: command-line front end (one binary, subcommands).
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -54,6 +55,16 @@ int cmd_vectors(const std::string& block, const std::string& set, uint64_t count
   return 0;
 }
 
+// What the vector format cannot check without the block: the set is one of the block's (the
+// identity a shard's result carries; cosim::run checks the fields and the reference values).
+void check_set(const tu::vec::VectorFile& vf, const std::string& file) {
+  const auto& b = tu::blocks::find(vf.block);
+  if (std::find(b.sets.begin(), b.sets.end(), vf.set) != b.sets.end()) return;
+  std::string known;
+  for (const auto& s : b.sets) known += (known.empty() ? "" : ", ") + s;
+  throw std::invalid_argument(file + ": set '" + vf.set + "' is not a set of block '" + b.name + "' (" + known + ")");
+}
+
 int cmd_cosim(const std::string& block, const std::string& file, double stall, uint64_t seed,
               const std::string& fst, bool json, const std::string& rtl, const tu::Shard& shard) {
   auto vf = tu::vec::read(file);
@@ -62,6 +73,14 @@ int cmd_cosim(const std::string& block, const std::string& file, double stall, u
                                 block + "'");
   if (vf.rows.empty())
     throw std::invalid_argument(file + ": no vectors (the file has a header and no data line)");
+  check_set(vf, file);
+  // A shard's identity (cosim::Report): when this run cuts the file, the whole file's rows and hash.
+  const uint64_t file_vectors = vf.rows.size();
+  const std::string file_hash = shard.whole() ? "" : [&] {
+    char h[17];
+    std::snprintf(h, sizeof h, "%016llx", static_cast<unsigned long long>(tu::report::fnv1a(tu::vec::serialise(vf))));
+    return std::string(h);
+  }();
   if (!shard.whole()) {  // rows [first, last) of the file (a vectors shard file: split it no further)
     if (!vf.shard.empty())
       throw std::invalid_argument(file + ": already shard " + vf.shard + " of a set (run it without --shard)");
@@ -87,6 +106,8 @@ int cmd_cosim(const std::string& block, const std::string& file, double stall, u
     throw std::invalid_argument(file + ": " + e.what());
   }
   rep.shard = vf.shard;
+  rep.set = vf.set, rep.seed = vf.seed, rep.first_vector = vf.first_vector, rep.rtl = rtl;
+  rep.file_vectors = file_hash.empty() ? 0 : file_vectors, rep.file_hash = file_hash;
   if (json) {
     std::cout << rep.json() << "\n";
   } else {
@@ -149,6 +170,9 @@ int cmd_complexity(const std::string& in, const std::string& out, const tu::comp
 // Distance map (docs/blocks/relief.md §13): HEIGHT.png -> OUT.raw + OUT.json (+ PNG slices).
 int cmd_distance_map(const std::string& in, const std::string& out, const std::string& slices,
                      const tu::dm::Params& p) {
+  // OUT names files beside it: "DIR/" or "DIR/." would write the hidden DIR/.raw.
+  if (const auto name = fs::path(out).filename(); name.empty() || name == "." || name == "..")
+    throw std::invalid_argument("OUT " + out + ": a base name (writes OUT.raw and OUT.json), not a directory");
   tu::cli::Outputs outs;
   const std::string raw = out + ".raw", hdr = out + ".json";
   const std::string raw_tmp = outs.stage(raw), hdr_tmp = outs.stage(hdr);
@@ -192,7 +216,7 @@ int cmd_relief_quality(const tu::pom::QualityParams& p) {
   return 0;
 }
 
-// relief-quality --afvis SCENE (docs/blocks/afvis.md §4): plain EWA and each visibility rule against
+// relief-quality --afvis SCENE (docs/blocks/afvis-appendix.md §4): plain EWA and each visibility rule against
 // the truth on the scene's relief pixels, per height map and camera height. The height PNGs go to a
 // private temporary directory, removed afterwards.
 int cmd_afvis_quality(const std::string& scene_arg, tu::afvis::QualityParams p, const std::string& plot_dir) {
@@ -365,7 +389,7 @@ int main(int argc, char** argv) {
 
   std::string cx_in, cx_out;
   tu::complexity::Params cx;
-  auto* cpx = app.add_subcommand("complexity", "complexity map of a height map (seed-000 POM)");
+  auto* cpx = app.add_subcommand("complexity", "complexity map of a height map for adaptive POM (docs/methods/relief.md)");
   cpx->add_option("HEIGHT", cx_in, "height map PNG (first channel)")->required();
   cpx->add_option("OUT", cx_out, "output PNG (8-bit grey level codes)")->required();
   cpx->add_option("--levels", cx.levels, "quantisation levels")->check(CLI::Range(2, 256));
@@ -374,15 +398,15 @@ int main(int argc, char** argv) {
 
   std::string dm_in, dm_out, dm_slices;
   tu::dm::Params dmp;
-  auto* dmc = app.add_subcommand("distance-map", "3-D distance map of a height map for sphere-traced relief (seed 003)");
+  auto* dmc = app.add_subcommand("distance-map", "3-D distance map of a height map for sphere-traced relief (docs/methods/relief.md)");
   dmc->add_option("HEIGHT", dm_in, "height map PNG (first channel, 255 = top; square, power of two up to 512)")->required();
   dmc->add_option("OUT", dm_out, "output base name: writes OUT.raw (voxels) and OUT.json (header)")->required();
   dmc->add_option("--depth", dmp.layers, "layers D of the map (1..255)")->required()->check(CLI::Range(1, tu::dm::kMaxLayers));
   dmc->add_option("--scale", dmp.scale, "relief depth in texture repeats (the material's scale)")
       ->check(tu::cli::finite_in(1e-6, 0.99));
-  dmc->add_flag("--refined", dmp.refined, "the visibility-refined map (seed 003 chapter 4)");
+  auto* refined = dmc->add_flag("--refined", dmp.refined, "the visibility-refined map (docs/methods/relief.md)");
   dmc->add_option("--direction-step", dmp.direction_step_deg, "refined: degrees between view directions")
-      ->check(tu::cli::finite_in(1.0, 45.0));
+      ->check(tu::cli::finite_in(1.0, 45.0))->needs(refined);
   dmc->add_option("--slices", dm_slices, "write one PNG per layer here");
   dmc->add_option("--threads", dmp.threads, threads_help)->check(CLI::Range(0, 4096));
 
@@ -434,7 +458,8 @@ int main(int argc, char** argv) {
   rep->add_flag("--yosys-cached-only", ro.yosys_cached_only,
                 "take cells from matching --yosys-cache entries only; never synthesise (stale: not measured)");
   rep->add_option("--stdcell-cache", ro.stdcell_cache, "standard-cell results (texunit stdcell); read only "
-                  "(default: the repository's docs/report/stdcell_cache.json)");
+                  "(default: the repository's docs/report/stdcell_cache.json)")
+      ->check(CLI::ExistingFile);
   rep->add_option("--root", ro.root, "repository root (default: the source directory texunit was built from)")
       ->check(CLI::ExistingDirectory);
   rep->add_option("--shard", shard_text, "measure the block groups i with i % N == K (groups in report order)")
@@ -484,7 +509,7 @@ int main(int argc, char** argv) {
   pln->add_flag("--json", po.json, "print the plan as JSON");
   pln->add_option("--max-cycles", po.max_cycles,
                   "the frame's cycle budget: the octave-serial noise unit when it meets it (0: none, the pipelined unit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(tu::cli::finite_in(0.0, 1e18));
 
   tu::cli::RenderArgs render_args;
   auto* rnd = tu::cli::add_render(app, render_args);
@@ -495,6 +520,7 @@ int main(int argc, char** argv) {
   tu::cli::FilterCompareArgs filter_args;
   auto* fcmp = tu::cli::add_filter_compare(app, filter_args);
 
+  tu::cli::check_values(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

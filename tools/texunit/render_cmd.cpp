@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <iostream>
+#include <sstream>
 #include <unistd.h>
 
 #include "demo_jobs.hpp"
@@ -157,6 +158,16 @@ int run_render(const RenderArgs& a) {
   if (a.weights == "table2d") w = scene::WeightSource::Table2d;
   // Every output is checked before the render and written only when all succeed (Outputs).
   if (a.frames > 1 && !a.dump.empty()) throw std::invalid_argument("--dump writes one frame: leave it out with --frames N > 1");
+  // The animation's last frame keeps every procedural time where the scene format bounds it.
+  for (const auto& [name, m] : s.materials)
+    if (m.procedural && a.frames > 1) {
+      const double t = m.procedural->time + (a.frames - 1) * a.dt;
+      if (std::fabs(t) <= scene::kMaxTime) continue;
+      std::ostringstream os;
+      os << "--frames " << a.frames << " --dt " << a.dt << ": material '" << name << "' reaches time " << t
+         << " in the last frame, outside the scene format's [" << -scene::kMaxTime << ", " << scene::kMaxTime << "]";
+      throw std::invalid_argument(os.str());
+    }
   Outputs outs;
   outs.make_dir(a.out_dir);
   auto frame_png = [&](int i) {
@@ -165,6 +176,17 @@ int run_render(const RenderArgs& a) {
     return (std::filesystem::path(a.out_dir) / ((a.pipeline == "object-space" ? "objspace_" : "") + a.engine + (a.frames > 1 ? name : ".png"))).string();
   };
   const std::string png = frame_png(0);
+  const std::string lp = (std::filesystem::path(a.out_dir) / "layers.png").string();
+  const std::string heat_png = (std::filesystem::path(a.out_dir) / ("heat_" + a.engine + "_vs_" + a.vs + ".png")).string();
+  if (!a.dump.empty()) {  // the CSV written over an image of the same run
+    std::vector<std::string> images{lp};
+    if (!a.vs.empty()) images.push_back(heat_png);
+    for (int i = 0; i < a.frames; ++i) images.push_back(frame_png(i));
+    const auto dump = std::filesystem::weakly_canonical(a.dump);
+    for (const auto& p : images)
+      if (std::filesystem::weakly_canonical(p) == dump)
+        throw std::invalid_argument("--dump " + a.dump + ": the render writes its image " + p + " there");
+  }
   std::vector<std::string> png_tmps;
   for (int i = 0; i < a.frames; ++i) png_tmps.push_back(outs.stage(frame_png(i)));
   const std::string& png_tmp = png_tmps[0];
@@ -238,7 +260,6 @@ int run_render(const RenderArgs& a) {
   auto render_at = [&](const scene::Scene& si) { return render_with(a.engine, si); };
   if (a.engine != "rtl" && a.pipeline != "object-space") frame = render_at(s);
   std::optional<img::Rgba8Image> heat;  // --vs: |ENGINE - VS| per pixel, 64 levels = red
-  const std::string heat_png = (std::filesystem::path(a.out_dir) / ("heat_" + a.engine + "_vs_" + a.vs + ".png")).string();
   if (!a.vs.empty()) {
     const auto other = render_with(a.vs, s);
     heat = render::error_heatmap(frame.image, other.image, 64);
@@ -278,7 +299,6 @@ int run_render(const RenderArgs& a) {
   }
   img::write_png_rgba(png_tmp, frame.image);
   const auto layers = render::layers_image(s, frame);
-  const std::string lp = (std::filesystem::path(a.out_dir) / "layers.png").string();
   if (layers) img::write_png_gray(outs.stage(lp), *layers);
   if (!a.dump.empty()) render::write_dump_csv(dump_tmp, frame);
   if (heat) img::write_png_rgba(outs.stage(heat_png), *heat);
@@ -490,7 +510,7 @@ void print_relief(const DemoData& d, const Refs& refs) {
 
 void print_procedural(const DemoData& d) {
   std::printf("\nprocedural scene (docs/scenes/procedural.json, %dx%d: fBm ground, smoke wall; noise unit, "
-              "docs/blocks/noise.md §5), PSNR over covered pixels against the float reference with the "
+              "docs/blocks/noise-appendix.md §5), PSNR over covered pixels against the float reference with the "
               "footprint limit and the truth (16 x 16 samples of the unfiltered field):\n",
               d.proc.camera.width, d.proc.camera.height);
   std::printf("%-22s %12s %12s  %s\n", "engine", "vs ref", "vs truth", "image");

@@ -118,12 +118,12 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-uint64_t fnv1a(const std::string& s, uint64_t h = 1469598103934665603ull) {
+}  // namespace
+
+uint64_t fnv1a(const std::string& s, uint64_t h) {
   for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
   return h;
 }
-
-}  // namespace
 
 std::vector<std::string> rtl_files(const std::string& root, const std::string& top) {
   return rtl::Manifest::load(root).top_sources(top);
@@ -280,11 +280,18 @@ void stdcell_area(Row& r, const Options& opt) {
     r.stdcell_source = "not measured: RTL or flow changed since the cached run" + hint;
     return;
   }
-  r.area_um2 = e.at("area_um2").get<double>();
-  r.period_ns = e.at("period_ns").get<double>();
-  r.fmax_mhz = e.at("fmax_mhz").get<double>();
-  r.stdcell_cells = e.at("cells").get<int64_t>();
-  r.critical_path = e.at("path_from").get<std::string>() + " -> " + e.at("path_to").get<std::string>();
+  const auto field = [&](const char* k, bool number) -> const json& {  // a broken entry names the file and field
+    if (!e.contains(k) || (number ? !e.at(k).is_number() : !e.at(k).is_string()))
+      throw std::invalid_argument(opt.stdcell_cache + ": /" + r.rtl_top + "/" + k + ": " +
+                                  (e.contains(k) ? "expected a " + std::string(number ? "number" : "string") + ", not " + e.at(k).dump()
+                                                 : std::string("missing")));
+    return e.at(k);
+  };
+  r.area_um2 = field("area_um2", true).get<double>();
+  r.period_ns = field("period_ns", true).get<double>();
+  r.fmax_mhz = field("fmax_mhz", true).get<double>();
+  r.stdcell_cells = field("cells", true).get<int64_t>();
+  r.critical_path = field("path_from", false).get<std::string>() + " -> " + field("path_to", false).get<std::string>();
   r.stdcell_source = "osu018 (scripts/stdcell_flow.sh)";
 }
 
@@ -817,6 +824,17 @@ int run(const Options& in) {
   return 0;
 }
 
+std::string shard_identity(const Options& opt) {
+  json id = json::object();
+  id["report_shard"] = opt.shard.str();
+  id["count"] = opt.count;
+  id["blocks"] = opt.blocks;  // empty: every group
+  id["yosys"] = !opt.yosys ? "off" : opt.yosys_cached_only ? "cached only" : "measured";
+  id["yosys_cache"] = opt.yosys_cache;
+  id["stdcell_cache"] = opt.stdcell_cache;
+  return id.dump();
+}
+
 void write(const std::vector<Row>& rs, const Options& opt) {
   std::printf("%-13s %-16s %-20s %10s %10s %9s %4s %5s %6s %4s %8s %10s\n", "block", "variant", "scheme",
               "max_abs", "rms", "max_ulp", "lat", "II", "cells", "mul", "ns/item", "rtl_item/s");
@@ -838,6 +856,7 @@ void write(const std::vector<Row>& rs, const Options& opt) {
   if (!opt.json.empty()) {
     std::ofstream o(opt.json);
     o << "[\n";
+    if (!opt.shard.whole()) o << "  " << shard_identity(opt) << (rs.empty() ? "\n" : ",\n");  // element 0: merge
     for (size_t i = 0; i < rs.size(); ++i) o << "  " << rs[i].json() << (i + 1 < rs.size() ? ",\n" : "\n");
     o << "]\n";
     std::cerr << "wrote " << opt.json << "\n";

@@ -32,6 +32,9 @@ struct Options {
 // that lists the top (packages first).
 std::vector<std::string> rtl_files(const std::string& root, const std::string& top);
 
+// FNV-1a (64 bits) of s, continuing from h: the caches' keys and a shard's vector-file hash.
+uint64_t fnv1a(const std::string& s, uint64_t h = 1469598103934665603ull);
+
 // Content hash of a top's RTL files and the flow script that measures it (the caches' key).
 std::string rtl_hash(const std::string& root, const std::string& top, const std::string& script);
 
@@ -63,6 +66,9 @@ std::vector<std::string> groups();
 std::vector<Row> rows(const Options& opt);
 std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string& root, bool yosys);
 int run(const Options& opt);
+// What identifies a `report --shard K/N` run (element 0 of its JSON array; `texunit merge` refuses
+// shards whose identities differ, a gap and a repeat): the shard, --count, --blocks and the area source.
+std::string shard_identity(const Options& opt);
 // The table, JSON, plots and Markdown of measured rows (run() after measuring; texunit merge).
 void write(const std::vector<Row>& rows, const Options& opt);
 // `texunit merge` of report shards: rows of every file, put back in groups() order.

@@ -37,9 +37,13 @@ struct Relief {
   bool af_visibility = false;  // EWA keeps only the footprint texels visible over the relief (afvis)
 };
 
-// A procedural colour source (docs/scene-format.md "procedural"; docs/blocks/noise.md §5): the
+// A procedural colour source (docs/scene-format.md "procedural"; docs/blocks/noise-appendix.md §5): the
 // unit evaluates Perlin noise at the pixel's (u, v[, t]) instead of sampling the texture.
 enum class ProceduralKind { Fbm, Smoke, Water };
+// |time| of a procedural material, and of every frame of `render --frames N --dt T`: where
+// the noise unit's time code and the float reference's double stay exact (docs/scene-format.md).
+inline constexpr double kMaxTime = 1e6;
+
 struct Procedural {
   ProceduralKind kind = ProceduralKind::Fbm;
   int octaves = 4;          // K, 1..NoiseOctaves
