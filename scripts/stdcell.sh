@@ -2,7 +2,9 @@
 # OSU 0.18 um area and timing of RTL tops (scripts/stdcell_flow.sh through `texunit stdcell`), cached
 # in docs/report/stdcell_cache.json by the hash of each top's RTL files and the flow script; the
 # report reads that cache and never synthesises. Netlists go to build/stdcell/TOP.v (gate level).
-# Usage: scripts/stdcell.sh [--force] [TOP...]   (default: every top in the Yosys cache, smallest first)
+# Usage: scripts/stdcell.sh [--force] [--hier] [TOP...]   (default: every top in the Yosys cache, smallest first)
+#        --hier: the hierarchical flow (scripts/stdcell_hier.py; cache docs/report/stdcell_hier.json,
+#        module netlists in build/stdcell_modules/, two modules mapped at once)
 #        scripts/stdcell.sh --table   prints the cache as the Markdown table of docs/area-timing.md
 #        Large tops (tu_ewa, tu_ellipse, tu_texture_unit) take long: run them in the background, e.g.
 #        nohup scripts/stdcell.sh tu_ewa > build/stdcell_ewa.log 2>&1 &
@@ -40,9 +42,10 @@ PY
 fi
 force=()
 if [ "${1:-}" = --force ]; then force=(--force); shift; fi
+if [ "${1:-}" = --hier ]; then force+=(--hier --jobs 2); shift; fi
 tops=("$@")
 if [ ${#tops[@]} -eq 0 ]; then
   mapfile -t tops < <(python3 -c "import json; d = json.load(open('docs/report/yosys_cache.json'))
 for t in sorted(d, key=lambda t: d[t]['cells']): print(t)")
 fi
-exec nice "$tu" stdcell "${tops[@]}" --cache docs/report/stdcell_cache.json --netlists build/stdcell "${force[@]}"
+exec nice "$tu" stdcell "${tops[@]}" --root . --update-cache "${force[@]}"

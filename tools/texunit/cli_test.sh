@@ -435,6 +435,92 @@ PY
     if "$tu" merge "$tmp"/r0.json "$tmp"/r0.json --json "$tmp/x.json" 2>"$tmp/err"; then fail "merged a report shard twice"; fi
     grep -q "r0.json: shard 0/4 given twice" "$tmp/err" && [ ! -e "$tmp/x.json" ] || fail "message: $(cat "$tmp/err")"
     ;;
+  stdcell_tool_reasons)
+    # A missing tool or Liberty file: exit 2, the reason and the Debian package, no cache written
+    # (flattened and hierarchical flow). PATH holds only the interpreters the scripts need.
+    mkdir -p "$tmp/bin"; ln -s "$(command -v bash)" "$tmp/bin/bash"
+    ln -s "$(python3 -c 'import sys; print(sys.executable)')" "$tmp/bin/python3"
+    reason() {
+      local want=$1 rc=0; shift
+      PATH="$tmp/bin" "$tu" stdcell tu_reciprocal --cache "$tmp/c.json" --netlists "$tmp/n" --module-cache "$tmp/m" "$@" 2>"$tmp/err" || rc=$?
+      [ "$rc" = 2 ] || fail "exit $rc without: $want"
+      grep -qF "$want" "$tmp/err" || fail "message: $(cat "$tmp/err")"
+    }
+    for h in "" --hier; do
+      rm -f "$tmp/bin/yosys" "$tmp/bin/sta"
+      reason "yosys not installed (Debian package yosys)" $h
+      printf '#!/bin/sh\nexit 1\n' >"$tmp/bin/yosys"; chmod +x "$tmp/bin/yosys"
+      reason "OpenSTA (sta) not installed (Debian package opensta)" $h
+      cp "$tmp/bin/yosys" "$tmp/bin/sta"
+      TU_OSU018_LIB="$tmp/none.lib" reason "$tmp/none.lib missing (Debian package qflow-tech-osu018)" $h
+    done
+    [ ! -e "$tmp/c.json" ] || fail "a failed run wrote the cache"
+    ;;
+  stdcell_default_cache)
+    # Without --cache, `texunit stdcell` reads the tracked docs/report/stdcell_cache.json and writes
+    # build/stdcell/stdcell_cache.json; only --update-cache writes the tracked file. Run from
+    # another directory on a copy of the repository (stand-in flow script: fixed figures).
+    mkdir -p "$tmp/r/scripts" "$tmp/r/docs/report" "$tmp/elsewhere"; cp -r rtl "$tmp/r/"
+    printf '#!/bin/sh\necho "{\\"top\\": \\"$1\\", \\"area_um2\\": 1.0, \\"period_ns\\": 5.0, \\"path_from\\": \\"a\\", \\"path_to\\": \\"b\\"}"\n' \
+      > "$tmp/r/scripts/stdcell_flow.sh"
+    chmod +x "$tmp/r/scripts/stdcell_flow.sh"
+    tracked="$tmp/r/docs/report/stdcell_cache.json"
+    cp docs/report/stdcell_cache.json "$tracked"; cp "$tracked" "$tmp/orig.json"
+    (cd "$tmp/elsewhere" && "$tu" stdcell tu_reciprocal --root "$tmp/r" --force 2>/dev/null) || fail "stdcell failed"
+    cmp -s "$tracked" "$tmp/orig.json" || fail "the tracked cache was written without --update-cache"
+    [ "$(val "$tmp/r/build/stdcell/stdcell_cache.json" "d['tu_reciprocal']['area_um2']")" = 1.0 ] || fail "local cache"
+    (cd "$tmp/elsewhere" && "$tu" stdcell tu_reciprocal --root "$tmp/r" --force --update-cache 2>/dev/null) || fail "--update-cache failed"
+    [ "$(val "$tracked" "d['tu_reciprocal']['area_um2'], len(d) == $(val "$tmp/orig.json" "len(d)")")" = "(1.0, True)" ] ||
+      fail "--update-cache: $(val "$tracked" "d['tu_reciprocal']")"
+    ;;
+  report_any_directory)
+    # `texunit report` outside the repository: the repository's caches by default, read only.
+    cp docs/report/yosys_cache.json "$tmp/y.json"
+    (cd "$tmp" && "$tu" report --blocks reciprocal --count 300 --json "$tmp/r.json" >/dev/null 2>&1) || fail "report failed outside the repository"
+    [ "$(val "$tmp/r.json" "all(isinstance(r[k], (int, float)) and r[k] > 0 for r in d for k in ('area_um2', 'period_ns'))")" = True ] ||
+      fail "stdcell fields: $(val "$tmp/r.json" "d[0]['stdcell_source']")"
+    if command -v yosys >/dev/null; then
+      [ "$(val "$tmp/r.json" "all(isinstance(r['cells'], int) for r in d)")" = True ] || fail "cells: $(val "$tmp/r.json" "d[0]['cells']")"
+    fi
+    cmp -s docs/report/yosys_cache.json "$tmp/y.json" || fail "the tracked Yosys cache was written without --update-cache"
+    ;;
+  stdcell_hier)
+    # Hierarchical flow on a copy of the repository: each module mapped once and cached; a comment
+    # re-maps nothing (same netlist), a change to the top re-maps the top only.
+    for t in yosys sta; do command -v $t >/dev/null || { echo "skipped: $t not installed"; exit 0; }; done
+    [ -f "${TU_OSU018_LIB:-/usr/share/qflow/tech/osu018/osu018_stdcells.lib}" ] || { echo "skipped: no osu018 Liberty"; exit 0; }
+    mkdir -p "$tmp/r/scripts"; cp -r rtl "$tmp/r/"; cp scripts/stdcell_hier.py "$tmp/r/scripts/"
+    run() { "$tu" stdcell tu_reciprocal --hier --root "$tmp/r" --cache "$tmp/c.json" --module-cache "$tmp/m" --netlists "$tmp/n" --force 2>/dev/null ||
+              fail "stdcell --hier failed"; }
+    e="d['tu_reciprocal']"
+    run
+    [ "$(val "$tmp/c.json" "$e['mapped'] == $e['modules'] > 1 and $e['area_um2'] > 0 and $e['period_ns'] > 0")" = True ] || fail "first run: $(val "$tmp/c.json" "$e")"
+    cp "$tmp/n/tu_reciprocal.v" "$tmp/n1.v"
+    fig() { val "$tmp/c.json" "[$e[k] for k in ('area_um2', 'cells', 'flip_flops', 'period_ns', 'path_from', 'path_to')]"; }
+    f1=$(fig)
+    sed -i '1i // a comment' "$tmp/r/rtl/reciprocal/tu_recip_core_y.sv"
+    run
+    [ "$(val "$tmp/c.json" "$e['mapped']")" = 0 ] || fail "a comment re-mapped $(val "$tmp/c.json" "$e['mapped']") modules"
+    cmp -s "$tmp/n/tu_reciprocal.v" "$tmp/n1.v" && [ "$(fig)" = "$f1" ] || fail "netlist or figures changed without a design change"
+    sed -i 's/^endmodule/  logic hier_test_unused;\n  assign hier_test_unused = 1'"'"'b0;\nendmodule/' "$tmp/r/rtl/reciprocal/tu_reciprocal.sv"
+    run
+    [ "$(val "$tmp/c.json" "$e['mapped']")" = 1 ] || fail "a change to the top re-mapped $(val "$tmp/c.json" "$e['mapped']") modules"
+    ;;
+  stdcell_hier_deterministic)
+    # Two copies of the repository in different directories, one and two jobs, separate module
+    # caches: byte-identical module netlists, top netlist and figures.
+    for t in yosys sta; do command -v $t >/dev/null || { echo "skipped: $t not installed"; exit 0; }; done
+    [ -f "${TU_OSU018_LIB:-/usr/share/qflow/tech/osu018/osu018_stdcells.lib}" ] || { echo "skipped: no osu018 Liberty"; exit 0; }
+    for x in a b/deeper; do mkdir -p "$tmp/$x/scripts"; cp -r rtl "$tmp/$x/"; cp scripts/stdcell_hier.py "$tmp/$x/scripts/"; done
+    "$tu" stdcell tu_reciprocal --hier --root "$tmp/a" --cache "$tmp/a.json" --jobs 1 2>/dev/null || fail "run a"
+    (cd "$tmp" && "$tu" stdcell tu_reciprocal --hier --root "$tmp/b/deeper" --cache "$tmp/b.json" --jobs 2 2>/dev/null) || fail "run b"
+    cmp "$tmp/a/build/stdcell_hier/tu_reciprocal.v" "$tmp/b/deeper/build/stdcell_hier/tu_reciprocal.v" || fail "top netlists differ"
+    (cd "$tmp/a/build/stdcell_modules" && ls *.v *.json) > "$tmp/la"; (cd "$tmp/b/deeper/build/stdcell_modules" && ls *.v *.json) > "$tmp/lb"
+    cmp -s "$tmp/la" "$tmp/lb" || fail "module keys differ"
+    for f in $(cat "$tmp/la"); do cmp -s "$tmp/a/build/stdcell_modules/$f" "$tmp/b/deeper/build/stdcell_modules/$f" || fail "module $f differs"; done
+    strip="{k: v for k, v in d['tu_reciprocal'].items() if k != 'flow_seconds'}"
+    [ "$(val "$tmp/a.json" "$strip")" = "$(val "$tmp/b.json" "$strip")" ] || fail "figures differ"
+    ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"

@@ -451,13 +451,17 @@ int main(int argc, char** argv) {
   rep->add_option("--markdown", ro.markdown, "write a Markdown table grouped per block");
   rep->add_option("--count", ro.count, "random vectors per registry block (plus its stiff set)")
       ->check(tu::cli::non_negative_integer() & CLI::Range(1ull, 1ull << 26));
-  rep->add_option("--yosys-cache", ro.yosys_cache, "JSON cache of Yosys results (keyed by the RTL files' hash)");
+  rep->add_option("--yosys-cache", ro.yosys_cache, "JSON cache of Yosys results, keyed by the RTL files' hash "
+                  "(default: the repository's docs/report/yosys_cache.json, read only without --update-cache)");
+  rep->add_flag("--update-cache", ro.update_cache, "synthesise the tops whose default Yosys cache entry is stale and save them there");
   rep->add_flag("--no-yosys", no_yosys, "do not synthesise (cells: not measured)");
   rep->add_flag("--yosys-cached-only", ro.yosys_cached_only,
                 "take cells from matching --yosys-cache entries only; never synthesise (stale: not measured)");
-  rep->add_option("--stdcell-cache", ro.stdcell_cache, "standard-cell results (texunit stdcell); read only")
+  rep->add_option("--stdcell-cache", ro.stdcell_cache, "standard-cell results (texunit stdcell); read only "
+                  "(default: the repository's docs/report/stdcell_cache.json)")
       ->check(CLI::ExistingFile);
-  rep->add_option("--root", ro.root, "repository root (RTL for Yosys)")->check(CLI::ExistingDirectory);
+  rep->add_option("--root", ro.root, "repository root (default: the source directory texunit was built from)")
+      ->check(CLI::ExistingDirectory);
   rep->add_option("--shard", shard_text, "measure the block groups i with i % N == K (groups in report order)")
       ->check(tu::cli::shard_spec());
 
@@ -480,15 +484,21 @@ int main(int argc, char** argv) {
   rtf->add_option("--key", rtl_key, "instead: the top's cache key in docs/report/{yosys,stdcell}_cache.json (the hash of its files)")
       ->check(CLI::IsMember({"yosys", "stdcell"}));
 
-  std::vector<std::string> sc_tops;
-  std::string sc_cache = "docs/report/stdcell_cache.json", sc_netlists = "build/stdcell";
-  bool sc_force = false;
+  tu::report::StdcellOptions sc;
   auto* stc = app.add_subcommand("stdcell", "OSU 0.18 um area and timing of RTL tops (scripts/stdcell_flow.sh), cached");
-  stc->add_option("TOPS", sc_tops, "RTL tops, e.g. tu_reciprocal")->required();
-  stc->add_option("--cache", sc_cache, "JSON cache keyed by the hash of the RTL files and the flow script");
-  stc->add_option("--netlists", sc_netlists, "directory for the gate-level netlists (TOP.v)");
-  stc->add_option("--root", root, "repository root")->check(CLI::ExistingDirectory);
-  stc->add_flag("--force", sc_force, "re-synthesise even when the cache is current");
+  stc->add_option("TOPS", sc.tops, "RTL tops, e.g. tu_reciprocal")->required();
+  stc->add_option("--cache", sc.cache, "JSON cache keyed by the hash of the RTL files and the flow script, read and "
+                  "written (default: read docs/report/, write build/stdcell/ of the repository)");
+  stc->add_flag("--update-cache", sc.update_cache, "write the results into the tracked docs/report/ cache");
+  stc->add_option("--netlists", sc.netlists, "directory for the gate-level netlists TOP.v (default: build/stdcell, "
+                  "build/stdcell_hier with --hier)");
+  stc->add_flag("--hier", sc.hier, "hierarchical flow (scripts/stdcell_hier.py): each module mapped once, cached; "
+                "cache docs/report/stdcell_hier.json");
+  stc->add_option("--module-cache", sc.module_cache, "--hier: directory of the module netlists (default: build/stdcell_modules)");
+  stc->add_option("--jobs", sc.jobs, "--hier: modules mapped at once")->check(CLI::Range(1, 256));
+  stc->add_option("--root", sc.root, "repository root (default: the source directory texunit was built from)")
+      ->check(CLI::ExistingDirectory);
+  stc->add_flag("--force", sc.force, "re-synthesise even when the cache is current");
 
   tu::plan::Options po;
   auto* pln = app.add_subcommand("plan", "specialise the unit to a scene: blocks, variants, RTL configuration");
@@ -533,7 +543,7 @@ int main(int argc, char** argv) {
       return tu::report::run(ro);
     }
     if (*pln) return tu::plan::run(po);
-    if (*stc) return tu::report::stdcell(sc_tops, root, sc_cache, sc_netlists, sc_force);
+    if (*stc) return tu::report::stdcell(sc);
     if (*rtf) return cmd_rtl_files(root, rtl_top, rtl_list, rtl_key);
     if (*cpx) return cmd_complexity(cx_in, cx_out, cx);
     if (*rqc) return afvis_scene.empty() ? cmd_relief_quality(rq) : cmd_afvis_quality(afvis_scene, afq, afvis_plot);

@@ -295,13 +295,30 @@ void stdcell_area(Row& r, const Options& opt) {
   r.stdcell_source = "osu018 (scripts/stdcell_flow.sh)";
 }
 
+// The Debian package of a tool a flow script reports missing (scripts print {"error": "..."}).
+std::string with_package(const std::string& why) {
+  if (why.find("Debian package") != std::string::npos) return why;
+  if (const auto at = why.find("(package "); at != std::string::npos)  // the flattened flow's Liberty message
+    return why.substr(0, at) + "(Debian package " + why.substr(at + 9);
+  if (why.rfind("yosys not installed", 0) == 0) return why + " (Debian package yosys)";
+  if (why.find("(sta) not installed") != std::string::npos) return why + " (Debian package opensta)";
+  return why;
+}
+
 // Runs a flow script (prints one JSON object) and parses its output; `cmd` is the whole command.
+// A script that cannot run (a tool or the Liberty file missing) prints {"error": WHY}: the
+// message gives WHY and the package to install.
 json run_flow(const std::string& cmd, const std::string& what) {
   FILE* p = popen((cmd + " 2>/dev/null").c_str(), "r");
   std::string out;
   char buf[512];
   while (p && fgets(buf, sizeof buf, p)) out += buf;
-  if (!p || pclose(p) != 0) throw std::runtime_error("report: " + what + " failed (run " + cmd + ")");
+  if (!p || pclose(p) != 0) {
+    const json e = json::parse(out, nullptr, false);
+    if (e.is_object() && e.contains("error") && e.at("error").is_string())
+      throw std::runtime_error(what + ": " + with_package(e.at("error").get<std::string>()));
+    throw std::runtime_error("report: " + what + " failed (run " + cmd + ")");
+  }
   return json::parse(out);
 }
 
@@ -325,7 +342,7 @@ void area(Row& r, const Options& opt, AreaCache& cache) {
   const std::string key = rtl_hash(opt.root, r.rtl_top, "scripts/yosys_area.sh");
   const auto hit = cache.j.find(r.rtl_top);
   if (opt.yosys_cached_only && (hit == cache.j.end() || !hit->is_object() || hit->value("hash", "") != key)) {
-    r.area_source = "not measured: no Yosys cache entry for this RTL (scripts/report.sh synthesises it)";
+    r.area_source = "not measured: no Yosys cache entry for this RTL (scripts/report.sh or texunit report --update-cache synthesises it)";
     return;  // a stale entry is not a measurement of this RTL
   }
   json& e = cache.j[r.rtl_top];
@@ -697,7 +714,9 @@ std::vector<std::string> groups() {
   return g;
 }
 
-std::vector<Row> rows(const Options& opt) {
+std::vector<Row> rows(const Options& in) {
+  Options opt = in;
+  opt.root = repo_root(opt.root);
   const auto known = groups();
   for (const auto& b : opt.blocks)
     if (std::find(known.begin(), known.end(), b) == known.end()) {
@@ -739,37 +758,66 @@ std::vector<Row> rows(const std::vector<std::string>& blocks, const std::string&
   return rows(o);
 }
 
-int stdcell(const std::vector<std::string>& tops, const std::string& root, const std::string& cache_path,
-            const std::string& netlists, bool force) {
-  AreaCache cache(cache_path);
-  for (const auto& top : tops) {
-    const std::string key = rtl_hash(root, top, "scripts/stdcell_flow.sh");
+std::string repo_root(const std::string& given) {
+  if (!given.empty()) return given;
+#ifdef TU_SOURCE_DIR
+  if (fs::exists(fs::path(TU_SOURCE_DIR) / "rtl" / "manifest.json")) return TU_SOURCE_DIR;
+#endif
+  return ".";
+}
+
+int stdcell(const StdcellOptions& o) {
+  const std::string root = repo_root(o.root);
+  const std::string script = o.hier ? "scripts/stdcell_hier.py" : "scripts/stdcell_flow.sh";
+  const std::string name = o.hier ? "stdcell_hier.json" : "stdcell_cache.json";
+  const std::string tracked = root + "/docs/report/" + name, local = root + "/build/stdcell/" + name;
+  // The cache written: the one named, the tracked one when asked, else the local one; a current
+  // entry of the tracked cache is used in any case (it is the committed measurement).
+  const std::string out = !o.cache.empty() ? o.cache : o.update_cache ? tracked : local;
+  AreaCache cache(out);
+  const AreaCache committed(o.cache.empty() && out != tracked ? tracked : "");
+  const std::string netlists = !o.netlists.empty() ? o.netlists : root + (o.hier ? "/build/stdcell_hier" : "/build/stdcell");
+  const std::string modules = !o.module_cache.empty() ? o.module_cache : root + "/build/stdcell_modules";
+  for (const auto& top : o.tops) {
+    const std::string key = rtl_hash(root, top, script);
     const std::string net = netlists + "/" + top + ".v";
     json& e = cache.j[top];
+    const auto current = [&](const json& x) { return x.is_object() && x.value("hash", "") == key; };
+    if (!o.force && !current(e) && committed.j.contains(top) && current(committed.j.at(top))) e = committed.j.at(top);
     // A current entry is kept unless its netlist is wanted and missing (the flow is deterministic:
     // the re-run only writes the netlist again).
-    if (!force && e.is_object() && e.value("hash", "") == key && fs::exists(net)) {
+    if (!o.force && current(e) && fs::exists(net)) {
       std::cerr << "stdcell: " << top << " current (hash " << key << "), netlist " << net << "\n";
       continue;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    std::cerr << "stdcell: synthesising " << top << "\n";
-    e = run_flow(root + "/scripts/stdcell_flow.sh " + top + " " + net + " " + file_list(rtl_files(root, top)),
+    std::cerr << "stdcell: synthesising " << top << (o.hier ? " (hierarchical)" : "") << "\n";
+    const std::string args = o.hier ? " --cache-dir " + modules + " --jobs " + std::to_string(o.jobs) + " " : " ";
+    e = run_flow(root + "/" + script + args + top + " " + net + " " + file_list(rtl_files(root, top)),
                  "the standard-cell flow on " + top);
     e["hash"] = key;
     e["flow_seconds"] = std::round(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     cache.save_entry(top);  // after every top: a long background run keeps what it measured
     std::cerr << "stdcell: " << top << " " << e.at("area_um2") << " um2, " << e.at("period_ns") << " ns, "
-              << e.at("path_from").get<std::string>() << " -> " << e.at("path_to").get<std::string>() << "\n";
+              << e.at("path_from").get<std::string>() << " -> " << e.at("path_to").get<std::string>() << " (saved in "
+              << out << ")\n";
   }
   return 0;
 }
 
 int run(const Options& in) {
   Options opt = in;
+  opt.root = repo_root(opt.root);
+  // The repository's caches by default; the tracked Yosys cache is written only when asked
+  // (without --update-cache a stale entry is "not measured", never a silent re-synthesis).
+  if (opt.yosys_cache.empty()) {
+    opt.yosys_cache = opt.root + "/docs/report/yosys_cache.json";
+    if (!opt.update_cache) opt.yosys_cached_only = true;
+  }
+  if (opt.stdcell_cache.empty()) opt.stdcell_cache = opt.root + "/docs/report/stdcell_cache.json";
   if (opt.yosys && std::system("command -v yosys >/dev/null 2>&1") != 0) {
     opt.yosys = false;
-    opt.no_yosys_why = "yosys not installed";
+    opt.no_yosys_why = "yosys not installed (Debian package yosys)";
   }
   // Everything is measured before any file is written: a failure leaves no partial output.
   write(rows(opt), opt);
