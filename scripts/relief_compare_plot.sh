@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Relief methods compared (docs/blocks/relief.md §13.6): PSNR against the exact intersection vs
+# Relief methods compared (docs/blocks/relief-appendix.md §13.6): PSNR against the exact intersection vs
 # modelled cycles per pixel, one panel per height map, at 60 and 80 degrees.
 # Usage: scripts/relief_compare_plot.sh [TEXUNIT] [OUT_DIR]   (default: build/default/tools/texunit/texunit, docs/blocks/relief)
 set -euo pipefail

@@ -37,7 +37,7 @@ ewa::fx::Weights weights_of(scene::WeightSource w) {
   return ewa::fx::Weights::Formula;
 }
 
-// Relief (docs/blocks/relief.md §9): B1's u, v codes are shifted by the material's method
+// Relief (docs/blocks/relief-appendix.md §9): B1's u, v codes are shifted by the material's method
 // (relief::shift_texel_uv_fx, the step the RTL tu_relief_stage implements). The tangent-space
 // view is the shader's float input, quantised to the unit's s16.14 (as render_ref).
 // Returns the pixel's quantised view (nullopt: no view, no shift).

@@ -1,4 +1,4 @@
-// Procedural materials in the render engines (docs/blocks/noise.md §5): the scene's description
+// Procedural materials in the render engines (docs/blocks/noise-appendix.md §5): the scene's description
 // in noise units, and the per-pixel colour of the float reference, the C model and the truth.
 #include <algorithm>
 #include <cmath>

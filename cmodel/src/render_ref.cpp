@@ -141,7 +141,7 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
     // What B1 cannot set up is refused here too: every engine renders the same scenes.
     (void)setup_fx(s, o, texs.back().levels[0].width, texs.back().levels[0].height);
   }
-  // Per object with relief: depth / complexity maps (docs/blocks/relief.md §9).
+  // Per object with relief: depth / complexity maps (docs/blocks/relief-appendix.md §9).
   std::vector<std::optional<relief::Maps>> reliefs;
   for (const auto& o : s.objects)
     reliefs.push_back(s.materials.at(o.material).relief ? std::optional(relief::make_maps(s, o.material))

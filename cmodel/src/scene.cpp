@@ -276,7 +276,7 @@ Procedural parse_procedural(Node p) {
   const auto kind = p.str("kind", {}, {"fbm", "smoke", "water"});
   pr.kind = kind == "smoke" ? ProceduralKind::Smoke : kind == "water" ? ProceduralKind::Water : ProceduralKind::Fbm;
   pr.octaves = p.integer("octaves", 1, fmt::kNoiseOctaves, fmt::kNoiseOctaves);
-  // f / texture width < 256 keeps the frequency code in u32.24 (docs/blocks/noise.md §5).
+  // f / texture width < 256 keeps the frequency code in u32.24 (docs/blocks/noise-appendix.md §5).
   pr.frequency = p.num("frequency", 1.0 / 256, 128, 8.0);
   pr.seed = p.integer("seed", 0, 255, 0);
   pr.time = p.num("time", -1e6, 1e6, 0.0);

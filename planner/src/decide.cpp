@@ -127,7 +127,7 @@ double texels_per_pixel(const render::Frame& f) {
 // relief stage's cycles per pixel of the material (relief::stage_cycles over its pixels in raster
 // order: exact, = the RTL, ReliefStageCosim); the cheapest meeting min_psnr_db, else the best.
 // distance_map_refined is a candidate only where the material authors it (its map takes tens of
-// seconds to build on a 256-texel height; on the maps of docs/blocks/relief.md §13.6 it equals
+// seconds to build on a 256-texel height; on the maps of docs/blocks/relief-appendix.md §13.6 it equals
 // the classic one).
 ReliefChoice choose_relief(const scene::Scene& s, const std::string& material, const render::Frame& ref) {
   const auto authored = s.materials.at(material).relief->method;
@@ -161,7 +161,7 @@ ReliefChoice choose_relief(const scene::Scene& s, const std::string& material, c
   return c;
 }
 
-// The noise unit (docs/blocks/noise.md §5 "In the RTL texture unit"): in the unit when a material
+// The noise unit (docs/blocks/noise-appendix.md §5 "In the RTL texture unit"): in the unit when a material
 // is procedural; 2-D cores unless a material moves through time (speed != 0); the fewest octave
 // cores K whose C-model render (each material's octaves capped at K, C_K for the capped count)
 // meets min_psnr_db against the float reference with every material's own octaves, over the

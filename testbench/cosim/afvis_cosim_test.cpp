@@ -1,4 +1,4 @@
-// Visibility engine co-simulation (rtl/ewa/tu_afvis.sv, docs/blocks/afvis.md §5): cycles per pixel
+// Visibility engine co-simulation (rtl/ewa/tu_afvis.sv, docs/blocks/afvis-appendix.md §5): cycles per pixel
 // depend on the box and the traces, so the engine is not in the fixed-latency Cosim suite: 0
 // mismatches (colour, level, counts, flags, kept, traced, depth reads) with 30 % stalls on the
 // golden, stiff and random sets, the scoreboard catches a corrupted value, and the cycle model

@@ -662,7 +662,7 @@ uint64_t expect_rtl_equals_cmodel(const scene::Scene& s, const char* what, size_
 }
 }  // namespace
 
-// The noise unit in the top (docs/blocks/noise.md §5 "In the RTL unit"): docs/scenes/procedural.json
+// The noise unit in the top (docs/blocks/noise-appendix.md §5 "In the RTL unit"): docs/scenes/procedural.json
 // at 64 x 48 (fbm ground, smoke wall), then with time, fewer octaves and no footprint limit, then
 // with the wall textured (engine turns between the noise unit and EWA): RTL = C model on every
 // pixel with 30 % stalls, cycles = ewa::texture_unit_cycles without.
@@ -684,7 +684,7 @@ TEST(TextureUnitRtl, ProceduralSceneEqualsCModelCyclesPredicted) {
   EXPECT_THROW(cosim::render_rtl(s, bil), std::invalid_argument);
 }
 
-// Water in the noise unit (docs/blocks/noise.md §5 "Water on the RTL"): docs/scenes/water.json at
+// Water in the noise unit (docs/blocks/noise-appendix.md §5 "Water on the RTL"): docs/scenes/water.json at
 // 48 x 36 (three octave sums per pixel, normal, square root, divide), at the amplitude's largest
 // code without the footprint limit (steepest normals), and docs/scenes/procedural.json with its
 // smoke wall as water (turns between fbm and water pixels in the noise unit): RTL = C model on

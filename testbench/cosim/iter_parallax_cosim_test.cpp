@@ -1,4 +1,4 @@
-// Iterative parallax engine co-simulation (docs/blocks/relief.md §7): data-dependent cycles,
+// Iterative parallax engine co-simulation (docs/blocks/relief-appendix.md §7): data-dependent cycles,
 // so not in the generic fixed-latency Cosim suite. 0 mismatches with 30 % stalls; cycles per
 // pixel = iterations + 3 (measured vs predicted within 5 %); non-convergence rate of a scene.
 #include <gtest/gtest.h>

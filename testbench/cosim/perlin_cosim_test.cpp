@@ -1,7 +1,7 @@
 // Perlin noise unit: both RTL schemes (pipelined tu_perlin{3,2}d, octave-serial
 // tu_perlin{3,2}d_serial) on the golden, stiff and 100,000 random vectors of blocks perlin3d and
 // perlin2d with 30% random stalls: bit-exact, one output per input in order, declared latency and
-// II measured on Verilator. The 1,000,000-vector runs: docs/blocks/noise.md §4.
+// II measured on Verilator. The 1,000,000-vector runs: docs/blocks/noise-appendix.md §4.
 #include <gtest/gtest.h>
 
 #include "cosim_checks.hpp"

@@ -1,4 +1,4 @@
-// POM march engine co-simulation (docs/blocks/relief.md §6). Cycles per pixel depend on the
+// POM march engine co-simulation (docs/blocks/relief-appendix.md §6). Cycles per pixel depend on the
 // number of march steps k, so this block is not in the generic fixed-latency Cosim suite:
 // 0 mismatches with 30 % stalls on golden/stiff/random, and the cycle prediction
 // pom::march_cycles = sum(k + 1) + 2 agrees with the measured cycles of a rendered scene within 5 %.

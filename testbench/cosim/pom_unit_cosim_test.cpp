@@ -1,4 +1,4 @@
-// POM set-up, refinement and per-pixel unit co-simulation (docs/blocks/relief.md §8):
+// POM set-up, refinement and per-pixel unit co-simulation (docs/blocks/relief-appendix.md §8):
 // 0 mismatches with 30 % stalls on golden / stiff / random; set-up and refinement have a fixed
 // latency and II 1; the unit's cycles over a scene's pixel stream match pom::unit_cycles.
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@ class PomStageCosim : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PomStageCosim, GoldenStiffRandomWithStalls) {
   const auto& b = blocks::find(GetParam());
-  if (GetParam() == "pom_unit") {  // data-dependent latency; error vs march_ref: §8 of relief.md
+  if (GetParam() == "pom_unit") {  // data-dependent latency; error vs march_ref: §8 of docs/blocks/relief-appendix.md
     cosim::checks::for_each_set_with_stalls(b, [](const vec::VectorFile&, const cosim::Report&) {});
     return;
   }

@@ -389,7 +389,7 @@ TEST(ReliefStageCosim, DistanceMapSceneWithStallsAndCycles) {
 // Seeded random distance-map pixels with extremes (grazing, behind, straight and zero views; caps
 // 1 and DmCapMax; flat maps that stop at once or reach the bottom; 1 and 255 map layers; a
 // refined map), mixed with POM and iterative pixels that share the depth port. TU_DM_RANDOM=N
-// runs N pixels instead of 3,000 (the 1,000,000-pixel run of docs/blocks/relief.md §13.8).
+// runs N pixels instead of 3,000 (the 1,000,000-pixel run of docs/blocks/relief-appendix.md §13.8).
 TEST(ReliefStageCosim, DistanceMapRandomAndExtremesWithStalls) {
   const char* count_env = std::getenv("TU_DM_RANDOM");
   const int count = count_env ? std::max(1, std::atoi(count_env)) : 3000;

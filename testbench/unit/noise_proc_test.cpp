@@ -1,4 +1,4 @@
-// Procedural materials (docs/blocks/noise.md §5): the footprint-limited octave weights
+// Procedural materials (docs/blocks/noise-appendix.md §5): the footprint-limited octave weights
 // (exhaustive over B2's lrho codes), the procedural value against its float reference, the
 // documented corner cases (full weights = the block's fBm, no footprint = the mean, the period
 // wrap at extreme codes), and in a render: C model against the float reference, and the footprint

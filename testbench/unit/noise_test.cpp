@@ -273,7 +273,7 @@ TEST(NoiseFbm, ErrorBoundAndRange) {
   for (int dims : {2, 3}) {
     std::mt19937_64 rng(100 + dims);
     double max_err = 0, sum_sq = 0;
-    const int n = 1 << (18 - kLog2Thin);  // 1,000,000 points: the co-simulation runs (noise.md §4)
+    const int n = 1 << (18 - kLog2Thin);  // 1,000,000 points: the co-simulation runs (docs/blocks/noise-appendix.md §4)
     for (int i = 0; i < n; ++i) {
       const int64_t x = rand_code(rng), y = rand_code(rng), z = rand_code(rng);
       const uint32_t o = fbm_fx(dims, x, y, z);

@@ -1,4 +1,4 @@
-// Relief in the render path (docs/blocks/relief.md §9): tangent frame, the bit-accurate per-pixel
+// Relief in the render path (docs/blocks/relief-appendix.md §9): tangent frame, the bit-accurate per-pixel
 // shift, and the float reference render with relief per material.
 #include <gtest/gtest.h>
 

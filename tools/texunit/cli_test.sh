@@ -164,7 +164,7 @@ SV
     ;;
   plan_procedural)
     # Procedural materials: the noise unit, 3-D cores (the smoke moves through time), the fewest
-    # octave cores meeting min_psnr_db on the procedural pixels (docs/blocks/noise.md §5).
+    # octave cores meeting min_psnr_db on the procedural pixels (docs/blocks/noise-appendix.md §5).
     "$tu" plan docs/scenes/procedural.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
     [ "$(val "$tmp/p.json" "d['noise']['dims'], sorted(d['noise']['materials'])")" = "(3, ['marble', 'smoke'])" ] || fail "$(cat "$tmp/p.json")"
     k=$(val "$tmp/p.json" "d['noise']['octave_cores']")
@@ -199,7 +199,7 @@ SV
     [ "$(val "$tmp/p.json" "any('iter_parallax' in b for b in d['specialised']['blocks'])")" = True ] || fail "iterative relief"
     ;;
   plan_af_visibility)
-    # AF with parallax visibility (docs/blocks/afvis.md §5): the unit keeps tu_afvis when a material
+    # AF with parallax visibility (docs/blocks/afvis-appendix.md §5): the unit keeps tu_afvis when a material
     # asks for it and reports its clocks; a scene without the flag leaves it out.
     "$tu" plan docs/scenes/af_visibility.json --json --out "$tmp/cfg.sv" >"$tmp/p.json"
     grep -q "localparam bit HasAfvis = 1'b1;" "$tmp/cfg.sv" || fail "af_visibility.json: HasAfvis not 1: $(cat "$tmp/cfg.sv")"
@@ -269,7 +269,7 @@ SV
     [ ! -e "$tmp/bad2/objspace_ref.png" ] || fail "partial output written"
     ;;
   relief_quality_afvis)
-    # relief-quality --afvis (docs/blocks/afvis.md §4): one row per visibility variant, plain traces
+    # relief-quality --afvis (docs/blocks/afvis-appendix.md §4): one row per visibility variant, plain traces
     # nothing; the height PNGs' temporary directory is removed; a scene without relief is refused.
     mkdir -p "$tmp/p"
     "$tu" relief-quality --afvis docs/scenes/af_visibility.json --afvis-maps bricks,gravel --afvis-heights 1 --afvis-ss 2 \

@@ -192,7 +192,7 @@ int cmd_relief_quality(const tu::pom::QualityParams& p) {
   return 0;
 }
 
-// relief-quality --afvis SCENE (docs/blocks/afvis.md §4): plain EWA and each visibility rule against
+// relief-quality --afvis SCENE (docs/blocks/afvis-appendix.md §4): plain EWA and each visibility rule against
 // the truth on the scene's relief pixels, per height map and camera height. The height PNGs go to a
 // private temporary directory, removed afterwards.
 int cmd_afvis_quality(const std::string& scene_arg, tu::afvis::QualityParams p, const std::string& plot_dir) {
@@ -365,7 +365,7 @@ int main(int argc, char** argv) {
 
   std::string cx_in, cx_out;
   tu::complexity::Params cx;
-  auto* cpx = app.add_subcommand("complexity", "complexity map of a height map (seed-000 POM)");
+  auto* cpx = app.add_subcommand("complexity", "complexity map of a height map for adaptive POM (docs/methods/relief.md)");
   cpx->add_option("HEIGHT", cx_in, "height map PNG (first channel)")->required();
   cpx->add_option("OUT", cx_out, "output PNG (8-bit grey level codes)")->required();
   cpx->add_option("--levels", cx.levels, "quantisation levels")->check(CLI::Range(2, 256));
@@ -374,13 +374,13 @@ int main(int argc, char** argv) {
 
   std::string dm_in, dm_out, dm_slices;
   tu::dm::Params dmp;
-  auto* dmc = app.add_subcommand("distance-map", "3-D distance map of a height map for sphere-traced relief (seed 003)");
+  auto* dmc = app.add_subcommand("distance-map", "3-D distance map of a height map for sphere-traced relief (docs/methods/relief.md)");
   dmc->add_option("HEIGHT", dm_in, "height map PNG (first channel, 255 = top; square, power of two up to 512)")->required();
   dmc->add_option("OUT", dm_out, "output base name: writes OUT.raw (voxels) and OUT.json (header)")->required();
   dmc->add_option("--depth", dmp.layers, "layers D of the map (1..255)")->required()->check(CLI::Range(1, tu::dm::kMaxLayers));
   dmc->add_option("--scale", dmp.scale, "relief depth in texture repeats (the material's scale)")
       ->check(tu::cli::finite_in(1e-6, 0.99));
-  dmc->add_flag("--refined", dmp.refined, "the visibility-refined map (seed 003 chapter 4)");
+  dmc->add_flag("--refined", dmp.refined, "the visibility-refined map (docs/methods/relief.md)");
   dmc->add_option("--direction-step", dmp.direction_step_deg, "refined: degrees between view directions")
       ->check(tu::cli::finite_in(1.0, 45.0));
   dmc->add_option("--slices", dm_slices, "write one PNG per layer here");

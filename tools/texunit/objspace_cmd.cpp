@@ -1,4 +1,4 @@
-// `texunit objspace-compare SCENE|default [--ss N]`: the object-space pipeline (seed 003 §5)
+// `texunit objspace-compare SCENE|default [--ss N]`: the object-space pipeline (docs/methods/objspace.md)
 // against the screen-space pipeline (B1 -> B2 -> trilinear / EWA) on one scene, texture path
 // (relief off: the object-space pipeline has no relief step): PSNR against the ground truth,
 // samples and texels per pixel, holes, overlaps and clocks per pixel (docs/blocks/objspace.md).
@@ -20,7 +20,7 @@ namespace tu::cli {
 
 CLI::App* add_objspace(CLI::App& app, ObjspaceArgs& a) {
   auto* c = app.add_subcommand("objspace-compare",
-                               "object-space pipeline (seed 003) vs the screen-space pipeline on a scene: PSNR vs truth, "
+                               "object-space pipeline (docs/methods/objspace.md) vs the screen-space pipeline on a scene: PSNR vs truth, "
                                "samples, holes, clocks per pixel (docs/blocks/objspace.md)");
   c->add_option("SCENE", a.scene, "scene JSON file, or 'default'")->required();
   c->add_option("--ss", a.ss, "ground truth: stratified samples per pixel side")->check(CLI::Range(1, 64));

@@ -20,7 +20,7 @@ struct Options {
   std::string out_full_sv;                       // the same for the full unit (area comparison)
   bool json = false;
   // The frame's cycle budget on the planned unit (0: none): the noise scheme (octave-serial when
-  // it meets the budget, docs/blocks/noise.md §5 "Plan").
+  // it meets the budget, docs/blocks/noise-appendix.md §5 "Plan").
   double max_cycles = 0;
 };
 

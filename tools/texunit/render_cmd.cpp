@@ -490,7 +490,7 @@ void print_relief(const DemoData& d, const Refs& refs) {
 
 void print_procedural(const DemoData& d) {
   std::printf("\nprocedural scene (docs/scenes/procedural.json, %dx%d: fBm ground, smoke wall; noise unit, "
-              "docs/blocks/noise.md §5), PSNR over covered pixels against the float reference with the "
+              "docs/blocks/noise-appendix.md §5), PSNR over covered pixels against the float reference with the "
               "footprint limit and the truth (16 x 16 samples of the unfiltered field):\n",
               d.proc.camera.width, d.proc.camera.height);
   std::printf("%-22s %12s %12s  %s\n", "engine", "vs ref", "vs truth", "image");

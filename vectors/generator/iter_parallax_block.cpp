@@ -1,5 +1,5 @@
 // Vector sets for the iterative parallax engine (rtl/pom/tu_iter_parallax.sv, seed 002,
-// docs/blocks/relief.md §7). Inputs: T = (u, v) (u16 = [0,1) uv), step direction (su, sv, sh)
+// docs/blocks/relief-appendix.md §7). Inputs: T = (u, v) (u16 = [0,1) uv), step direction (su, sv, sh)
 // (s32.16, from pom::ipx_dir_seed / ipx_dir_normalised of a view). Depth: pom::map_bricks(64).
 // Outputs: fract(T) (u16.16), updates (u5), nonconv (u1). Reference: the same iteration in double
 // (no rounding); error = uv distance in 2^-16 units, non-converged pixels excluded (flagged).

@@ -1,4 +1,4 @@
-// Vector sets for the POM march engine (rtl/pom/tu_pom_march.sv, docs/blocks/relief.md §6).
+// Vector sets for the POM march engine (rtl/pom/tu_pom_march.sv, docs/blocks/relief-appendix.md §6).
 // Inputs: T = (u, v), dT = (du, dv) (s32.16 uv), N (u6, 1..63). Depth map: pom::map_bricks(64)
 // (the engine's ROM). Outputs: T_k (s32.16), k (u6), refinement operands a, den (u16).
 // Reference: the same loop in double (the loop is exact, so the error is 0 by construction; the

@@ -1,5 +1,5 @@
 // Vector sets for the POM set-up, refinement and the full per-pixel unit (rtl/pom/tu_pom_setup.sv,
-// tu_pom_refine.sv, tu_pom_unit.sv; docs/blocks/relief.md §8). Models: pom::setup, pom::refine,
+// tu_pom_refine.sv, tu_pom_unit.sv; docs/blocks/relief-appendix.md §8). Models: pom::setup, pom::refine,
 // pom::march (depth: the engines' bricks ROM). References (double): dT = Vxy/a*S/N; the exact
 // weight a/den; pom::march_ref at the same N. Errors in uv LSB (2^-16).
 #include <random>

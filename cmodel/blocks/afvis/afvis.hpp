@@ -49,7 +49,7 @@
 namespace tu::afvis {
 
 enum class Rule { Every = 0, Row = 1 };
-// The trace's default bias in depth codes (docs/blocks/afvis.md §4: measured against the truth).
+// The trace's default bias in depth codes (docs/blocks/afvis-appendix.md §4: measured against the truth).
 inline constexpr int kDefaultBias = 16;
 
 // The relief seen by one pixel.

@@ -1,4 +1,4 @@
-// AF with parallax visibility against the truth (docs/blocks/afvis.md §4): a scene with relief
+// AF with parallax visibility against the truth (docs/blocks/afvis-appendix.md §4): a scene with relief
 // materials rendered by the C model with plain EWA and with each visibility rule, on several
 // height maps and two camera heights, against the supersampled truth with exact relief
 // (render_truth). Figures on the relief pixels: PSNR, sharpness (gradient energy on the truth's

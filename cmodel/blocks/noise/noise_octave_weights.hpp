@@ -1,4 +1,4 @@
-// Footprint-limited octaves (docs/blocks/noise.md §5): octave i of the fBm has lattice frequency
+// Footprint-limited octaves (docs/blocks/noise-appendix.md §5): octave i of the fBm has lattice frequency
 // 2^i; its value is 0 at every lattice point, so its energy peaks near 2^(i-1) cycles per cell.
 // Sampled at the pixel spacing rho (in cells: the GL-rule major axis, B2's lrho in texels +
 // log2(f / W)) it aliases once that frequency passes the Nyquist frequency 1 / (2 rho). Each
@@ -7,7 +7,7 @@
 //     w_i = clamp(1 - log2(rho) - bias - i, 0, 1)  for i < K,  0 for i >= K
 // (full while 2^(i-1) <= 1 / (2 rho), 0 from 2^(i-1) >= 1 / rho). The major axis (not the minor
 // one) so that no direction aliases. lod_bias (the material's) moves the limit: < 0 keeps more
-// octaves (sharper, aliases sooner), > 0 fewer; the measured sweep is in docs/blocks/noise.md §5.
+// octaves (sharper, aliases sooner), > 0 fewer; the measured sweep is in docs/blocks/noise-appendix.md §5.
 //
 // Fixed point: lrho s(EllLogW).EllLogF (= NoiseLodF), the host constant lfreq = log2(f / W) + bias
 // rounded to NoiseLodF bits, weights u(NoiseWeightW).NoiseLodF: exact clamps of an exact integer
@@ -24,7 +24,7 @@
 
 namespace tu::noise {
 
-// Formats of the procedural path (docs/blocks/noise.md §5): the ones the RTL noise unit
+// Formats of the procedural path (docs/blocks/noise-appendix.md §5): the ones the RTL noise unit
 // (rtl/noise/tu_noise_unit.sv) shares are in formats.hpp (water's too); named here for the C model.
 namespace pfmt {
 inline constexpr int kNoiseFreqF = fmt::kNoiseFreqF;  // frequency f / W, lattice cells per texel: fraction bits

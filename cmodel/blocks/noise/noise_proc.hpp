@@ -1,4 +1,4 @@
-// Procedural materials (docs/blocks/noise.md §5, seed 001 §4.2 / §4.3): the unit's colour from
+// Procedural materials (docs/blocks/noise-appendix.md §5, seed 001 §4.2 / §4.3): the unit's colour from
 // Perlin noise at the pixel's (u, v[, t]) instead of a texture fetch.
 //
 //   noise point    x = u f/W + sx, y = v f/W + sy, z = speed t   (cells; u, v level-0 texels)
@@ -32,7 +32,7 @@
 // With every weight 1 the fbm value equals fbm_fx's sum normalised with C_K (bit for bit).
 // Error against proc_ref: the noise core's bound per octave (docs/blocks/noise.md §3) plus the
 // frequency quantisation |u| 2^-25 cells and the octave-weight quantisation; measured in
-// NoiseProc.* (testbench/unit/noise_proc_test.cpp) and docs/blocks/noise.md §5.
+// NoiseProc.* (testbench/unit/noise_proc_test.cpp) and docs/blocks/noise-appendix.md §5.
 #pragma once
 
 #include <array>

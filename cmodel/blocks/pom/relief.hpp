@@ -1,4 +1,4 @@
-// Relief in the render path (docs/blocks/relief.md §9): a material's height map shifts (u, v)
+// Relief in the render path (docs/blocks/relief-appendix.md §9): a material's height map shifts (u, v)
 // before filtering.
 //
 //  * Tangent frame (float): from the triangle's uv mapping, T = dP/du, B = dP/dv (uv in texture

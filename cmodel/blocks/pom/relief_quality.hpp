@@ -1,4 +1,4 @@
-// Relief quality vs cost (docs/blocks/relief.md §5): procedural depth maps, a textured render of
+// Relief quality vs cost (docs/blocks/relief-appendix.md §5): procedural depth maps, a textured render of
 // the shifted uv, PSNR against a dense 256-layer exact-refinement march (pom::march_ref).
 #pragma once
 

@@ -55,14 +55,14 @@
   X(NoisePipeLatency, kNoiseCoreLatency + 1, "pipelined scheme (K cores) + sum/normalise, II 1") \
   X(NoiseSerialLatency, kNoiseCoreLatency + kNoiseOctaves, "octave-serial scheme (one core)")   \
   X(NoiseSerialIi, kNoiseOctaves, "octave-serial scheme: one sample per K clocks")              \
-  /* Noise unit in the texture unit: procedural materials (docs/blocks/noise.md §5) */         \
+  /* Noise unit in the texture unit: procedural materials (docs/blocks/noise-appendix.md §5) */ \
   X(NoiseFreqF, 24, "frequency f/W, lattice cells per level-0 texel: fraction bits")            \
   X(NoiseFreqW, 32, "frequency code: unsigned (f/W < 256)")                                     \
   X(NoiseWeightW, 11, "octave weight in [0,1]: unsigned, EllLogF fraction bits (exact clamp)")  \
   X(NoiseGainF, 8, "smoke opacity gain: fraction bits")                                         \
   X(NoiseGainW, 16, "smoke opacity gain code: unsigned (gain < 256)")                           \
   X(NoiseUnitLatency, kNoiseCoreLatency + 3, "tu_noise_unit pipelined: coords, cores, sum, value") \
-  /* Water in the noise unit: three octave sums per pixel, normal, Lambert (docs/blocks/noise.md §5) */ \
+  /* Water in the noise unit: three octave sums per pixel, normal, Lambert (docs/blocks/noise-appendix.md §5) */ \
   X(WaterAmpF, 8, "water height amplitude a (cells): fraction bits")                            \
   X(WaterAmpW, 13, "water amplitude code: unsigned (a < 32)")                                   \
   X(WaterStepCode, 8, "finite-difference step 2^-8 cells = 2^WaterStepCode codes of s32.16")    \

@@ -140,7 +140,7 @@ ewa::Engine engine_of(scene::Filter f);
 Frame render_cmodel(const scene::Scene& s, std::optional<scene::Filter> filter = {},
                     const CmodelOptions& opt = {});
 
-// Procedural materials (docs/blocks/noise.md §5): the material's noise description in noise
+// Procedural materials (docs/blocks/noise-appendix.md §5): the material's noise description in noise
 // units (its texture of width tex_w fixes the uv grid), and the float reference's colour at level-0
 // texel (u, v) with the pixel's Jacobian (the GL rule's rho limits the octaves).
 noise::ProcParams procedural_params(const scene::Material& m, int tex_w);

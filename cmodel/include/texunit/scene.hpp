@@ -37,7 +37,7 @@ struct Relief {
   bool af_visibility = false;  // EWA keeps only the footprint texels visible over the relief (afvis)
 };
 
-// A procedural colour source (docs/scene-format.md "procedural"; docs/blocks/noise.md §5): the
+// A procedural colour source (docs/scene-format.md "procedural"; docs/blocks/noise-appendix.md §5): the
 // unit evaluates Perlin noise at the pixel's (u, v[, t]) instead of sampling the texture.
 enum class ProceduralKind { Fbm, Smoke, Water };
 struct Procedural {

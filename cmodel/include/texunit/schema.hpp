@@ -114,7 +114,7 @@
   X(lmaxlod, kEllLodW, "trilinear max lod") \
   X(lbase, 4, "sampler levels: base (tex::level_range)") \
   X(ltop, 4, "sampler levels: top (tex::level_range)")
-// Procedural material constants (noise::ProcCodes, docs/blocks/noise.md §5) for tu_noise_unit.
+// Procedural material constants (noise::ProcCodes, docs/blocks/noise-appendix.md §5) for tu_noise_unit.
 #define TU_REC_PROC(X)                                                       \
   X(on, 1, "procedural colour: the noise unit, not a filter engine")         \
   X(smoke, 1, "smoke (turbulence, opacity) instead of fbm")                  \

@@ -123,7 +123,7 @@ struct ReliefChoice {
 // highest PSNR.
 void pick_relief(ReliefChoice& c, double min_psnr_db);
 
-// The noise unit (docs/blocks/noise.md §5): in the unit when a material is procedural.
+// The noise unit (docs/blocks/noise-appendix.md §5): in the unit when a material is procedural.
 struct NoisePlan {
   bool on = false, water = false;
   int dims = 2, cores = 0;
