@@ -1,5 +1,6 @@
 // The C-model render engine: the bit-accurate pipeline B1 -> B2 -> filter per covered pixel.
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
 #include <cmath>
@@ -106,16 +107,106 @@ ewa::Engine engine_of(scene::Filter f) {
   return ewa::Engine::Ewa;
 }
 
-std::vector<persp::Unit::Coefs> setup_fx(const scene::Scene& s, size_t object, int tex_w, int tex_h) {
-  const auto ref = setup_ref(s, object, tex_w, tex_h);
-  const auto tris = scene::in_texels(s.objects.at(object), tex_w, tex_h);
-  std::vector<persp::Unit::Coefs> k;
-  try {
-    for (size_t t = 0; t < tris.size(); ++t) k.push_back(persp::Unit::quantise(ref[t], tris[t].name));
-  } catch (const persp::SetupError& e) {
-    throw persp::SetupError(scene::object_where(s, object) + ": " + e.what());
+namespace {
+// Rebase periods of an object's uv along u and v (persp::rebase_offset), level-0 texels: along a
+// repeat axis the pyramid's longest side 2^max(lw, lh) (a whole number of repeats at every mip
+// level, so the address of every texel of every level is unchanged), along a mirror axis twice that
+// (mirror repeats every other repeat); none (0) along clamp, border and mirror_once axes (their
+// address rule is not periodic), nor for a procedural material (its noise lattice has its own
+// period in cells) or a relief one (the march discards uv outside [0, 1]). `why` says which.
+std::array<double, 2> uv_periods(const scene::Scene& s, size_t object, int tex_w, int tex_h, std::string why[2]) {
+  const scene::Material& m = s.materials.at(s.objects.at(object).material);
+  const tex::Addressing& a = s.textures.at(m.texture).addressing;
+  const double side = std::max(std::bit_ceil(unsigned(std::max(tex_w, 1))), std::bit_ceil(unsigned(std::max(tex_h, 1))));
+  std::array<double, 2> p{0, 0};
+  for (int k = 0; k < 2; ++k) {
+    const tex::Wrap w = k ? a.v : a.u;
+    if (m.procedural) why[k] = "a procedural material keeps its uv (the noise lattice has its own period)";
+    else if (m.relief) why[k] = "a relief material keeps its uv (the march discards uv outside [0, 1])";
+    else if (w == tex::Wrap::Repeat) p[k] = side;
+    else if (w == tex::Wrap::Mirror) p[k] = 2 * side;
+    else why[k] = std::string("wrap mode '") + scene::kWrapNames[int(w)] + "' is not periodic";
   }
-  return k;
+  return p;
+}
+
+// Why a rebased triangle `t` (texels) with float coefficients `k` does not fit B1's formats: the
+// reason appended to the SetupError (docs/scene-format.md "B1 set-up limits").
+std::string setup_reason(const persp::Triangle& t, const persp::Coef9& k, const std::array<double, 2>& period,
+                         const std::string why[2]) {
+  const double lim = persp::kRebaseFrom;
+  for (int a = 0; a < 2; ++a) {
+    double lo = INFINITY, hi = -INFINITY, big = 0;
+    for (const auto& v : t.v) lo = std::min(lo, v.uv[a]), hi = std::max(hi, v.uv[a]), big = std::max(big, std::fabs(v.uv[a]));
+    if (big < lim) continue;
+    const std::string axis = a ? "v" : "u";
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.0f texels", big);
+    if (!(period[a] > 0))
+      return "; its |" + axis + "| reaches " + buf + ", B1 holds |" + axis + " q| < 8192 texels (q = 1 at the nearest vertex) and " +
+             why[a] + ": keep |" + axis + "| x the texture's size below 8192 texels";
+    std::snprintf(buf, sizeof buf, "%.0f texels", hi - lo);
+    return "; its " + axis + " spans " + buf + ", more than B1's |" + axis +
+           " q| < 8192 texels hold even after rebasing by whole repeats: split the triangle";
+  }
+  const double grad = std::max({std::fabs(k.a), std::fabs(k.b), std::fabs(k.d), std::fabs(k.e)});
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.0f", grad);
+  if (!(std::fabs(k.g) < 8 && std::fabs(k.h) < 8 && std::fabs(k.i) < 8))
+    return "; q = z_near / z extrapolated to pixel (0, 0) of the screen leaves B1's range (|q| < 8): the plane is seen "
+           "too obliquely away from the screen origin";
+  if (!(grad < lim))
+    return std::string("; its uv changes by ") + buf + " texels per pixel, beyond B1's 8192: use a smaller texture";
+  if (!(std::fabs(k.c) < lim && std::fabs(k.f) < lim))
+    return std::string("; B1 evaluates the map from pixel (0, 0) of the screen and its uv changes by up to ") + buf +
+           " texels per pixel (a far or strongly minified triangle on a large texture), too fast for the map extrapolated "
+           "to the screen origin to stay within 8192 texels: use a smaller texture or bring the triangle nearer";
+  return "; p = uv q and q at the corners of the triangle's screen rectangle must stay within 8192 texels and 8 "
+         "(q = 1 at the nearest vertex; more where the triangle comes nearer than camera.z_near)";
+}
+
+// B1's set-up of one (rebased) triangle: the quantised coefficients, after checking the
+// accumulators at every pixel the triangle can cover (its screen rectangle, or the whole screen
+// when a vertex is not in front of the eye): p and q are affine in x, y, so the rectangle's
+// corners bound every span end the unit's per-scanline set-up checks. SetupError with the reason.
+persp::Unit::Coefs setup_one(const persp::Camera& cam, const persp::RayCaster& rays, const persp::Triangle& r,
+                             const std::array<double, 2>& period, const std::string why[2]) {
+  const persp::Coef9 k = persp::coefficients(cam, r);
+  try {
+    const persp::Unit::Coefs c = persp::Unit::quantise(k, r.name);
+    int x0 = 0, x1 = cam.width - 1, y0 = 0, y1 = cam.height - 1;
+    if (!rays.bounds(r, &x0, &x1, &y0, &y1)) x0 = 0, x1 = cam.width - 1, y0 = 0, y1 = cam.height - 1;
+    if (x0 <= x1 && y0 <= y1)
+      for (int y : {y0, y1}) (void)persp::Unit::setup(c, y, x0, x1, r.name);
+    return c;
+  } catch (const persp::SetupError& e) {
+    throw persp::SetupError(e.what() + setup_reason(r, k, period, why));
+  }
+}
+}  // namespace
+
+std::vector<persp::Unit::Coefs> setup_fx(const scene::Scene& s, size_t object, int tex_w, int tex_h) {
+  std::string why[2];
+  const auto period = uv_periods(s, object, tex_w, tex_h, why);
+  const persp::RayCaster rays(s.camera);
+  std::vector<persp::Unit::Coefs> out;
+  for (const auto& t : scene::in_texels(s.objects.at(object), tex_w, tex_h)) {
+    try {
+      const persp::Triangle r = persp::rebased(t, period);
+      try {
+        out.push_back(setup_one(s.camera, rays, r, period, why));
+      } catch (const persp::SetupError&) {
+        // A triangle whose map leaves B1's range as given (extrapolated to pixel (0, 0) or to its
+        // rectangle's corners) although its uv stays below kRebaseFrom: rebased if that changes it.
+        const persp::Triangle f = persp::rebased(t, period, true);
+        if (persp::rebase_offset(r, period, true) == std::array<double, 2>{0, 0}) throw;
+        out.push_back(setup_one(s.camera, rays, f, period, why));
+      }
+    } catch (const persp::SetupError& e) {
+      throw persp::SetupError(scene::object_where(s, object) + ": " + e.what());
+    }
+  }
+  return out;
 }
 
 uint32_t laniso_code(double max_aniso) {

@@ -138,6 +138,8 @@ Frame render_ref(const scene::Scene& s, std::optional<scene::Filter> filter, std
   for (size_t o = 0; o < s.objects.size(); ++o) {
     texs.push_back(scene::build_texture(s, s.materials.at(s.objects[o].material).texture));
     coefs.push_back(setup_ref(s, o, texs.back().levels[0].width, texs.back().levels[0].height));
+    // What B1 cannot set up is refused here too: every engine renders the same scenes.
+    (void)setup_fx(s, o, texs.back().levels[0].width, texs.back().levels[0].height);
   }
   // Per object with relief: depth / complexity maps (docs/blocks/relief-appendix.md §9).
   std::vector<std::optional<relief::Maps>> reliefs;

@@ -59,6 +59,7 @@ Frame render_truth(const scene::Scene& s, const TruthOptions& opt) {
     tris.push_back(scene::in_texels(o, base.width, base.height));
     std::vector<persp::Coef9> k;
     for (const auto& t : tris.back()) k.push_back(persp::coefficients(s.camera, t));
+    (void)setup_fx(s, coefs.size(), base.width, base.height);  // what B1 cannot set up is refused in every engine
     coefs.push_back(std::move(k));
     reliefs.push_back(opt.relief && m.relief ? std::optional(ReliefCtx{relief::make_maps(s, o.material), m.relief->scale})
                                              : std::nullopt);

@@ -184,3 +184,57 @@ TEST(ObjSpace, SampleCapNamesTheObject) {
 }
 
 }  // namespace
+
+namespace {
+// A 2 x 2 quad centred at (0, 0, -3) turned by `deg` about y (0: facing the camera; 90: its plane
+// contains the eye).
+std::string turned_quad(double deg) {
+  const double a = deg * M_PI / 180, cx = std::cos(a), sz = -std::sin(a);
+  char v[256];
+  std::snprintf(v, sizeof v, "[[%.17g, -1, %.17g], [%.17g, -1, %.17g], [%.17g, 1, %.17g], [%.17g, 1, %.17g]]", -cx, -3 - sz, cx,
+                -3 + sz, cx, -3 + sz, -cx, -3 - sz);
+  return v;
+}
+}  // namespace
+
+// Edge-on: the plane through the eye is the screen-space set-up's error in every object-space
+// engine (it rendered 0 pixels with exit 0, and the RTL engine failed on its cycle count).
+TEST(ObjSpace, PlaneThroughTheEyeIsTheScreenSpaceSetupError) {
+  const auto s = quad_scene(turned_quad(90));
+  std::string screen;
+  try {
+    (void)render::render_ref(s);
+  } catch (const persp::SetupError& e) {
+    screen = e.what();
+  }
+  ASSERT_NE(screen.find("its plane contains the eye"), std::string::npos) << screen;
+  for (int engine = 0; engine < 2; ++engine) {
+    try {
+      engine ? (void)objspace::render_cmodel(s) : (void)objspace::render_ref(s);
+      ADD_FAILURE() << "engine " << engine << " rendered a plane through the eye";
+    } catch (const persp::SetupError& e) {
+      EXPECT_EQ(e.what(), screen);
+    }
+  }
+}
+
+// Grazing (89.9 degrees, the plane 0.005 from the eye: ~10^8 samples for a few pixels): with a cap
+// below the clipped polygons' lattice area the set-up fails before the walk (it walked up to the
+// cap first), in both engines.
+TEST(ObjSpace, GrazingPlaneFailsTheSampleCapBeforeSampling) {
+  const auto s = quad_scene(turned_quad(89.9));
+  objspace::Options o;
+  o.max_samples = uint64_t(1) << 26;  // above a quarter of the grid (252 M points): the walk would run
+  for (int engine = 0; engine < 2; ++engine) {
+    try {
+      engine ? (void)objspace::render_cmodel(s, o) : (void)objspace::render_ref(s, o);
+      ADD_FAILURE() << "engine " << engine << " accepted the grazing quad";
+    } catch (const std::runtime_error& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("object 'q' (/objects/0): object-space samples exceed --max-samples 67108864"), std::string::npos) << m;
+      EXPECT_NE(m.find("before sampling"), std::string::npos) << m;
+    }
+  }
+  // The bound never refuses what the walk accepts: at 60 degrees the render completes.
+  EXPECT_GT(objspace::render_cmodel(quad_scene(turned_quad(60))).stats.covered, 0u);
+}

@@ -212,6 +212,7 @@ std::vector<TriangleSetup> setup(const scene::Scene& s, const Options& opt) {
     throw std::invalid_argument("object-space: grid spacing must be > 0");
   const ViewFrame vf(s.camera);
   std::vector<TriangleSetup> out;
+  double at_least = 0;  // samples the walk will take at least (the clipped polygons' lattice areas)
   for (size_t o = 0; o < s.objects.size(); ++o) {
     if (s.materials.at(s.objects[o].material).procedural)
       throw std::invalid_argument(scene::object_where(s, o) + ": the object-space pipeline textures from texels; "
@@ -220,6 +221,13 @@ std::vector<TriangleSetup> setup(const scene::Scene& s, const Options& opt) {
     const int top = tex.num_levels() - 1;
     const auto tris = scene::in_texels(s.objects[o], tex.levels[0].width, tex.levels[0].height);
     for (size_t t = 0; t < tris.size(); ++t) {
+      // A plane through the eye is refused as the screen-space set-up refuses it (same test, same
+      // message), instead of rendering nothing.
+      try {
+        (void)persp::coefficients(s.camera, tris[t]);
+      } catch (const persp::SetupError& e) {
+        throw persp::SetupError(scene::object_where(s, o) + ": " + e.what());
+      }
       TriangleSetup ts;
       ts.object = static_cast<int>(o), ts.triangle = static_cast<int>(t);
       glm::dvec3 p[3];
@@ -292,6 +300,17 @@ std::vector<TriangleSetup> setup(const scene::Scene& s, const Options& opt) {
         area += a.x * b.y - a.y * b.x;
       }
       const double sgn = area >= 0 ? 1 : -1;
+      // Before sampling: a convex polygon of area A and perimeter P holds more than A - P/2 lattice
+      // points (Nosarzewska); the half-open edges drop at most P + 1 + its vertex count more. Past
+      // the cap the walk would only fail later (a grazing plane: minutes), so it fails now.
+      double perim = 0;
+      for (size_t k = 0; k < lp.size(); ++k) perim += glm::length(lp[(k + 1) % lp.size()] - lp[k]);
+      at_least += std::max(0.0, std::fabs(area) / 2 - 1.5 * perim - 1 - static_cast<double>(lp.size()));
+      if (at_least > static_cast<double>(opt.max_samples))
+        throw std::runtime_error(scene::object_where(s, o) + ": object-space samples exceed --max-samples " +
+                                 std::to_string(opt.max_samples) + " (grid spacing " + std::to_string(opt.spacing) +
+                                 " px; at least " + std::to_string(static_cast<uint64_t>(at_least)) +
+                                 " from the clipped polygons' areas, before sampling)");
       const int64_t n_i = static_cast<int64_t>(cnt[0]), n_j = static_cast<int64_t>(cnt[1]);
       const int64_t tile = int64_t(1) << kTileLog2;
       for (int64_t tj = 0; tj < n_j; tj += tile)

@@ -114,6 +114,25 @@ bool RayCaster::bounds(const Triangle& t, int* x0, int* x1, int* y0, int* y1) co
   return true;
 }
 
+std::array<double, 2> rebase_offset(const Triangle& t, const std::array<double, 2>& period, bool force) {
+  std::array<double, 2> off{0, 0};
+  for (int k = 0; k < 2; ++k) {
+    if (!(period[k] > 0)) continue;
+    double lo = INFINITY, hi = -INFINITY, big = 0;
+    for (const auto& v : t.v) lo = std::min(lo, v.uv[k]), hi = std::max(hi, v.uv[k]), big = std::max(big, std::fabs(v.uv[k]));
+    if (big < kRebaseFrom && !force) continue;
+    off[k] = period[k] * std::ceil((lo + hi) / (2 * period[k]) - 0.5);
+  }
+  return off;
+}
+
+Triangle rebased(const Triangle& t, const std::array<double, 2>& period, bool force) {
+  const auto off = rebase_offset(t, period, force);
+  Triangle r = t;
+  for (auto& v : r.v) v.uv[0] -= off[0], v.uv[1] -= off[1];
+  return r;
+}
+
 bool ray_hit(const Camera& cam, const Triangle& t, int x, int y, Hit* h) {
   return RayCaster(cam).hit(t, x, y, h);
 }

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -260,6 +261,20 @@ struct Triangle {
   std::string name;
   Vertex v[3];
 };
+
+// uv rebase (docs/blocks/persp.md "uv rebase"). B1's accumulators hold |p| = |u q| < 2^13 texels
+// and q = 1 at the nearest vertex, so a triangle whose uv lies far from 0 cannot be set up as
+// given; along an axis whose address rule is periodic (period[k] > 0, level-0 texels) the sampler
+// cannot tell uv from uv - j period. The offset per axis (texels, subtracted from every vertex):
+// 0 while every vertex has |uv| < kRebaseFrom, unless `force` (the caller's set-up as given
+// failed), else the multiple of the period nearest the axis' mid-range (halves rounded down),
+// which leaves |uv| <= period / 2 + the triangle's extent / 2. A function of uv modulo the period:
+// a triangle and the same one shifted by whole periods rebase to the same uv.
+inline constexpr double kRebaseFrom = double(int64_t(1) << (fmt::kPerspPW - fmt::kPerspF - 1));
+std::array<double, 2> rebase_offset(const Triangle& t, const std::array<double, 2>& period, bool force = false);
+// t with rebase_offset(t, period, force) subtracted from its uv (exact: the offset is an integer
+// and the difference is no larger than the uv).
+Triangle rebased(const Triangle& t, const std::array<double, 2>& period, bool force = false);
 
 // A..I for integer pixel indices (pixel centres at x + 0.5, y + 0.5; y grows downwards),
 // scaled so that q = z_min / z_view (q = 1 at the nearest vertex, z_min >= camera z_near).

@@ -70,8 +70,12 @@ std::vector<CoverRun> cover_runs(const std::vector<Cover>& cov, int width);
 std::vector<const scene::Material*> object_materials(const scene::Scene& s);
 
 // Set-up of an object's triangles (uv in level-0 texels of a tex_w x tex_h texture): the float
-// coefficients, and the same quantised to B1's formats. A persp::SetupError names the file and
-// the object as scene::object_where does, then the triangle.
+// coefficients, and B1's: each triangle rebased by whole periods of its wrap modes
+// (persp::rebased; docs/blocks/persp.md "uv rebase"), then quantised to B1's formats. Every
+// engine's lowering (C model, RTL harness, Icarus stimulus, planner) calls setup_fx; the float
+// engines call it too, so that what B1 cannot set up is refused everywhere. A persp::SetupError
+// names the file and the object as scene::object_where does, then the triangle (and for an
+// overflow, the reason).
 std::vector<persp::Coef9> setup_ref(const scene::Scene& s, size_t object, int tex_w, int tex_h);
 std::vector<persp::Unit::Coefs> setup_fx(const scene::Scene& s, size_t object, int tex_w, int tex_h);
 
