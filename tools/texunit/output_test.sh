@@ -6,20 +6,7 @@
 # Usage: output_test.sh TEXUNIT SOURCE_DIR CASE FAIL_WRITE_SHIM
 set -euo pipefail
 tu=$1; src=$2; case=$3; shim=${4:-}
-tmp=$(mktemp -d)
-trap 'chmod -R u+w "$tmp" 2>/dev/null; rm -rf "$tmp"' EXIT
-cd "$src"
-fail() { echo "FAIL ($case): $*" >&2; exit 1; }
-# expect RC PATTERN CMD...: runs CMD, checks its exit code and that stderr matches PATTERN.
-expect() {
-  local want=$1 pat=$2; shift 2
-  set +e
-  "$@" >"$tmp/out" 2>"$tmp/err"
-  local rc=$?
-  set -e
-  [ "$rc" = "$want" ] || fail "exit $rc, expected $want: $* ($(head -c 400 "$tmp/err"))"
-  grep -q -- "$pat" "$tmp/err" || fail "message of '$*' does not match '$pat': $(head -c 400 "$tmp/err")"
-}
+. "$(dirname "$0")/test_lib.sh"  # tmp, fail, expect
 # full N PATTERN CMD...: CMD on a disk that is full after N bytes (the LD_PRELOAD shim): exit 2,
 # a message naming the file.
 full() {
