@@ -3,6 +3,8 @@
 #include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -377,6 +379,16 @@ void install_signal_cleanup() {
     if (old.sa_handler == SIG_IGN) continue;  // started with the signal ignored (nohup, `cmd &` in sh): keep it so
     sigaction(sig, &sa, nullptr);
   }
+}
+
+void check_stdout_at_exit() {
+  std::atexit([] {
+    const bool bad = std::fflush(stdout) != 0 || std::ferror(stdout);
+    if (!bad) return;
+    const int err = errno;
+    std::fprintf(stderr, "texunit: error: standard output: cannot write (%s)\n", std::strerror(err ? err : EIO));
+    _exit(2);
+  });
 }
 
 int run(const std::string& cmd) {

@@ -347,6 +347,7 @@ int cmd_rtl_files(const std::string& root, const std::string& top, const std::st
 
 int main(int argc, char** argv) {
   tu::out::install_signal_cleanup();  // SIGINT / SIGTERM: no temporary, created directory or child left
+  tu::out::check_stdout_at_exit();     // a failed write to standard output is an error too
   CLI::App app{"texunit: bit-accurate texture-unit models, RTL co-simulation and reports"};
   app.require_subcommand(1);
 

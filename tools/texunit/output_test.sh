@@ -63,6 +63,15 @@ open('$tmp/h16.png', 'wb').write(b'\\x89PNG\\r\\n\\x1a\\n' + chunk(b'IHDR', stru
     "$tu" cosim --block reciprocal --vectors vectors/golden/reciprocal.vec --json --shard 1/2 >"$tmp/s1.json"
     full 0 "mg.json: cannot write the file ($nospc)" "$tu" merge "$tmp/s0.json" "$tmp/s1.json" --json "$tmp/mg.json"
     absent "$tmp/mg.json"
+    # Standard output redirected to a file on a full disk: exit 2, not 0 (stdio writes it, past the
+    # shim: a file-size limit of 0 fails every write to a file).
+    set +e
+    (ulimit -f 0; trap '' XFSZ; exec "$tu" merge "$tmp/s0.json" "$tmp/s1.json" 2>&1 >"$tmp/so.json") | cat >"$tmp/err"
+    rc=${PIPESTATUS[0]}
+    set -e
+    [ "$rc" = 2 ] || fail "merge > file on a full disk: exit $rc"
+    grep -q "standard output: cannot write (File too large)" "$tmp/err" || fail "stdout message: $(cat "$tmp/err")"
+    rm -f "$tmp/so.json"
     full 0 "a.sv: cannot write the file ($nospc)" "$tu" plan default --out "$tmp/a.sv"
     absent "$tmp/a.sv"
     # gen-rtl into an empty root: every generated file or none (no rtl/ directory left).

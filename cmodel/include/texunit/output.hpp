@@ -97,6 +97,11 @@ std::string shell_quoted(const std::string& s);
 // Installs the SIGINT / SIGTERM handler described above (once, from main()).
 void install_signal_cleanup();
 
+// Registers an exit check of standard output (std::cout and stdio share its buffer): when a
+// write to it failed or its final flush fails (`texunit cosim --json > F` on a full disk), the
+// process exits 2 with a message instead of 0.
+void check_stdout_at_exit();
+
 // Runs `/bin/sh -c cmd` in its own process group, known to the signal handler (killed with the
 // group and reaped on SIGINT / SIGTERM); returns its wait status as std::system does.
 int run(const std::string& cmd);
