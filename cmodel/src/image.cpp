@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "texunit/output.hpp"
+
 // Every format stb_image reads (PNG, JPEG, BMP, TGA, GIF first frame, PSD composite, HDR tone
 // mapped to 8 bits, PIC, PNM); the size is checked from the header before decoding (kMaxSide).
 #define STB_IMAGE_IMPLEMENTATION
@@ -13,6 +15,7 @@
 #define STBI_MAX_DIMENSIONS 65536
 #include <stb/stb_image.h>
 #define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STBI_WRITE_NO_STDIO  // files are written by texunit/output.hpp only (encode_png)
 #include <stb/stb_image_write.h>
 
 namespace tu::img {
@@ -38,21 +41,17 @@ StbData load(const std::string& path, int want, int& w, int& h, int& n) {
   return data;
 }
 
-void write_png(const std::string& path, int w, int h, int channels, const void* data,
-               size_t size) {
+// The PNG bytes in memory (stbi_write_png's encoder, which also builds the whole file in memory
+// before writing it): the file is then written by the checked output path, not by stb's fwrite,
+// whose errors stb does not report.
+std::string encode_png(const std::string& path, int w, int h, int channels, const void* data, size_t size) {
   if (w <= 0 || h <= 0 || size != static_cast<size_t>(w) * static_cast<size_t>(h))
     throw std::runtime_error(path + ": refusing to write an empty or inconsistent image");
-  const std::string tmp = path + ".tmp";
-  if (!stbi_write_png(tmp.c_str(), w, h, channels, data, w * channels)) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot write PNG");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot write PNG (" + ec.message() + ")");
-  }
+  std::string bytes;
+  const auto append = [](void* ctx, void* p, int n) { static_cast<std::string*>(ctx)->append(static_cast<const char*>(p), static_cast<size_t>(n)); };
+  if (!stbi_write_png_to_func(append, &bytes, w, h, channels, data, w * channels))
+    throw std::runtime_error(path + ": cannot encode the PNG");
+  return bytes;
 }
 }  // namespace
 
@@ -64,9 +63,11 @@ Gray8 read_png_channel0(const std::string& path) {
   return im;
 }
 
-void write_png_gray(const std::string& path, const Gray8& im) {
-  write_png(path, im.width, im.height, 1, im.px.data(), im.px.size());
+std::string png_gray(const Gray8& im, const std::string& path) {
+  return encode_png(path, im.width, im.height, 1, im.px.data(), im.px.size());
 }
+
+void write_png_gray(const std::string& path, const Gray8& im) { out::write_atomic(path, png_gray(im, path)); }
 
 Rgba8Image read_png_rgba(const std::string& path) {
   int w = 0, h = 0, n = 0;
@@ -79,9 +80,11 @@ Rgba8Image read_png_rgba(const std::string& path) {
   return im;
 }
 
-void write_png_rgba(const std::string& path, const Rgba8Image& im) {
+std::string png_rgba(const Rgba8Image& im, const std::string& path) {
   static_assert(sizeof(Rgba8) == 4, "Rgba8 must be packed RGBA");
-  write_png(path, im.width, im.height, 4, im.px.data(), im.px.size());
+  return encode_png(path, im.width, im.height, 4, im.px.data(), im.px.size());
 }
+
+void write_png_rgba(const std::string& path, const Rgba8Image& im) { out::write_atomic(path, png_rgba(im, path)); }
 
 }  // namespace tu::img

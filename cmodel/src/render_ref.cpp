@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <ostream>
 #include <limits>
 #include <stdexcept>
 
@@ -19,6 +19,7 @@
 #include "texunit/render.hpp"
 #include "texunit/shading.hpp"
 #include "texunit/convert.hpp"
+#include "texunit/output.hpp"
 
 namespace tu::render {
 
@@ -289,29 +290,23 @@ std::vector<size_t> flag_counts(const Frame& f) {
   return n;
 }
 
-void write_dump_csv(const std::string& path, const Frame& f) {
-  const std::string tmp = path + ".tmp";
+void write_dump_csv(std::ostream& out, const Frame& f) {
   const auto& flags = pixel_flags();
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    if (!out) throw std::runtime_error(path + ": cannot write");
-    out << "x,y,u,v,lod,texels,r,g,b,a,relief_n,relief_steps";
-    for (const auto& fl : flags) out << ',' << fl.name;
+  out << "x,y,u,v,lod,texels,r,g,b,a,relief_n,relief_steps";
+  for (const auto& fl : flags) out << ',' << fl.name;
+  out << '\n';
+  char buf[160];
+  for (const auto& p : f.pixels) {
+    std::snprintf(buf, sizeof buf, "%d,%d,%.6f,%.6f,%.4f,%d,%d,%d,%d,%d,%d,%d", p.x, p.y, p.u, p.v,
+                  p.lod, p.texels, p.color.r, p.color.g, p.color.b, p.color.a, p.relief_n, p.relief_steps);
+    out << buf;
+    for (const auto& fl : flags) out << (fl.on(p) ? ",1" : ",0");
     out << '\n';
-    char buf[160];
-    for (const auto& p : f.pixels) {
-      std::snprintf(buf, sizeof buf, "%d,%d,%.6f,%.6f,%.4f,%d,%d,%d,%d,%d,%d,%d", p.x, p.y, p.u, p.v,
-                    p.lod, p.texels, p.color.r, p.color.g, p.color.b, p.color.a, p.relief_n, p.relief_steps);
-      out << buf;
-      for (const auto& fl : flags) out << (fl.on(p) ? ",1" : ",0");
-      out << '\n';
-    }
-    if (!out) {
-      std::filesystem::remove(tmp);
-      throw std::runtime_error(path + ": write failed");
-    }
   }
-  std::filesystem::rename(tmp, path);
+}
+
+void write_dump_csv(const std::string& path, const Frame& f) {
+  out::write_atomic(path, [&](std::ostream& os) { write_dump_csv(os, f); });
 }
 
 }  // namespace tu::render

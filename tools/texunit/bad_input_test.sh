@@ -4,21 +4,7 @@
 # Usage: bad_input_test.sh TEXUNIT SOURCE_DIR CASE
 set -euo pipefail
 tu=$1; src=$2; case=$3
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-cd "$src"
-fail() { echo "FAIL ($case): $*" >&2; exit 1; }
-# expect RC PATTERN CMD...: runs CMD, checks its exit code and that stderr matches PATTERN.
-expect() {
-  local want=$1 pat=$2; shift 2
-  set +e
-  "$@" >"$tmp/out" 2>"$tmp/err"
-  local rc=$?
-  set -e
-  [ "$rc" = "$want" ] || fail "exit $rc, expected $want: $* ($(head -c 400 "$tmp/err"))"
-  grep -q -- "$pat" "$tmp/err" || fail "message of '$*' does not match '$pat': $(head -c 400 "$tmp/err")"
-  ! grep -q "filesystem error" "$tmp/err" || fail "raw filesystem_error text: $(cat "$tmp/err")"
-}
+. "$(dirname "$0")/test_lib.sh"  # tmp, fail, expect
 no_tmp_left() { ! find "$1" -name '*.tmp' | grep -q . || fail "leftover temporary files: $(find "$1" -name '*.tmp')"; }
 header='# texunit-vectors 1
 # block: reciprocal

@@ -10,9 +10,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 #include "ewa/ewa_cycles.hpp"
+#include "output.hpp"
 #include "plan.hpp"
 #include "texunit/render.hpp"
 
@@ -36,24 +37,23 @@ CLI::App* add_filter_compare(CLI::App& app, FilterCompareArgs& a) {
 namespace {
 using Row = FilterRow;
 
-void write_plot(const std::vector<Row>& rows, const std::string& dir, const std::string& title) {
+// The plot's files belong to `outs` (the command's outputs: all or none).
+void write_plot(const std::vector<Row>& rows, const std::string& dir, const std::string& title, Outputs& outs) {
   const std::string dat = dir + "/psnr_vs_clocks.dat", gp = dir + "/psnr_vs_clocks.gp";
   {
-    std::ofstream d(dat);
+    std::ostringstream d;
     d << "# filter clocks_per_pixel psnr_vs_truth_db texels_per_pixel\n";
     for (const auto& r : rows) d << '"' << r.name << "\" " << r.clocks << ' ' << r.psnr_truth << ' ' << r.texels << '\n';
+    outs.write(dat, d.str());
   }
-  std::ofstream g(gp);
+  std::ostringstream g;
   g << "set terminal pngcairo size 900,600\nset output '" << dir << "/psnr_vs_clocks.png'\n"
     << "set title \"" << title << "\"\nset xlabel 'clocks per pixel (RTL cycle model; Feline: N tu\\_trilinear passes)'\n"
     << "set ylabel 'PSNR vs box truth (dB)'\nset logscale x\nset grid\nset key off\n"
     << "plot '" << dat << "' using 2:3 with points pt 7 ps 1.5, '' using 2:3:1 with labels offset 0,1 font ',9'\n";
-  g.close();
-  if (std::system(("gnuplot " + gp + " 2>" + gp + ".log").c_str()) != 0) {
-    for (const char* ext : {".dat", ".gp", ".png"}) std::filesystem::remove(dir + "/psnr_vs_clocks" + ext);
-    throw std::runtime_error("filter-compare: gnuplot failed on " + gp + " (see " + gp + ".log)");
-  }
-  std::fprintf(stderr, "wrote %s/psnr_vs_clocks.png\n", dir.c_str());
+  outs.write(gp, g.str());
+  if (const std::string why = out::gnuplot(outs, gp, {dir + "/psnr_vs_clocks.png"}); !why.empty())
+    throw std::runtime_error("filter-compare: " + why);
 }
 }  // namespace
 
@@ -124,8 +124,9 @@ void print_table(const FilterComparison& c, int ss) {
 }  // namespace
 
 int run_filter_compare(const FilterCompareArgs& a) {
-  if (!a.plot.empty()) std::filesystem::create_directories(a.plot);  // fails before the renders
   const scene::Scene scene = a.scene == "default" ? scene::default_scene() : scene::load(a.scene);
+  Outputs outs;
+  if (!a.plot.empty()) outs.make_dir(a.plot);  // after the scene is read, before the renders
   // The pyramids asked for, in kMipFilterNames order, each once ('all': every one).
   std::vector<tex::MipFilter> mips;
   for (int i = 0; i < 3; ++i)
@@ -137,7 +138,9 @@ int run_filter_compare(const FilterCompareArgs& a) {
   if (mips.empty()) {
     const auto c = compare_filters(scene, a.ss);
     print_table(c, a.ss);
-    if (!a.plot.empty()) write_plot(c.rows, a.plot, c.source + ": PSNR vs clocks per pixel");
+    if (!a.plot.empty()) write_plot(c.rows, a.plot, c.source + ": PSNR vs clocks per pixel", outs);
+    outs.commit();
+    if (!a.plot.empty()) std::fprintf(stderr, "wrote %s/psnr_vs_clocks.png\n", a.plot.c_str());
     return 0;
   }
   std::vector<FilterComparison> cs;
@@ -147,10 +150,13 @@ int run_filter_compare(const FilterCompareArgs& a) {
     std::printf("\n");
     if (!a.plot.empty()) {
       const std::string dir = a.plot + "/" + cs.back().mip_filter;
-      std::filesystem::create_directories(dir);
-      write_plot(cs.back().rows, dir, cs.back().source + ": PSNR vs clocks per pixel, mip filter " + cs.back().mip_filter);
+      outs.make_dir(dir);
+      write_plot(cs.back().rows, dir, cs.back().source + ": PSNR vs clocks per pixel, mip filter " + cs.back().mip_filter, outs);
     }
   }
+  outs.commit();
+  for (const auto& c : cs)
+    if (!a.plot.empty()) std::fprintf(stderr, "wrote %s/%s/psnr_vs_clocks.png\n", a.plot.c_str(), c.mip_filter.c_str());
   if (cs.size() < 2) return 0;
   // PSNR vs truth per filter (rows) and pyramid (columns), and whether the truth moved.
   std::printf("PSNR vs truth (dB) per mip filter: %s\n%-14s", cs[0].source.c_str(), "filter");

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <iterator>
 #include <sstream>
 
 #include <unistd.h>
@@ -45,9 +46,15 @@ int cmd_vectors(const std::string& block, const std::string& set, uint64_t count
                 const std::string& out, int threads, const tu::Shard& shard) {
   const auto& b = tu::blocks::find(block);
   tu::cli::Outputs outs;
-  const std::string tmp = outs.stage(out);
+  if (set == "random" && !shard.whole() && shard.range(count).first == shard.range(count).second)
+    throw std::invalid_argument("vectors: --shard " + shard.str() + " of " + std::to_string(count) +
+                                " vectors is empty (give at most --count shards)");
+  const std::string tmp = outs.stage(out);  // the target checked before the work
   const auto vf = tu::blocks::generate(b, set, count, seed, threads, shard);
-  tu::vec::write(vf, tmp);
+  if (vf.rows.empty())  // a golden or stiff set smaller than the shard count: cosim would refuse the file
+    throw std::invalid_argument("vectors: --shard " + shard.str() + " of the " + set + " set of " + block +
+                                " is empty (give fewer shards)");
+  tu::out::write_stream(tmp, [&](std::ostream& os) { tu::vec::serialise(vf, os); }, out);
   outs.commit();
   std::cerr << "wrote " << vf.rows.size() << " vectors (" << block << ", " << set
             << (vf.shard.empty() ? "" : ", shard " + vf.shard + " from vector " + std::to_string(vf.first_vector))
@@ -63,6 +70,28 @@ void check_set(const tu::vec::VectorFile& vf, const std::string& file) {
   std::string known;
   for (const auto& s : b.sets) known += (known.empty() ? "" : ", ") + s;
   throw std::invalid_argument(file + ": set '" + vf.set + "' is not a set of block '" + b.name + "' (" + known + ")");
+}
+
+// Verilator writes the FST itself (stdio, errors not reported), so the file is checked after the
+// run: a sequence of blocks (type byte, 8-byte big-endian length counting itself), ending exactly
+// at the end of the file, none left unfinished (type 255 or length 0), the header first and the
+// geometry and hierarchy blocks written at close present. A full disk cuts it short and fails this.
+bool fst_complete(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  bool geom = false, hier = false;
+  size_t pos = 0;
+  for (int n = 0; pos < s.size(); ++n) {
+    if (s.size() - pos < 9) return false;
+    const auto type = static_cast<unsigned char>(s[pos]);
+    uint64_t len = 0;
+    for (int i = 1; i <= 8; ++i) len = len << 8 | static_cast<unsigned char>(s[pos + static_cast<size_t>(i)]);
+    if ((n == 0 && type != 0) || type == 255 || len < 8 || len > s.size() - pos - 1) return false;
+    geom |= type == 3;
+    hier |= type == 4 || type == 6 || type == 7;
+    pos += 1 + len;
+  }
+  return pos == s.size() && geom && hier;
 }
 
 int cmd_cosim(const std::string& block, const std::string& file, double stall, uint64_t seed,
@@ -93,6 +122,7 @@ int cmd_cosim(const std::string& block, const std::string& file, double stall, u
   // The waveform is written by Verilator, which fails silently: check its directory first.
   tu::cli::Outputs outs;
   const std::string fst_tmp = fst.empty() ? "" : outs.stage(fst);
+  if (!fst.empty()) outs.adopt(fst_tmp + ".hier");  // the FST writer's own temporary (removed at its close)
   tu::cosim::Options opt;
   opt.run.stall_prob = stall;
   opt.run.seed = seed;
@@ -122,12 +152,18 @@ int cmd_cosim(const std::string& block, const std::string& file, double stall, u
               << rep.wall_s << " s\n";
   }
   if (!rep.first_mismatch.empty()) std::cerr << "first mismatch: " << rep.first_mismatch << "\n";
+  if (!fst.empty() && !fst_complete(fst_tmp))
+    throw std::runtime_error(fst + ": cannot write the file (the waveform writer left it incomplete: a full disk?)");
   outs.commit();  // the waveform, also of a run with mismatches (it is how they are debugged)
   return rep.ok() ? 0 : 1;
 }
 
 int cmd_gen_rtl(const std::string& root, bool check) {
   int stale = 0;
+  // Every out-of-date file is staged and written first, then all are renamed: a failure (a full
+  // disk) leaves the tree as it was.
+  tu::cli::Outputs outs;
+  std::vector<std::string> written;
   for (const auto& [rel, content] : tu::generated_rtl()) {
     const fs::path p = fs::path(root) / rel;
     std::string old;
@@ -142,14 +178,12 @@ int cmd_gen_rtl(const std::string& root, bool check) {
       ++stale;
       continue;
     }
-    tu::cli::Outputs outs;
     outs.make_dir(p.parent_path().string());
-    const std::string tmp = outs.stage(p.string());
-    if (!(std::ofstream(tmp, std::ios::binary) << content))
-      throw std::runtime_error(p.string() + ": cannot write the file");
-    outs.commit();
-    std::cerr << "wrote " << p.string() << "\n";
+    outs.write(p.string(), content);
+    written.push_back(p.string());
   }
+  outs.commit();
+  for (const auto& p : written) std::cerr << "wrote " << p << "\n";
   return stale ? 1 : 0;
 }
 
@@ -160,7 +194,7 @@ int cmd_complexity(const std::string& in, const std::string& out, const tu::comp
   const std::string tmp = outs.stage(out);
   const auto h = tu::img::read_png_channel0(in);
   const auto c = tu::complexity::complexity_map(h, p);
-  tu::img::write_png_gray(tmp, c);
+  tu::out::write_file(tmp, tu::img::png_gray(c, out), out);
   outs.commit();
   std::cerr << "wrote " << c.width << "x" << c.height << " complexity map (" << p.levels
             << " levels, gamma " << p.gamma << ", dilate " << p.dilate << ") to " << out << "\n";
@@ -176,13 +210,14 @@ int cmd_distance_map(const std::string& in, const std::string& out, const std::s
   tu::cli::Outputs outs;
   const std::string raw = out + ".raw", hdr = out + ".json";
   const std::string raw_tmp = outs.stage(raw), hdr_tmp = outs.stage(hdr);
-  std::vector<std::string> slice_tmp;
+  std::vector<std::string> slice_tmp, slice_names;
   if (!slices.empty()) {
     outs.make_dir(slices);
     for (int k = 0; k < p.layers; ++k) {
       char name[32];
       std::snprintf(name, sizeof name, "/layer_%03d.png", k);
-      slice_tmp.push_back(outs.stage(slices + name));
+      slice_names.push_back(slices + name);
+      slice_tmp.push_back(outs.stage(slice_names.back()));
     }
   }
   tu::img::Gray8 h = tu::img::read_png_channel0(in);
@@ -193,12 +228,10 @@ int cmd_distance_map(const std::string& in, const std::string& out, const std::s
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(in + ": " + e.what());
   }
-  if (!(std::ofstream(raw_tmp, std::ios::binary)
-            .write(reinterpret_cast<const char*>(m.code.data()), static_cast<std::streamsize>(m.code.size()))))
-    throw std::runtime_error(raw + ": cannot write the file");
-  if (!(std::ofstream(hdr_tmp, std::ios::binary) << tu::dm::header_json(m, fs::path(raw).filename().string())))
-    throw std::runtime_error(hdr + ": cannot write the file");
-  for (size_t k = 0; k < slice_tmp.size(); ++k) tu::img::write_png_gray(slice_tmp[k], tu::dm::slice(m, static_cast<int>(k)));
+  tu::out::write_file(raw_tmp, std::string_view(reinterpret_cast<const char*>(m.code.data()), m.code.size()), raw);
+  tu::out::write_file(hdr_tmp, tu::dm::header_json(m, fs::path(raw).filename().string()), hdr);
+  for (size_t k = 0; k < slice_tmp.size(); ++k)
+    tu::out::write_file(slice_tmp[k], tu::img::png_gray(tu::dm::slice(m, static_cast<int>(k)), slice_names[k]), slice_names[k]);
   outs.commit();
   size_t nonzero = 0;
   for (auto c : m.code) nonzero += c != 0;
@@ -224,17 +257,14 @@ int cmd_afvis_quality(const std::string& scene_arg, tu::afvis::QualityParams p, 
   bool relief = false;
   for (const auto& [name, m] : s.materials) relief |= m.relief.has_value();
   if (!relief) throw std::invalid_argument(scene_arg + ": no material has relief (relief-quality --afvis needs one)");
+  // The private directory and its height PNGs belong to an Outputs that is never committed: they
+  // are removed on every way out, a signal included.
   const fs::path dir = fs::temp_directory_path() / ("texunit_afvis_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  tu::cli::Outputs scratch;
+  scratch.make_dir(dir.string());
+  for (const auto& m : p.maps) scratch.adopt((dir / ("afvis_height_" + m + ".png")).string());
   p.tmp_dir = dir.string();
-  std::vector<tu::afvis::QualityRow> rows;
-  try {
-    rows = tu::afvis::quality(s, p);
-  } catch (...) {
-    fs::remove_all(dir);
-    throw;
-  }
-  fs::remove_all(dir);
+  const std::vector<tu::afvis::QualityRow> rows = tu::afvis::quality(s, p);
   if (!plot_dir.empty()) tu::afvis::write_quality_plot(rows, plot_dir);
   std::cout << tu::afvis::quality_markdown(rows);
   return 0;
@@ -340,6 +370,8 @@ int cmd_rtl_files(const std::string& root, const std::string& top, const std::st
 }  // namespace
 
 int main(int argc, char** argv) {
+  tu::out::install_signal_cleanup();  // SIGINT / SIGTERM: no temporary, created directory or child left
+  tu::out::check_stdout_at_exit();     // a failed write to standard output is an error too
   CLI::App app{"texunit: bit-accurate texture-unit models, RTL co-simulation and reports"};
   app.require_subcommand(1);
 

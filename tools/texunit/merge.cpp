@@ -1,5 +1,7 @@
 #include "merge.hpp"
 
+#include "output.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -186,7 +188,7 @@ int merge_cosim(const std::vector<json>& docs, const MergeArgs& a) {
   m.rms_err = m.err_points ? std::sqrt(m.err_sum_sq / static_cast<double>(m.err_points)) : 0;
   const std::string out = m.json();
   if (a.report.json.empty()) std::cout << out << "\n";
-  else if (!(std::ofstream(a.report.json) << out << "\n")) throw std::runtime_error(a.report.json + ": cannot write the file");
+  else tu::out::write_atomic(a.report.json, out + "\n");
   if (!m.first_mismatch.empty()) std::cerr << "first mismatch: " << m.first_mismatch << "\n";
   return m.ok() ? 0 : 1;
 }
@@ -233,6 +235,8 @@ int merge_report(const std::vector<json>& docs, const MergeArgs& a) {
 }  // namespace
 
 int run_merge(const MergeArgs& a) {
+  for (const auto* f : {&a.report.json, &a.report.markdown})  // the targets checked before the work
+    if (!f->empty()) tu::out::check_target(*f);
   std::vector<json> docs;
   for (const auto& f : a.files) {
     try {

@@ -269,8 +269,7 @@ int run(const Options& opt) {
   cli::Outputs outs;
   for (const auto& [path, cfg, what] : {std::tuple{opt.out_sv, planned_shaded, "specialised"}, {opt.out_full_sv, everything, "full"}}) {
     if (path.empty()) continue;
-    if (!(std::ofstream(outs.stage(path)) << package(cfg, origin + " (" + what + " unit)")))
-      throw std::runtime_error(path + ": cannot write the file");
+    outs.write(path, package(cfg, origin + " (" + what + " unit)"));
   }
   outs.commit();
   for (const auto& path : {opt.out_sv, opt.out_full_sv})

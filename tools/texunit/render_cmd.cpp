@@ -283,7 +283,7 @@ int run_render(const RenderArgs& a) {
     } else {
       fi = render_at(si);
     }
-    img::write_png_rgba(png_tmps[static_cast<size_t>(i)], fi.image);
+    tu::out::write_file(png_tmps[static_cast<size_t>(i)], img::png_rgba(fi.image, frame_png(i)), frame_png(i));
   }
   {
     const auto& flags = render::pixel_flags();
@@ -297,11 +297,11 @@ int run_render(const RenderArgs& a) {
     if (probe_px > 0) std::printf("; Feline: %.0f pixels, %.3f probes per pixel", probe_px, probes / probe_px);
     std::printf("\n");
   }
-  img::write_png_rgba(png_tmp, frame.image);
+  tu::out::write_file(png_tmp, img::png_rgba(frame.image, png), png);
   const auto layers = render::layers_image(s, frame);
-  if (layers) img::write_png_gray(outs.stage(lp), *layers);
-  if (!a.dump.empty()) render::write_dump_csv(dump_tmp, frame);
-  if (heat) img::write_png_rgba(outs.stage(heat_png), *heat);
+  if (layers) outs.write(lp, img::png_gray(*layers, lp));
+  if (!a.dump.empty()) tu::out::write_stream(dump_tmp, [&](std::ostream& os) { render::write_dump_csv(os, frame); }, a.dump);
+  if (heat) outs.write(heat_png, img::png_rgba(*heat, heat_png));
   outs.commit();
   std::cerr << "wrote " << png << " (" << frame.pixels.size() << " covered pixels)";
   if (a.frames > 1) std::cerr << " and " << a.frames - 1 << " more frames to " << frame_png(a.frames - 1);
@@ -373,6 +373,8 @@ constexpr int kRefN = sizeof kRefFilters / sizeof kRefFilters[0];
 // Every render of the demo (each job fills one slot).
 struct DemoData {
   std::string out_dir;
+  // The demo's images, all or none: written by the printers (one thread), committed after the last.
+  mutable Outputs outs;
   scene::Scene s, flat, mixed, proc, proc_all;  // default scene, without relief, ground bilinear; procedural
   std::optional<scene::Scene> shaded;           // docs/scenes/shaded_sphere.json (run from the repository root)
   render::Frame ref[kRefN], truth, ewa_flat, truth_flat;
@@ -391,7 +393,8 @@ render::CmodelOptions one_thread() {
   return o;
 }
 void write_png(const DemoData& d, const std::string& name, const img::Rgba8Image& im) {
-  img::write_png_rgba((std::filesystem::path(d.out_dir) / name).string(), im);
+  const std::string path = (std::filesystem::path(d.out_dir) / name).string();
+  d.outs.write(path, img::png_rgba(im, path));
 }
 std::string png_path(const DemoData& d, const std::string& name) {
   return (std::filesystem::path(d.out_dir) / name).string();
@@ -462,7 +465,7 @@ void print_reference(const DemoData& d) {
   for (int i = 0; i < kRefN; ++i) {
     const auto name = std::string(scene::to_string(kRefFilters[i]));
     const auto png = png_path(d, "ref_" + name + ".png");
-    img::write_png_rgba(png, d.ref[i].image);
+    d.outs.write(png, img::png_rgba(d.ref[i].image, png));
     if (i + 1 < kRefN) write_png(d, "heat_" + name + "_vs_ewa.png", render::error_heatmap(d.ref[i].image, ewa.image, 64));
     double texels = 0;
     for (const auto& p : d.ref[i].pixels) texels += p.texels;
@@ -483,7 +486,7 @@ void print_cmodel(const DemoData& d, const Refs& refs) {
     const CmodelRow& r = kCmodelRows[i];
     const render::Frame& fr = d.cm[i];
     const auto png = png_path(d, std::string("cmodel_") + r.name + ".png");
-    img::write_png_rgba(png, fr.image);
+    d.outs.write(png, img::png_rgba(fr.image, png));
     write_png(d, std::string("heat_cmodel_") + r.name + "_vs_ewa.png", render::error_heatmap(fr.image, refs.ewa.image, 64));
     double texels = 0, inside = 0;
     for (const auto& p : fr.pixels) texels += p.texels, inside += p.texels_inside;
@@ -497,7 +500,7 @@ void print_cmodel(const DemoData& d, const Refs& refs) {
 
 void print_relief(const DemoData& d, const Refs& refs) {
   const auto png = png_path(d, "cmodel_ewa_relief.png");
-  img::write_png_rgba(png, d.relief.image);
+  d.outs.write(png, img::png_rgba(d.relief.image, png));
   write_png(d, "heat_cmodel_ewa_relief_vs_ewa.png", render::error_heatmap(d.relief.image, refs.ewa.image, 64));
   const auto rel = render::relief_pixels(d.s);
   std::printf("\nwith relief (each material's method, fixed point) against the float EWA with the 256-layer "
@@ -521,7 +524,7 @@ void print_procedural(const DemoData& d) {
                                                                {"truth", &d.proc_truth}};
   for (const auto& [name, fr] : rows) {
     const auto png = png_path(d, std::string("procedural_") + name + ".png");
-    img::write_png_rgba(png, fr->image);
+    d.outs.write(png, img::png_rgba(fr->image, png));
     std::printf("%-22s %12s %12s  %s\n", name, db(render::psnr_covered(*fr, d.proc_ref)).c_str(),
                 db(render::psnr_covered(*fr, d.proc_truth)).c_str(), png.c_str());
   }
@@ -539,7 +542,7 @@ bool print_rtl(const DemoData& d, const Refs& relief_refs, const Refs& refs) {
     const auto& res = d.rtl[i];
     ok = ok && res.ok();
     const auto png = png_path(d, std::string("rtl_") + r.name + ".png");
-    img::write_png_rgba(png, res.frame.image);
+    d.outs.write(png, img::png_rgba(res.frame.image, png));
     const double n = static_cast<double>(std::max<size_t>(1, res.frame.pixels.size()));
     char pred[32] = "-", err[32] = "-";  // relief streams: not predicted
     if (res.predicted_cycles) {
@@ -602,7 +605,7 @@ std::function<bool()> demo_render_jobs(const std::string& out_dir, std::vector<D
   d.proc_all = d.proc;
   for (auto& [name, m] : d.proc_all.materials) m.procedural->footprint_limit = false;
   if (const char* path = "docs/scenes/shaded_sphere.json"; std::filesystem::exists(path)) d.shaded = scene::load(path);
-  std::filesystem::create_directories(out_dir);
+  d.outs.make_dir(out_dir);
   add_jobs(dp, jobs);
   return [dp] {
     const DemoData& d = *dp;
@@ -612,7 +615,9 @@ std::function<bool()> demo_render_jobs(const std::string& out_dir, std::vector<D
     print_relief(d, relief_refs);
     print_procedural(d);
     const bool rtl_ok = print_rtl(d, relief_refs, flat_refs);
-    return print_shaded(d) && rtl_ok;
+    const bool ok = print_shaded(d) && rtl_ok;
+    d.outs.commit();
+    return ok;
   };
 }
 

@@ -102,7 +102,7 @@ std::string filters_markdown(const std::vector<Row>& rs, const std::string& plot
   return o.str();
 }
 
-bool filters_plot(const std::vector<Row>& rs, const std::string& dir) {
+std::string filters_plot(const std::vector<Row>& rs, const std::string& dir, out::Outputs& outs) {
   std::map<std::string, std::vector<const Row*>> by_scene;
   std::vector<std::string> order;
   for (const auto& r : rs)
@@ -110,29 +110,28 @@ bool filters_plot(const std::vector<Row>& rs, const std::string& dir) {
       if (!by_scene.count(r.scheme)) order.push_back(r.scheme);
       by_scene[r.scheme].push_back(&r);
     }
-  if (order.empty()) return true;
+  if (order.empty()) return "";
   const std::string stem = dir + "/filters_psnr_vs_clocks";
-  std::ofstream g(stem + ".gp");
+  std::ostringstream g;
   g << "set terminal pngcairo size 1000,650 noenhanced\nset output '" << stem << ".png'\n"
     << "set title 'filters: PSNR vs the box truth against clocks per pixel (RTL cycle model)'\n"
     << "set xlabel 'clocks per pixel'\nset ylabel 'PSNR (dB, covered pixels)'\nset logscale x\nset grid\n"
     << "set key outside right\nplot ";
   for (size_t i = 0; i < order.size(); ++i) {
     const std::string dat = stem + "_" + order[i] + ".dat";
-    std::ofstream d(dat);
+    std::ostringstream d;
     for (const Row* r : by_scene[order[i]]) {
       const json e = extra(*r);
       d << e.at("clocks_per_px").get<double>() << " " << e.at("psnr_truth_db").get<double>() << " \""
         << r->variant << "\"\n";
     }
+    outs.write(dat, d.str());
     g << (i ? ", " : "") << "'" << dat << "' using 1:2 with points pt " << 5 + i << " ps 1.4 title '" << order[i] << "'";
     if (i == 0) g << ", '" << dat << "' using 1:2:3 with labels left offset 0.7,0.3 font ',8' notitle";
   }
   g << "\n";
-  g.close();
-  const bool ok = std::system(("gnuplot " + stem + ".gp 2>" + stem + ".log").c_str()) == 0;
-  if (ok) std::remove((stem + ".log").c_str());
-  return ok;
+  outs.write(stem + ".gp", g.str());
+  return out::gnuplot(outs, stem + ".gp", {stem + ".png"});
 }
 
 }  // namespace tu::report

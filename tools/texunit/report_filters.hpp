@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "report.hpp"
+#include "texunit/output.hpp"
 
 namespace tu::report {
 
@@ -19,6 +20,7 @@ std::vector<Row> filter_rows(const std::string& root, const std::function<void(R
 
 // The markdown section body (table + plot link) and the plot DIR/filters_psnr_vs_clocks.png.
 std::string filters_markdown(const std::vector<Row>& rs, const std::string& plot_rel);
-bool filters_plot(const std::vector<Row>& rs, const std::string& dir);  // false: gnuplot failed
+// The plot's files go to `outs` (published for gnuplot); returns "" or why gnuplot failed.
+std::string filters_plot(const std::vector<Row>& rs, const std::string& dir, out::Outputs& outs);
 
 }  // namespace tu::report

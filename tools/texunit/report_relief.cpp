@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <map>
 #include <stdexcept>
 
@@ -222,15 +222,16 @@ std::vector<Row> relief_rows(const std::vector<std::string>& blocks_, const std:
   return rows;
 }
 
-bool relief_plot(const std::string& dir) {
-  std::filesystem::create_directories(dir);
+bool relief_plot(const std::string& dir, out::Outputs& outs) {
+  out::Outputs own;  // a failed relief plot is skipped alone: its files are removed, the others kept
+  own.make_dir(dir);
   pom::QualityParams p;
   p.angles = {45, 60, 80, 85};  // 0 degrees: every method is exact (PSNR inf)
   const auto q = pom::quality(p);
   const std::string dat = dir + "/relief_quality.dat", gp = dir + "/relief_quality.gp";
   {
     // One block per (map, angle), rows in method order N=4..32, adaptive, iter-seed, iter-norm.
-    std::ofstream d(dat);
+    std::ostringstream d;
     d << "# texunit relief-quality --size 128 --scale 0.05 (azimuth 30): method steps/px cycles/px PSNR\n"
          "# cycles/px: POM k + 1 (tu_pom_unit stream), iterative k + 3 (tu_iter_parallax)\n";
     std::string key;
@@ -242,9 +243,10 @@ bool relief_plot(const std::string& dir) {
       const double overhead = r.method.rfind("iter", 0) == 0 ? 3 : 1;  // tu_iter_parallax / tu_pom_unit
       d << r.method << " " << r.steps << " " << r.steps + overhead << " " << (std::isinf(r.psnr) ? 99.0 : r.psnr) << "\n";
     }
+    own.write(dat, d.str());
   }
   {
-    std::ofstream g(gp);
+    std::ostringstream g;
     g << "set terminal pngcairo size 1500,480 noenhanced\nset grid\nset key top left font ',8'\n"
          "set ylabel 'PSNR dB (vs 256-layer exact march)'\nangles = '45 60 80 85'\n"
          "maps = 'smooth bricks noisy'\n";
@@ -263,8 +265,11 @@ bool relief_plot(const std::string& dir) {
         << "       for [a=1:4] '' index ((m-1)*4+a-1) every ::7::7 using " << col
         << ":4 with points lc a pt 12 ps 1.5 title (a == 1 ? 'iter-norm' : '')\n}\nunset multiplot\n";
     }
+    own.write(gp, g.str());
   }
-  return std::system(("gnuplot " + gp + " 2>/dev/null").c_str()) == 0;
+  if (!out::gnuplot(own, gp, {dir + "/relief_psnr_vs_steps.png", dir + "/relief_psnr_vs_cycles.png"}).empty()) return false;
+  outs.absorb(own);
+  return true;
 }
 
 }  // namespace tu::report

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "report.hpp"
+#include "texunit/output.hpp"
 
 namespace tu::report {
 
@@ -20,6 +21,6 @@ std::vector<Row> relief_rows(const std::vector<std::string>& blocks, const std::
 // PSNR against march steps per pixel and against cycles per pixel (texunit relief-quality data,
 // fixed N 4..32, adaptive, iterative, per view angle): DIR/relief_quality.dat, .gp and
 // relief_psnr_vs_steps.png, relief_psnr_vs_cycles.png (gnuplot). Returns false if gnuplot failed.
-bool relief_plot(const std::string& dir);
+bool relief_plot(const std::string& dir, out::Outputs& outs);
 
 }  // namespace tu::report

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "texunit/output.hpp"
 #include "texunit/text.hpp"
 
 namespace tu::vec {
@@ -234,17 +235,13 @@ void serialise(const VectorFile& v, std::ostream& os) {
 }
 
 void write(const VectorFile& v, const std::string& path) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw FormatError(path + ":0: cannot write file");
-    serialise(v, out);  // streamed: no second copy of a large file in memory
-    if (!out) {
-      std::filesystem::remove(tmp);
-      throw FormatError(path + ":0: write failed");
-    }
+  // Streamed through the checked output path: no second copy of a large file in memory, every
+  // write checked, renamed into place only when whole.
+  try {
+    out::write_atomic(path, [&](std::ostream& os) { serialise(v, os); });
+  } catch (const std::runtime_error& e) {
+    throw FormatError(e.what());
   }
-  std::filesystem::rename(tmp, path);
 }
 
 uint64_t f64_bits(double x) { return std::bit_cast<uint64_t>(x); }

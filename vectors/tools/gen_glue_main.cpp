@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "glue_gen.hpp"
+#include "texunit/output.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -15,9 +16,10 @@ int main(int argc, char** argv) {
   std::ostringstream old;
   if (std::ifstream in(argv[1], std::ios::binary); in) old << in.rdbuf();
   if (old.str() == content) return 0;
-  std::ofstream out(argv[1], std::ios::binary);
-  if (!(out << content)) {
-    std::cerr << argv[1] << ": cannot write the file\n";
+  try {
+    tu::out::write_atomic(argv[1], content);  // checked, all or none
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << "\n";
     return 1;
   }
   return 0;

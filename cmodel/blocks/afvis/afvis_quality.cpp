@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -13,6 +12,7 @@
 #include "pom/relief.hpp"
 #include "pom/relief_quality.hpp"
 #include "texunit/image.hpp"
+#include "texunit/output.hpp"
 #include "texunit/render.hpp"
 
 namespace tu::afvis {
@@ -162,8 +162,9 @@ void write_quality_plot(const std::vector<QualityRow>& rows, const std::string& 
   std::map<std::pair<std::string, double>, double> plain;  // (map, camera) -> PSNR of plain EWA
   for (const auto& r : rows)
     if (r.variant == "plain") plain[{r.map, r.height}] = r.psnr;
+  out::Outputs outs;
   {
-    std::ofstream d(base + ".dat");
+    std::ostringstream d;
     d << "# one block per variant: added_clocks_pct psnr_gain_db map camera\n";
     for (const Variant& v : kVariants) {
       if (v.mode == render::AfvisMode::Off) continue;
@@ -173,8 +174,9 @@ void write_quality_plot(const std::vector<QualityRow>& rows, const std::string& 
           d << r.cost_pct << ' ' << r.psnr - plain[{r.map, r.height}] << " \"" << r.map << " x" << r.height << "\"\n";
       d << "\n\n";
     }
+    outs.write(base + ".dat", d.str());
   }
-  std::ofstream g(base + ".gp");
+  std::ostringstream g;
   g << "set terminal pngcairo size 900,600\nset output '" << base << ".png'\n"
     << "set title 'AF visibility: PSNR gain over plain EWA (relief pixels, vs truth) vs added clocks'\n"
     << "set xlabel 'added clocks per relief pixel (%, serial trace: one depth read per clock)'\n"
@@ -187,12 +189,10 @@ void write_quality_plot(const std::vector<QualityRow>& rows, const std::string& 
     ++i;
   }
   g << ", '' index 0 using 1:2:3 with labels offset 0,1 font ',8' notitle\n";
-  g.close();
-  if (std::system(("gnuplot '" + base + ".gp' 2>'" + base + ".gp.log'").c_str()) != 0) {
-    for (const char* ext : {".dat", ".gp", ".png"}) std::filesystem::remove(base + ext);
-    throw std::runtime_error("afvis plot: gnuplot failed on " + base + ".gp (see " + base + ".gp.log)");
-  }
-  std::filesystem::remove(base + ".gp.log");
+  outs.write(base + ".gp", g.str());
+  if (const std::string why = out::gnuplot(outs, base + ".gp", {base + ".png"}); !why.empty())
+    throw std::runtime_error("afvis plot: " + why);
+  outs.commit();
 }
 
 }  // namespace tu::afvis

@@ -45,16 +45,21 @@ inline constexpr int kMaxSide = 4096;
 // Reads any 8/16-bit PNG as RGBA8 (grey and grey+alpha are expanded, missing alpha is 255).
 // Throws std::runtime_error naming the file on a missing or malformed file.
 Rgba8Image read_png_rgba(const std::string& path);
-// Writes an RGBA8 PNG atomically (temporary file + rename). Throws naming the file.
+// Writes an RGBA8 PNG all or none (texunit/output.hpp: temporary file, every write checked, rename).
+// Throws naming the file.
 void write_png_rgba(const std::string& path, const Rgba8Image& im);
+// The PNG file's bytes, for a writer that writes them through its own tu::out::Outputs (`path`:
+// the file named in a message).
+std::string png_rgba(const Rgba8Image& im, const std::string& path);
 
 // Reads a PNG and returns its first colour channel (R; grey for grey images) as 8 bits
 // (16-bit PNGs are reduced to 8 bits by stb_image: code16 >> 8). Throws std::runtime_error naming
 // the file on a missing or malformed file.
 Gray8 read_png_channel0(const std::string& path);
 
-// Writes an 8-bit grey PNG atomically (temporary file in the same directory + rename), so a
-// failure leaves no partial output. Throws std::runtime_error naming the file.
+// Writes an 8-bit grey PNG all or none (texunit/output.hpp), so a failure (a full disk included)
+// leaves no partial output. Throws std::runtime_error naming the file.
 void write_png_gray(const std::string& path, const Gray8& im);
+std::string png_gray(const Gray8& im, const std::string& path);
 
 }  // namespace tu::img

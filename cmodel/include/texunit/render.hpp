@@ -3,6 +3,8 @@
 // and the RTL are measured against.
 #pragma once
 
+#include <iosfwd>
+
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -189,8 +191,10 @@ struct PixelFlag {
 const std::vector<PixelFlag>& pixel_flags();
 std::vector<size_t> flag_counts(const Frame& f);  // pixels with each flag, pixel_flags() order
 
-// One CSV row per covered pixel (atomic write): x,y,u,v,lod,texels,r,g,b,a, relief_n (layers N),
-// relief_steps (march steps or iterations), then one 0/1 column per pixel_flags() entry.
+// One CSV row per covered pixel (all or none, texunit/output.hpp): x,y,u,v,lod,texels,r,g,b,a,
+// relief_n (layers N), relief_steps (march steps or iterations), then one 0/1 column per
+// pixel_flags() entry. The stream overload writes the same text to a caller's checked stream.
 void write_dump_csv(const std::string& path, const Frame& f);
+void write_dump_csv(std::ostream& out, const Frame& f);
 
 }  // namespace tu::render
